@@ -1,0 +1,84 @@
+// Waveform names and files (model.md, "Waveform catalogue"): parsed once, without a number type,
+// then built at any precision by make_waveform<Real>. Numbers are kept as decimal strings so that
+// each precision reads them exactly ("0.1" at 100 digits is 0.1 to 100 digits).
+#pragma once
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrofric/errors.hpp"
+#include "vibrofric/numbers.hpp"
+#include "vibrofric/user_waveforms.hpp"
+#include "vibrofric/waveform.hpp"
+
+namespace vibrofric {
+
+enum class WaveKind { sine, triangle, sawtooth_right, sawtooth_left, square, power, fourier, samples };
+
+struct WaveSpec {
+  WaveKind kind = WaveKind::sine;
+  std::string name;      // canonical: "sine", "triangle", …, "power:2.5", "fourier:FILE"
+  std::string exponent;  // power:p, as written
+  struct Harmonic {
+    unsigned k;
+    std::string a, b;
+  };
+  std::vector<Harmonic> harmonics;  // fourier: w = Σ a_k cos 2πkφ + b_k sin 2πkφ
+  std::vector<std::string> samples;  // samples: y_j at φ = j/N
+};
+
+// Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,
+// power:P (P ≥ 1), fourier:FILE, samples:FILE. Throws InputError naming the text otherwise.
+WaveSpec parse_wave(const std::string& text);
+
+// Names of the catalogue waves, for help texts and tests.
+const std::vector<std::string>& catalogue_names();
+
+// Strict decimal grammar: [+-]digits[.digits][e[+-]digits], finite, within double's range.
+// Throws InputError naming `what` and the text.
+void check_decimal(const std::string& text, const std::string& what);
+
+// Decimal text to Real at the current precision (after check_decimal).
+template <class Real>
+Real parse_real(const std::string& text, const std::string& what) {
+  check_decimal(text, what);
+  if constexpr (std::is_same_v<Real, double>)
+    return std::stod(text);
+  else if constexpr (std::is_same_v<Real, long double>)
+    return std::stold(text);
+  else
+    return Real(text);
+}
+
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
+  switch (spec.kind) {
+    case WaveKind::sine: return std::make_unique<Sine<Real>>();
+    case WaveKind::triangle: return make_triangle<Real>();
+    case WaveKind::sawtooth_right: return make_sawtooth_right<Real>();
+    case WaveKind::sawtooth_left: return make_sawtooth_left<Real>();
+    case WaveKind::square: return make_square<Real>();
+    case WaveKind::power:
+      return std::make_unique<Power<Real>>(parse_real<Real>(spec.exponent, "power exponent p"), spec.name);
+    case WaveKind::fourier: {
+      std::vector<unsigned> k;
+      std::vector<Real> a, b;
+      for (const auto& h : spec.harmonics) {
+        k.push_back(h.k);
+        a.push_back(parse_real<Real>(h.a, spec.name + " coefficient a_" + std::to_string(h.k)));
+        b.push_back(parse_real<Real>(h.b, spec.name + " coefficient b_" + std::to_string(h.k)));
+      }
+      return std::make_unique<FourierSeries<Real>>(spec.name, k, a, b);
+    }
+    case WaveKind::samples: {
+      std::vector<Real> y;
+      for (std::size_t j = 0; j < spec.samples.size(); ++j)
+        y.push_back(parse_real<Real>(spec.samples[j], spec.name + " sample " + std::to_string(j + 1)));
+      return make_samples<Real>(spec.name, y);
+    }
+  }
+  throw InputError("unknown wave kind");
+}
+
+}  // namespace vibrofric

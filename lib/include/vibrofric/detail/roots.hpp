@@ -1,0 +1,58 @@
+// Bracketed root finding at the working precision (Eqs. 4 and 8 are solved through this).
+// A root that is not bracketed, or a solver that runs out of iterations, is a SolverError.
+#pragma once
+#include <boost/math/tools/precision.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+
+#include <cstdint>
+#include <sstream>
+#include <string>
+
+#include "vibrofric/errors.hpp"
+
+namespace vibrofric::detail {
+
+struct RootStats {
+  std::size_t solves = 0;
+  std::size_t iterations = 0;
+  std::uintmax_t max_iterations = 200;
+};
+
+template <class Real>
+std::string short_str(const Real& x) {
+  std::ostringstream os;
+  os.precision(17);
+  os << x;
+  return os.str();
+}
+
+// Root of f in [a, b] given fa = f(a), fb = f(b) of opposite signs (a zero end is the root),
+// to within 4 ulp of the working type: toms748, stopping on |b − a| ≤ 2^(2−digits)·min(|a|,|b|).
+template <class Real, class F>
+Real bracketed_root(F f, const Real& a, const Real& b, const Real& fa, const Real& fb,
+                    const char* what, RootStats& stats) {
+  if (fa == 0) return a;
+  if (fb == 0) return b;
+  if ((fa > 0) == (fb > 0))
+    throw SolverError(std::string(what) + ": no sign change on [" + short_str(a) + ", " +
+                      short_str(b) + "] (f = " + short_str(fa) + ", " + short_str(fb) + ")");
+  const int bits = boost::math::tools::digits<Real>();
+  boost::math::tools::eps_tolerance<Real> tol(static_cast<unsigned>(bits > 3 ? bits - 2 : 1));
+  std::uintmax_t iterations = stats.max_iterations;
+  std::pair<Real, Real> r;
+  try {
+    r = boost::math::tools::toms748_solve(f, a, b, fa, fb, tol, iterations);
+  } catch (const std::exception& e) {
+    throw SolverError(std::string(what) + ": root finder failed on [" + short_str(a) + ", " +
+                      short_str(b) + "]: " + e.what());
+  }
+  ++stats.solves;
+  stats.iterations += iterations;
+  if (iterations >= stats.max_iterations && !tol(r.first, r.second))
+    throw SolverError(std::string(what) + ": root finder did not converge in " +
+                      std::to_string(stats.max_iterations) + " iterations on [" +
+                      short_str(a) + ", " + short_str(b) + "]");
+  return (r.first + r.second) / 2;
+}
+
+}  // namespace vibrofric::detail

@@ -1,0 +1,60 @@
+// Evaluation at a requested precision, from decimal strings to decimal strings: the layer under
+// the `vibrofric` tool. μ̄/μ0 (Eq. 15) or Ψ_w(β) (Eq. 12) for a batch of points, in parallel.
+//
+// For mpfr the working precision is the requested digits plus guard digits, raised
+// automatically while the solver's error estimate says the requested digits are not reached.
+#pragma once
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "vibrofric/catalogue.hpp"
+#include "vibrofric/solver.hpp"
+
+namespace vibrofric {
+
+enum class NumberType { float64, float80, bin50, bin100, mpfr };
+
+// Parses double, long-double, cpp_bin_float_50, cpp_bin_float_100, mpfr; InputError otherwise.
+NumberType parse_number_type(const std::string& text);
+std::string number_type_name(NumberType t);
+
+inline constexpr int min_digits = 1;
+inline constexpr int max_digits = 10000;
+
+struct Precision {
+  NumberType type = NumberType::mpfr;
+  int digits = 50;  // mpfr: significant digits asked for, in [min_digits, max_digits]
+};
+
+// Digits printed for a precision: the request for mpfr, round-trip digits for hardware types,
+// 50 or 100 for cpp_bin_float.
+int output_digits(const Precision& p);
+
+enum class Quantity { mu, psi };
+
+struct Point {
+  std::string beta;
+  std::string gamma;  // ignored for Quantity::psi
+};
+
+struct BatchOptions {
+  Options solver;
+  unsigned threads = 1;                               // 0: all cores
+  std::function<void(std::size_t done)> progress;     // called from worker threads, may be empty
+};
+
+// Formatted values, in the order of `points`. Throws the error of the first failing point
+// (InputError for bad input or domain, SolverError if the solver failed).
+std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
+                                  const Precision& precision, const BatchOptions& options = {});
+
+namespace detail {
+// One instantiation per number type, each in its own translation unit (compile cost).
+template <class Real>
+std::vector<std::string> evaluate_typed(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
+                                        int digits, const BatchOptions& options);
+}  // namespace detail
+
+}  // namespace vibrofric

@@ -1,0 +1,442 @@
+// The stick-slip solver: μ̄/μ0 = g_w(β, γ) (Eqs. 9, 13, 15) and Ψ_w(β) (Eqs. 11–12).
+//
+// n(φ) = max(γ + w(φ), 0) is the normal force in units of k_z·A, s(φ) the tangential force in
+// units of μ0·k_z·A. The periodic steady state is s(φ) = βφ + min_{ψ ≤ φ} [n(ψ) − βψ] (model.md):
+// starting where n is smallest (there s = n), one forward sweep over the monotone pieces of n
+// finds every stick onset (Eq. 4: n' rises through β, an upward jump of n, or first contact) and
+// every stick end (Eq. 8: n falls back onto the ramp, or jumps below it). Areas are exact where
+// the waveform has an antiderivative; the tanh-sinh path (every event and piece end a
+// breakpoint) is the cross-check.
+//
+// Not for: waveforms whose pieces violate the monotonicity contract of waveform.hpp.
+#pragma once
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrofric/detail/roots.hpp"
+#include "vibrofric/errors.hpp"
+#include "vibrofric/numbers.hpp"
+#include "vibrofric/waveform.hpp"
+
+namespace vibrofric {
+
+enum class AreaMethod {
+  automatic,   // exact if the waveform has an antiderivative, else quadrature
+  exact,       // antiderivative differences; SolverError if there is none
+  quadrature,  // tanh-sinh on every slip and stick segment
+};
+
+struct Options {
+  AreaMethod area = AreaMethod::automatic;
+  // Root finder: stops when the bracket is within 4 ulp; more iterations than this is an error.
+  std::uintmax_t max_root_iterations = 200;
+  // tanh-sinh: at most this many halvings; an error estimate above the target is an error.
+  std::size_t max_quadrature_levels = 15;
+};
+
+template <class Real>
+struct StickPhase {
+  Real begin, end;  // phases, begin ∈ [0, 1), end ≥ begin (may exceed 1: wraps the period)
+  Real level;       // s(begin); s = level + β·(φ − begin) on the phase
+};
+
+template <class Real>
+struct Result {
+  Real mu;              // μ̄/μ0 = ∫s / ∫n (Eq. 15)
+  Real retained_area;   // ∫₀¹ s dφ, summed directly (no cancellation for small β)
+  Real normal_area;     // ∫₀¹ n dφ
+  Real lost_area;       // ∫₀¹ (n − s) dφ; equals Ψ_w(β) when there is no jumping (Eq. 12)
+  Real beta_c;          // largest rising slope of n (Eq. 6); +∞ with an upward jump
+  Real relative_error;  // estimated relative error of mu from rounding and quadrature
+  Real lost_relative_error;  // the same for lost_area
+  bool jumping = false;      // n vanishes somewhere in the period
+  AreaMethod area = AreaMethod::exact;
+  std::vector<StickPhase<Real>> stick_phases;
+  std::size_t events = 0;       // stick onsets + stick ends + contact boundaries
+  std::size_t root_solves = 0;  // events that needed the root finder
+  std::size_t root_iterations = 0;
+  std::size_t quadratures = 0;
+  std::size_t evaluations = 0;  // waveform value/slope/antiderivative calls
+};
+
+namespace detail {
+
+// One tanh-sinh integrator per thread and precision: its tables are built at the precision that
+// is current when it is constructed (toolchain.md).
+template <class Real>
+boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
+  using Q = boost::math::quadrature::tanh_sinh<Real>;
+  thread_local std::map<std::pair<int, std::size_t>, std::unique_ptr<Q>> cache;
+  const auto key = std::make_pair(working_digits10<Real>(), levels);
+  auto& slot = cache[key];
+  if (!slot) slot = std::make_unique<Q>(levels);
+  return *slot;
+}
+
+template <class Real>
+class Sweep {
+ public:
+  Sweep(const Waveform<Real>& w, const Real& beta, const Real& gamma, const Options& opt)
+      : w_(w), beta_(beta), gamma_(gamma), opt_(opt) {
+    stats_.max_iterations = opt.max_root_iterations;
+    method_ = opt.area;
+    if (method_ == AreaMethod::automatic)
+      method_ = w.has_antiderivative() ? AreaMethod::exact : AreaMethod::quadrature;
+    if (method_ == AreaMethod::exact && !w.has_antiderivative())
+      throw InputError("waveform " + w.name() + " has no antiderivative: use the quadrature area method");
+  }
+
+  Result<Real> run() {
+    build_segments();
+    const std::size_t m = segs_.size();
+    // Start where n is smallest: there s = n (model.md), so the sweep needs no history.
+    const Real n_min = n_clip(gamma_ + w_.minimum());
+    s_ = n_min;
+    sticking_ = false;
+    for (std::size_t j = 0; j < m; ++j) sweep_segment(segs_[(start_ + j) % m], start_ + j >= m);
+    if (sticking_) close_stick(end_phase_);
+
+    Result<Real> r;
+    r.retained_area = retained_;
+    r.normal_area = normal_;
+    r.lost_area = lost_;
+    r.mu = stick_.empty() ? Real(1) : Real(retained_ / normal_);
+    r.beta_c = w_.beta_c(gamma_);
+    r.jumping = gamma_ + w_.minimum() < 0;
+    r.area = method_;
+    r.stick_phases = stick_;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    // Each area term is a difference of quantities of size ≤ magnitude_: its rounding error is a
+    // few eps of that; quadrature adds its own estimate.
+    const Real abs_err = 8 * eps * magnitude_ + quad_error_;
+    r.relative_error = stick_.empty() ? Real(0) : Real(abs_err / retained_ + abs_err / normal_);
+    r.lost_relative_error = lost_ > 0 ? Real((8 * eps * lost_magnitude_ + quad_error_) / lost_) : Real(0);
+    r.events = events_;
+    r.root_solves = stats_.solves;
+    r.root_iterations = stats_.iterations;
+    r.quadratures = quadratures_;
+    r.evaluations = evaluations_;
+    return r;
+  }
+
+ private:
+  struct Segment {
+    std::size_t piece;
+    Real u, v;  // sub-interval of the piece with constant contact status
+    bool contact;
+    bool jump;  // u is a breakpoint where w jumps (n may jump there)
+  };
+
+  static Real n_clip(const Real& x) { return x > 0 ? x : Real(0); }
+
+  Real n(const Segment& g, const Real& x) {
+    if (!g.contact) return Real(0);
+    ++evaluations_;
+    return gamma_ + w_.value(g.piece, x);
+  }
+  Real dn(const Segment& g, const Real& x) {
+    if (!g.contact) return Real(0);
+    ++evaluations_;
+    return w_.slope(g.piece, x);
+  }
+
+  // Pieces split at contact boundaries; start_ = first segment at the argmin breakpoint.
+  void build_segments() {
+    const std::size_t pieces = w_.piece_count();
+    for (std::size_t i = 0; i < pieces; ++i) {
+      if (i == w_.argmin_break()) start_ = segs_.size();
+      const Real& a = w_.piece_begin(i);
+      const Real& b = w_.piece_end(i);
+      Real c0, c1;
+      const bool jump = w_.jump_at(i);
+      if (!w_.contact_part(i, gamma_, c0, c1, stats_)) {
+        segs_.push_back({i, a, b, false, jump});
+        continue;
+      }
+      if (c0 > a) {
+        ++events_;
+        segs_.push_back({i, a, c0, false, jump});
+      }
+      segs_.push_back({i, c0, c1, true, c0 > a ? false : jump});
+      if (c1 < b) {
+        ++events_;
+        segs_.push_back({i, c1, b, false, false});
+      }
+    }
+    end_phase_ = w_.piece_begin(w_.argmin_break()) + 1;
+  }
+
+  // Ramp of the current stick phase at unwrapped phase x.
+  Real ramp(const Real& x) const { return level_ + beta_ * (x - a_); }
+
+  void sweep_segment(const Segment& g, bool wrapped) {
+    const Real shift = wrapped ? Real(1) : Real(0);
+    Real pos = g.u;
+    const Real n_u = n(g, g.u);
+    if (!sticking_) {
+      if (g.jump && n_u > s_) open_stick(g.u + shift, s_);  // upward jump of n
+    } else if (n_u <= ramp(g.u + shift)) {
+      close_stick(g.u + shift);  // n jumps below (or touches) the ramp
+    }
+    const bool convex = !g.contact || w_.convex(g.piece);
+    for (;;) {
+      // A stick that begins by n' ≥ β on a convex segment cannot end on it: n − ramp has a
+      // non-decreasing slope from ≥ 0 there. Saying so avoids re-opening it at a rounding tie.
+      bool onset_here = false;
+      if (!sticking_) {
+        // Slip: s = n until n' exceeds β (Eq. 4); n' is monotone on the segment.
+        if (dn(g, pos) > beta_) {
+          open_stick(pos + shift, n(g, pos));
+        } else if (convex && dn(g, g.v) > beta_) {
+          const Real t = slope_root(g, pos, g.v);
+          add_slip(g, pos, t);
+          pos = t;
+          open_stick(pos + shift, n(g, pos));
+        } else {
+          add_slip(g, pos, g.v);
+          s_ = n(g, g.v);
+          return;
+        }
+        onset_here = true;
+      }
+      // Stick: the ramp ends where n falls back onto it (Eq. 8).
+      Real t;
+      if (!(convex && onset_here) && stick_end(g, pos, shift, convex, t)) {
+        add_stick(g, pos, t, shift);
+        close_stick(t + shift);
+        s_ = n(g, t);
+        pos = t;
+        continue;
+      }
+      add_stick(g, pos, g.v, shift);
+      return;
+    }
+  }
+
+  // First t in (p0, v] with n(t) ≤ ramp(t), if any. d = n − ramp has d' = n' − β monotone.
+  bool stick_end(const Segment& g, const Real& p0, const Real& shift, bool convex, Real& t) {
+    auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x + shift); };
+    auto dd = [&](const Real& x) -> Real { return dn(g, x) - beta_; };
+    const Real& v = g.v;
+    if (!(v > p0)) return false;
+    const Real dv = d(v);
+    const bool linear = !g.contact || w_.linear(g.piece);
+    if (linear) {
+      if (dv > 0) return false;
+      const Real d0 = d(p0);
+      t = d0 <= 0 ? p0 : Real(p0 + d0 / (beta_ - dn(g, p0)));
+      if (t > v) t = v;
+      ++events_;
+      return true;
+    }
+    const Real dd0 = dd(p0);
+    Real lo = p0, hi = v, dlo, dhi = dv;
+    if (convex) {
+      // d convex: decreasing up to the zero of d' (if any), then increasing.
+      if (dd0 >= 0) return false;
+      const Real ddv = dd(v);
+      if (ddv > 0) {
+        hi = slope_root(g, p0, v);
+        dhi = d(hi);
+      }
+      if (dhi > 0) return false;
+      dlo = d(lo);
+    } else {
+      // d concave: increasing up to the zero of d', then decreasing; d > 0 just after p0.
+      if (dv > 0) return false;
+      if (dd0 > 0) {
+        const Real ddv = dd(v);
+        lo = ddv >= 0 ? v : decreasing_slope_root(g, p0, v, dd0, ddv);
+      }
+      dlo = d(lo);
+      if (dlo < 0 && lo > p0) {
+        // d(lo) ≥ d(p0) ≥ 0 in exact arithmetic; rounding near a tangency: end at lo.
+        dlo = 0;
+      }
+    }
+    ++events_;
+    t = bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
+    return true;
+  }
+
+  // Zero of n' − β on [lo, hi] where n' rises through β (convex segment; Eq. 4).
+  Real slope_root(const Segment& g, const Real& lo, const Real& hi) {
+    if (auto r = w_.solve_slope(g.piece, beta_)) {
+      ++events_;
+      return *r < lo ? lo : (*r > hi ? hi : *r);
+    }
+    ++events_;
+    return bracketed_root<Real>([&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi,
+                                Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_),
+                                "stick onset n' = β (Eq. 4)", stats_);
+  }
+  Real decreasing_slope_root(const Segment& g, const Real& lo, const Real& hi, const Real& f_lo,
+                             const Real& f_hi) {
+    ++events_;
+    return bracketed_root<Real>([&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi,
+                                f_lo, f_hi, "maximum of n − ramp", stats_);
+  }
+
+  void open_stick(const Real& at, const Real& level) {
+    sticking_ = true;
+    a_ = at;
+    level_ = level;
+    ++events_;
+  }
+  void close_stick(const Real& at) {
+    sticking_ = false;
+    Real begin = a_, end = at;
+    if (begin >= 1) {
+      begin -= 1;
+      end -= 1;
+    }
+    stick_.push_back({begin, end, level_});
+  }
+
+  // ∫ n over [p, q] of segment g, exact or by quadrature.
+  Real area_n(const Segment& g, const Real& p, const Real& q) {
+    if (!g.contact || !(q > p)) return Real(0);
+    if (method_ == AreaMethod::exact) {
+      evaluations_ += 2;
+      const Real wq = w_.antiderivative(g.piece, q), wp = w_.antiderivative(g.piece, p);
+      using std::abs;
+      magnitude_ += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
+      return gamma_ * (q - p) + (wq - wp);
+    }
+    return quad([&](const Real& x) -> Real { return n(g, x); }, p, q);
+  }
+
+  template <class F>
+  Real quad(F f, const Real& p, const Real& q) {
+    ++quadratures_;
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    // Termination at sqrt(eps): tanh-sinh then has (doubly exponentially) ~eps error.
+    const Real tol = sqrt(eps);
+    Real err = 0, l1 = 0;
+    std::size_t levels = 0;
+    Real value;
+    try {
+      value = integrator<Real>(opt_.max_quadrature_levels).integrate(f, p, q, tol, &err, &l1, &levels);
+    } catch (const std::exception& e) {
+      throw SolverError(std::string("tanh-sinh quadrature failed: ") + e.what());
+    }
+    if (!(err <= tol * l1) && l1 > 0)
+      throw SolverError("tanh-sinh quadrature did not converge on [" + short_str(p) + ", " +
+                        short_str(q) + "]: error estimate " + short_str(err) + " after " +
+                        std::to_string(levels) + " levels");
+    magnitude_ += 4 * l1;
+    lost_magnitude_ += 4 * l1;
+    quad_error_ += 16 * eps * l1;
+    return value;
+  }
+
+  void add_slip(const Segment& g, const Real& p, const Real& q) {
+    const Real a = area_n(g, p, q);
+    normal_ += a;
+    retained_ += a;
+  }
+  void add_stick(const Segment& g, const Real& p, const Real& q, const Real& shift) {
+    if (!(q > p)) return;
+    const Real r = (q - p) * (ramp(p + shift) + ramp(q + shift)) / 2;
+    retained_ += r;
+    using std::abs;
+    if (method_ == AreaMethod::exact || !g.contact) {
+      const Real before = magnitude_;
+      const Real a = area_n(g, p, q);
+      normal_ += a;
+      lost_ += a - r;
+      lost_magnitude_ += (magnitude_ - before) + abs(r);
+    } else {
+      normal_ += area_n(g, p, q);
+      lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x + shift); }, p, q);
+    }
+  }
+
+  const Waveform<Real>& w_;
+  Real beta_, gamma_;
+  Options opt_;
+  AreaMethod method_;
+  RootStats stats_;
+  std::vector<Segment> segs_;
+  std::size_t start_ = 0;
+  Real end_phase_ = 1;
+  bool sticking_ = false;
+  Real s_ = 0, a_ = 0, level_ = 0;
+  Real retained_ = 0, normal_ = 0, lost_ = 0;
+  Real magnitude_ = 0, lost_magnitude_ = 0, quad_error_ = 0;
+  std::vector<StickPhase<Real>> stick_;
+  std::size_t events_ = 0, quadratures_ = 0, evaluations_ = 0;
+};
+
+template <class Real>
+std::string context(const Waveform<Real>& w, const Real& beta, const Real* gamma) {
+  std::string s = "wave " + w.name() + ", beta = " + short_str(beta);
+  if (gamma) s += ", gamma = " + short_str(*gamma);
+  return s;
+}
+
+template <class Real>
+void check_beta(const Waveform<Real>& w, const Real& beta) {
+  using std::isfinite;
+  if (!(beta > 0) || !isfinite(beta))
+    throw InputError("beta = " + short_str(beta) + " for wave " + w.name() + ": expected a finite number > 0");
+}
+
+}  // namespace detail
+
+// μ̄/μ0 = g_w(β, γ) with diagnostics. Preconditions: β > 0 finite; γ finite with
+// γ + max w > 0 (contact exists; γ ≤ −1 for the catalogue is a DomainError). β ≥ β_c(γ) gives
+// exactly 1 (Eq. 6). Throws SolverError, naming wave, β and γ, if an event cannot be bracketed
+// or a root finder or integrator does not converge.
+template <class Real>
+Result<Real> solve(const Waveform<Real>& w, const Real& beta, const Real& gamma, const Options& opt = {}) {
+  using std::isfinite;
+  detail::check_beta(w, beta);
+  if (!isfinite(gamma))
+    throw InputError("gamma = " + detail::short_str(gamma) + ": expected a finite number");
+  if (!(gamma + w.maximum() > 0))
+    throw DomainError("gamma = " + detail::short_str(gamma) + " gives no contact for wave " + w.name() +
+                      ": expected gamma > " + detail::short_str(Real(-w.maximum())));
+  try {
+    return detail::Sweep<Real>(w, beta, gamma, opt).run();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context(w, beta, &gamma) + ": " + e.what());
+  }
+}
+
+// Ψ_w(β) = ∫(n − s) without jumping (Eq. 12), computed at γ = −min w (n touches zero), where
+// it holds for every γ ≥ −min w (Eq. 13). The value is lost_area of the result.
+template <class Real>
+Result<Real> psi(const Waveform<Real>& w, const Real& beta, const Options& opt = {}) {
+  detail::check_beta(w, beta);
+  const Real gamma = -w.minimum();
+  try {
+    return detail::Sweep<Real>(w, beta, gamma, opt).run();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context<Real>(w, beta, nullptr) + ": " + e.what());
+  }
+}
+
+// s(φ) of a solved state, for φ ∈ [0, 1): on a stick phase the ramp, elsewhere n (model.md).
+template <class Real>
+Real tangential_force(const Waveform<Real>& w, const Result<Real>& r, const Real& beta,
+                      const Real& gamma, const Real& phi) {
+  for (const auto& st : r.stick_phases) {
+    for (int k = 0; k < 2; ++k) {
+      const Real x = phi + k;
+      if (x > st.begin && x < st.end) return st.level + beta * (x - st.begin);
+    }
+  }
+  const Real v = gamma + w(phi);
+  return v > 0 ? v : Real(0);
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,336 @@
+// Periodic waveforms w(φ) of Eq. (2): unit period, zero mean, unit amplitude; the catalogue of
+// model.md (the paper's Eq. 16 for tri, str, stl) and user waveforms (Fourier series, samples).
+//
+// A waveform is a list of pieces [x_i, x_{i+1}] covering [0, 1). On each piece it has one smooth
+// branch, valid on the closed piece (so the ends give one-sided limits and jumps are seen), and
+// on each piece both w and w' are monotone. The solver relies on this: every event of Eqs. (4)
+// and (8) is then the single root of a monotone function on a known bracket.
+#pragma once
+#include <boost/math/constants/constants.hpp>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibrofric/detail/roots.hpp"
+#include "vibrofric/errors.hpp"
+
+namespace vibrofric {
+
+// How a user waveform was brought to zero mean and unit amplitude: w = (raw − offset) / scale,
+// with scale = (max − min)/2 of the zero-mean signal, so that max w − min w = 2.
+template <class Real>
+struct Normalisation {
+  bool applied = false;  // false for the catalogue, which is normalised by definition
+  Real offset = 0;       // mean of the raw signal
+  Real scale = 1;        // half the raw peak-to-peak amplitude
+};
+
+template <class Real>
+class Waveform {
+ public:
+  virtual ~Waveform() = default;
+
+  const std::string& name() const { return name_; }
+  std::size_t piece_count() const { return begins_.size(); }
+  const Real& piece_begin(std::size_t i) const { return begins_[i]; }
+  const Real& piece_end(std::size_t i) const { return ends_[i]; }
+
+  // Smooth branch of piece i at φ ∈ [x_i, x_{i+1}], its slope, and (if has_antiderivative) an
+  // antiderivative; only differences within one piece are meaningful.
+  virtual Real value(std::size_t i, const Real& phi) const = 0;
+  virtual Real slope(std::size_t i, const Real& phi) const = 0;
+  virtual bool has_antiderivative() const { return false; }
+  virtual Real antiderivative(std::size_t, const Real&) const {
+    throw SolverError("waveform " + name_ + " has no antiderivative");
+  }
+  // Closed-form solutions on piece i, where known: φ with value(i, φ) = y, φ with slope = b.
+  // Called only when the root exists on the piece; the generic root finder is the fallback.
+  virtual std::optional<Real> solve_value(std::size_t, const Real&) const { return std::nullopt; }
+  virtual std::optional<Real> solve_slope(std::size_t, const Real&) const { return std::nullopt; }
+
+  bool linear(std::size_t i) const { return slope(i, begins_[i]) == slope(i, ends_[i]); }
+  bool convex(std::size_t i) const { return slope(i, begins_[i]) <= slope(i, ends_[i]); }
+
+  // Right-continuous value and slope at any phase (reduced modulo 1).
+  Real operator()(const Real& phi) const { return value(locate(phi), reduce(phi)); }
+  Real slope_at(const Real& phi) const { return slope(locate(phi), reduce(phi)); }
+
+  // True if w is discontinuous at breakpoint i (its one-sided limits differ by more than
+  // rounding): only there can n jump. Continuous joins (samples, Fourier) are never jumps.
+  bool jump_at(std::size_t i) const { return jump_[i]; }
+
+  const Real& minimum() const { return min_; }
+  const Real& maximum() const { return max_; }
+  // Index of the breakpoint where the minimum is reached (as a one-sided limit).
+  std::size_t argmin_break() const { return argmin_; }
+  const Normalisation<Real>& normalisation() const { return norm_; }
+
+  // Piece i reduced to where γ + w > 0: returns false if there is no contact on the piece.
+  bool contact_part(std::size_t i, const Real& gamma, Real& c0, Real& c1,
+                    detail::RootStats& stats) const {
+    c0 = begins_[i];
+    c1 = ends_[i];
+    const Real g0 = gamma + value(i, c0), g1 = gamma + value(i, c1);
+    if (g0 <= 0 && g1 <= 0) return false;
+    if ((g0 < 0) != (g1 < 0)) {
+      const Real c = solve_value_root(i, -gamma, c0, c1, g0, g1, stats);
+      (g0 < 0 ? c0 : c1) = c;
+    }
+    return true;
+  }
+
+  // φ in [lo, hi] ⊂ piece i with value(i, φ) = y, where g_lo = value − y at lo, g_hi at hi.
+  Real solve_value_root(std::size_t i, const Real& y, const Real& lo, const Real& hi,
+                        const Real& g_lo, const Real& g_hi, detail::RootStats& stats) const {
+    if (auto r = solve_value(i, y)) return clamp(*r, lo, hi);
+    return detail::bracketed_root<Real>(
+        [&](const Real& x) -> Real { return value(i, x) - y; }, lo, hi, g_lo, g_hi,
+        "contact boundary (γ + w = 0)", stats);
+  }
+
+  // Largest rising slope of n = max(γ + w, 0) (Eq. 6, model.md): +∞ if n jumps upward.
+  Real beta_c(const Real& gamma) const {
+    detail::RootStats stats;
+    Real best = 0;
+    const std::size_t m = piece_count();
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t prev = (i + m - 1) % m;
+      const Real left = gamma + value(prev, ends_[prev]);
+      const Real right = gamma + value(i, begins_[i]);
+      if (jump_[i] && right > 0 && right > left) return std::numeric_limits<Real>::infinity();
+      Real c0, c1;
+      if (!contact_part(i, gamma, c0, c1, stats)) continue;
+      using std::max;
+      best = max(best, max(slope(i, c0), slope(i, c1)));
+    }
+    return best;
+  }
+
+ protected:
+  explicit Waveform(std::string name) : name_(std::move(name)) {}
+
+  // Sets the pieces (begins[0] = 0, increasing, all < 1) and the extrema from the pieces' ends.
+  void set_pieces(std::vector<Real> begins) {
+    begins_ = std::move(begins);
+    ends_.assign(begins_.begin() + 1, begins_.end());
+    ends_.push_back(Real(1));
+    const std::size_t m = begins_.size();
+    min_ = max_ = value(0, begins_[0]);
+    argmin_ = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      const Real a = value(i, begins_[i]), b = value(i, ends_[i]);
+      if (a < min_) { min_ = a; argmin_ = i; }
+      if (b < min_) { min_ = b; argmin_ = (i + 1) % m; }
+      if (a > max_) max_ = a;
+      if (b > max_) max_ = b;
+    }
+    jump_.assign(m, false);
+    using std::abs;
+    const Real tiny = 64 * std::numeric_limits<Real>::epsilon() * (max_ - min_);
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t prev = (i + m - 1) % m;
+      jump_[i] = abs(value(prev, ends_[prev]) - value(i, begins_[i])) > tiny;
+    }
+  }
+
+  Normalisation<Real> norm_;
+
+ private:
+  static Real reduce(const Real& phi) {
+    using std::floor;
+    Real r = phi - floor(phi);
+    return r >= 1 ? Real(0) : r;
+  }
+  std::size_t locate(const Real& phi) const {
+    const Real r = reduce(phi);
+    std::size_t i = begins_.size() - 1;
+    while (i > 0 && r < begins_[i]) --i;
+    return i;
+  }
+  static Real clamp(const Real& x, const Real& lo, const Real& hi) {
+    return x < lo ? lo : (x > hi ? hi : x);
+  }
+
+  std::string name_;
+  std::vector<Real> begins_, ends_;
+  std::vector<bool> jump_;
+  Real min_ = 0, max_ = 0;
+  std::size_t argmin_ = 0;
+};
+
+// sin 2πφ. Pieces split at the extrema (1/4, 3/4) and inflections (0, 1/2).
+template <class Real>
+class Sine final : public Waveform<Real> {
+ public:
+  Sine() : Waveform<Real>("sine") {
+    const Real q = Real(1) / 4;
+    this->set_pieces({Real(0), q, 2 * q, 3 * q});
+  }
+  Real value(std::size_t, const Real& phi) const override {
+    using std::sin;
+    return sin(two_pi() * phi);
+  }
+  Real slope(std::size_t, const Real& phi) const override {
+    using std::cos;
+    return two_pi() * cos(two_pi() * phi);
+  }
+  bool has_antiderivative() const override { return true; }
+  Real antiderivative(std::size_t, const Real& phi) const override {
+    using std::cos;
+    return -cos(two_pi() * phi) / two_pi();
+  }
+  // acos keeps the distance from the nearest extremum accurate (the contact width near γ = −1).
+  std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
+    using std::acos;
+    const Real q = Real(1) / 4;
+    switch (i) {
+      case 0: return q - acos(y) / two_pi();
+      case 1: return q + acos(y) / two_pi();
+      case 2: return 3 * q - acos(-y) / two_pi();
+      default: return 3 * q + acos(-y) / two_pi();
+    }
+  }
+  std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
+    using std::acos;
+    const Real c = b / two_pi();
+    if (i == 0) return acos(c) / two_pi();
+    if (i == 3) return 1 - acos(c) / two_pi();
+    return std::nullopt;
+  }
+
+ private:
+  static Real two_pi() { return boost::math::constants::two_pi<Real>(); }
+};
+
+// Piecewise linear through (x_i, y_i) with slope s_i on each piece: triangle, sawteeth, square
+// (Eq. 16) and sampled user signals.
+template <class Real>
+class PiecewiseLinear : public Waveform<Real> {
+ public:
+  struct Piece {
+    Real begin, anchor, slope;  // value = anchor + slope·(φ − begin)
+  };
+  PiecewiseLinear(std::string name, std::vector<Piece> pieces)
+      : Waveform<Real>(std::move(name)), pieces_(std::move(pieces)) {
+    std::vector<Real> begins;
+    for (const auto& p : pieces_) begins.push_back(p.begin);
+    this->set_pieces(std::move(begins));
+  }
+  Real value(std::size_t i, const Real& phi) const override {
+    const Piece& p = pieces_[i];
+    return p.anchor + p.slope * (phi - p.begin);
+  }
+  Real slope(std::size_t i, const Real&) const override { return pieces_[i].slope; }
+  bool has_antiderivative() const override { return true; }
+  Real antiderivative(std::size_t i, const Real& phi) const override {
+    const Piece& p = pieces_[i];
+    const Real d = phi - p.begin;
+    return d * (p.anchor + p.slope * d / 2);
+  }
+  std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
+    const Piece& p = pieces_[i];
+    if (p.slope == 0) return std::nullopt;
+    return p.begin + (y - p.anchor) / p.slope;
+  }
+
+ protected:
+  std::vector<Piece> pieces_;
+};
+
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_triangle() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>(
+      "triangle", std::vector<P>{{Real(0), Real(-1), Real(4)}, {Real(1) / 2, Real(1), Real(-4)}});
+}
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_sawtooth_right() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>("sawtooth-right",
+                                                 std::vector<P>{{Real(0), Real(-1), Real(2)}});
+}
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_sawtooth_left() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>("sawtooth-left",
+                                                 std::vector<P>{{Real(0), Real(1), Real(-2)}});
+}
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_square() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>(
+      "square", std::vector<P>{{Real(0), Real(1), Real(0)}, {Real(1) / 2, Real(-1), Real(0)}});
+}
+
+// power:p — 1 − |4φ − 1|^p on [0, 1/2), −(1 − |4φ − 3|^p) on [1/2, 1), p ≥ 1 (model.md).
+// Near each peak it is exactly a power-law cap of order p. With u the distance to the nearest
+// peak in units of 1/4, piece i has w = ±(1 − u^p).
+template <class Real>
+class Power final : public Waveform<Real> {
+ public:
+  explicit Power(const Real& p, std::string name) : Waveform<Real>(std::move(name)), p_(p) {
+    if (!(p >= 1))
+      throw InputError("power:p needs p ≥ 1 (got " + detail::short_str(p) + ")");
+    const Real q = Real(1) / 4;
+    this->set_pieces({Real(0), q, 2 * q, 3 * q});
+  }
+  const Real& exponent() const { return p_; }
+  Real value(std::size_t i, const Real& phi) const override {
+    using std::pow;
+    const Real up = pow(distance(i, phi), p_);
+    return i < 2 ? 1 - up : up - 1;
+  }
+  Real slope(std::size_t i, const Real& phi) const override {
+    using std::pow;
+    const Real d = 4 * p_ * pow(distance(i, phi), p_ - 1);
+    return (i == 0 || i == 3) ? d : Real(-d);
+  }
+  bool has_antiderivative() const override { return true; }
+  Real antiderivative(std::size_t i, const Real& phi) const override {
+    using std::pow;
+    // d/dφ [u^{p+1}/(4(p+1))] = u^p·(du/dφ)/4, with du/dφ = −4, +4, −4, +4 on pieces 0–3.
+    const Real t = pow(distance(i, phi), p_ + 1) / (4 * (p_ + 1));
+    switch (i) {
+      case 0: return phi + t;
+      case 1: return phi - t;
+      case 2: return -phi - t;
+      default: return -phi + t;
+    }
+  }
+  std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
+    using std::pow;
+    const Real u = pow(i < 2 ? Real(1 - y) : Real(1 + y), 1 / p_);
+    return from_distance(i, u);
+  }
+  std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
+    using std::pow;
+    if (p_ == 1 || (i != 0 && i != 3)) return std::nullopt;
+    return from_distance(i, pow(b / (4 * p_), 1 / (p_ - 1)));
+  }
+
+ private:
+  // u ∈ [0, 1]: distance from the peak of the piece's half-wave, in units of 1/4.
+  static Real distance(std::size_t i, const Real& phi) {
+    switch (i) {
+      case 0: return 1 - 4 * phi;
+      case 1: return 4 * phi - 1;
+      case 2: return 3 - 4 * phi;
+      default: return 4 * phi - 3;
+    }
+  }
+  static Real from_distance(std::size_t i, const Real& u) {
+    switch (i) {
+      case 0: return (1 - u) / 4;
+      case 1: return (1 + u) / 4;
+      case 2: return (3 - u) / 4;
+      default: return (3 + u) / 4;
+    }
+  }
+  Real p_;
+};
+
+}  // namespace vibrofric

@@ -1,0 +1,278 @@
+// vibrofric: the command-line tool. μ̄/μ0 (Eq. 15), Ψ_w (Eq. 12), sweeps, physical inputs
+// (Eqs. 1, 5, 14) and the claims check. Bad input: one line on stderr, exit 2; solver failure: 1.
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "vibrofric/catalogue.hpp"
+#include "vibrofric/claims.hpp"
+#include "vibrofric/evaluate.hpp"
+#include "vibrofric/physical.hpp"
+
+namespace {
+
+using namespace vibrofric;
+
+const char* const kUsage =
+    "usage: vibrofric COMMAND [OPTIONS]\n"
+    "\n"
+    "Sliding friction under normal oscillation (M. Popov, large amplitudes): the macroscopic\n"
+    "coefficient of friction mu/mu0 = g_w(beta, gamma) and the reduction function Psi_w(beta).\n"
+    "\n"
+    "commands:\n"
+    "  mu        mu/mu0 at one point:        --wave W --beta B --gamma G\n"
+    "  psi       Psi_w(beta), non-jumping:   --wave W --beta B\n"
+    "  sweep     CSV over beta and gamma:    --wave W --beta FROM:TO:N --gamma G1,G2,...\n"
+    "  physical  from physical inputs (SI):  see 'vibrofric physical --help'\n"
+    "  verify    check the paper's claims (Eqs. 6, 13, 17, 18, 19, 21, 22)\n"
+    "\n"
+    "precision (mu, psi, sweep, physical):\n"
+    "  --digits D   significant digits, 1 to 10000 (default 50), mpfr with guard digits\n"
+    "  --type T     double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr\n"
+    "\n"
+    "waves W: sine (harmonic), triangle (tri), sawtooth-right (str), sawtooth-left (stl),\n"
+    "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
+    "  fourier FILE: lines 'k a_k b_k' for w = sum a_k cos(2 pi k phi) + b_k sin(2 pi k phi)\n"
+    "  samples FILE: one period of values y_j at phi = j/N, whitespace separated, linear between\n"
+    "  ('#' starts a comment in both). User waves are normalised to zero mean and max - min = 2.\n"
+    "\n"
+    "exit status: 0 success, 1 solver failure, 2 bad input.\n";
+
+const char* const kPhysicalUsage =
+    "usage: vibrofric physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA]\n"
+    "                          --radius M --v0 M/S --f HZ --A M --u-mean M --mu0 MU\n"
+    "                          [--digits D | --type T]\n"
+    "\n"
+    "Flat-ended cylinder of radius a (Eq. 1): k_z = 2 E* a, k_x = 2 G* a, with\n"
+    "1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2);\n"
+    "G defaults to E/(2(1 + nu)). Then beta = k_x v0/(mu0 k_z A f) (Eq. 5), gamma = u_mean/A\n"
+    "(Eq. 14). Prints E*, G*, k_z, k_x, beta, gamma, mu/mu0 and mu, one 'name = value' a line.\n";
+
+struct Args {
+  std::string command;
+  std::map<std::string, std::string> flags;
+  bool help = false;
+};
+
+// --name value, --name=value; values may start with '-' (negative numbers).
+Args parse_args(int argc, char** argv, const std::map<std::string, std::set<std::string>>& allowed) {
+  Args a;
+  if (argc < 2) throw InputError("missing command: expected mu, psi, sweep, physical or verify (see --help)");
+  a.command = argv[1];
+  if (a.command == "--help" || a.command == "-h" || a.command == "help") {
+    a.help = true;
+    a.command.clear();
+    return a;
+  }
+  const auto it = allowed.find(a.command);
+  if (it == allowed.end())
+    throw InputError("unknown command '" + a.command + "': expected mu, psi, sweep, physical or verify");
+  for (int i = 2; i < argc; ++i) {
+    std::string tok = argv[i];
+    if (tok == "--help" || tok == "-h") {
+      a.help = true;
+      continue;
+    }
+    if (tok.rfind("--", 0) != 0) throw InputError("unexpected argument '" + tok + "': expected --flag value");
+    std::string name = tok.substr(2), value;
+    bool has_value = false;
+    if (const auto eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+      has_value = true;
+    }
+    if (!it->second.count(name)) throw InputError("unknown flag --" + name + " for '" + a.command + "'");
+    if (!has_value) {
+      if (i + 1 >= argc) throw InputError("flag --" + name + " needs a value");
+      value = argv[++i];
+    }
+    if (a.flags.count(name)) throw InputError("flag --" + name + " given twice");
+    a.flags[name] = value;
+  }
+  return a;
+}
+
+const std::string& need(const Args& a, const std::string& name) {
+  const auto it = a.flags.find(name);
+  if (it == a.flags.end()) throw InputError("missing --" + name + " for '" + a.command + "'");
+  return it->second;
+}
+
+int parse_int(const std::string& text, const std::string& what, long lo, long hi) {
+  if (!std::regex_match(text, std::regex("[+-]?[0-9]{1,9}")))
+    throw InputError(what + " = '" + text + "': expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+  const long v = std::stol(text);
+  if (v < lo || v > hi)
+    throw InputError(what + " = " + text + ": expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return static_cast<int>(v);
+}
+
+Precision parse_precision(const Args& a) {
+  Precision p;
+  const bool has_digits = a.flags.count("digits"), has_type = a.flags.count("type");
+  if (has_type) p.type = parse_number_type(a.flags.at("type"));
+  if (has_digits) {
+    if (has_type && p.type != NumberType::mpfr)
+      throw InputError("--digits goes with mpfr only: --type " + a.flags.at("type") + " has fixed precision");
+    p.digits = parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits);
+  }
+  return p;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (;;) {
+    const auto pos = s.find(sep, start);
+    out.push_back(s.substr(start, pos - start));
+    if (pos == std::string::npos) return out;
+    start = pos + 1;
+  }
+}
+
+// β_i = FROM + i (TO − FROM)/(N − 1), as decimal strings of 17 significant digits computed at
+// 40 digits: the printed β is exactly the β evaluated.
+std::vector<std::string> beta_range(const std::string& spec) {
+  const auto parts = split(spec, ':');
+  if (parts.size() != 3) throw InputError("--beta '" + spec + "': expected FROM:TO:N");
+  check_decimal(parts[0], "--beta FROM");
+  check_decimal(parts[1], "--beta TO");
+  const int n = parse_int(parts[2], "--beta N", 1, 1000000);
+  PrecisionScope scope(40);
+  const mpfr from(parts[0]), to(parts[1]);
+  if (to < from) throw InputError("--beta '" + spec + "': empty range, expected FROM <= TO");
+  if (n > 1 && !(to > from)) throw InputError("--beta '" + spec + "': empty range for N > 1, expected FROM < TO");
+  std::vector<std::string> out;
+  for (int i = 0; i < n; ++i) {
+    const mpfr b = n == 1 ? from : mpfr(from + (to - from) * i / (n - 1));
+    std::string s = format_significant(b, 17);
+    if (s.find('.') != std::string::npos && s.find('e') == std::string::npos) {
+      while (s.back() == '0') s.pop_back();
+      if (s.back() == '.') s.pop_back();
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+int run_mu_psi(const Args& a, Quantity q) {
+  const WaveSpec wave = parse_wave(need(a, "wave"));
+  Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
+  check_decimal(p.beta, "--beta");
+  if (q == Quantity::mu) check_decimal(p.gamma, "--gamma");
+  std::cout << evaluate(wave, q, {p}, parse_precision(a)).front() << '\n';
+  return 0;
+}
+
+int run_sweep(const Args& a) {
+  const WaveSpec wave = parse_wave(need(a, "wave"));
+  const auto betas = beta_range(need(a, "beta"));
+  const auto gammas = split(need(a, "gamma"), ',');
+  for (const auto& g : gammas) check_decimal(g, "--gamma value");
+  const Precision prec = parse_precision(a);
+  std::vector<Point> points;
+  for (const auto& g : gammas)
+    for (const auto& b : betas) points.push_back({b, g});
+  BatchOptions opt;
+  opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
+  std::mutex m;
+  if (isatty(2))
+    opt.progress = [&](std::size_t done) {
+      std::lock_guard<std::mutex> lock(m);
+      std::fprintf(stderr, "\rsweep: %zu/%zu", done, points.size());
+      if (done == points.size()) std::fprintf(stderr, "\n");
+    };
+  const auto values = evaluate(wave, Quantity::mu, points, prec, opt);
+  std::cout << "wave,beta,gamma,mu_over_mu0\n";
+  for (std::size_t i = 0; i < points.size(); ++i)
+    std::cout << wave.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
+  return 0;
+}
+
+int run_physical(const Args& a) {
+  const WaveSpec wave = parse_wave(need(a, "wave"));
+  const Precision prec = parse_precision(a);
+  const int digits = output_digits(prec);
+  PrecisionScope scope(static_cast<unsigned>(digits + 20));
+  auto get = [&](const char* name) { return parse_real<mpfr>(need(a, name), std::string("--") + name); };
+  auto opt = [&](const char* name) {
+    return a.flags.count(name) ? parse_real<mpfr>(a.flags.at(name), std::string("--") + name) : mpfr(0);
+  };
+  PhysicalInput<mpfr> in{get("E1"), get("nu1"), get("E2"), get("nu2"), opt("G1"), opt("G2"),
+                         get("radius"), get("v0"), get("f"), get("A"), get("u-mean"), get("mu0")};
+  if (a.flags.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + a.flags.at("G1") + ": expected a value > 0");
+  if (a.flags.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + a.flags.at("G2") + ": expected a value > 0");
+  const auto g = physical_groups(in);
+  const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
+  const std::string mu_ratio = evaluate(wave, Quantity::mu, {{beta, gamma}}, prec).front();
+  const mpfr mu = mpfr(mu_ratio) * in.mu0;
+  auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
+  line("E_star_Pa", g.E_star);
+  line("G_star_Pa", g.G_star);
+  line("k_z_N_per_m", g.k_z);
+  line("k_x_N_per_m", g.k_x);
+  line("beta", g.beta);
+  line("gamma", g.gamma);
+  std::cout << "mu_over_mu0 = " << mu_ratio << '\n';
+  line("mu", mu);
+  return 0;
+}
+
+int run_verify(const Args& a) {
+  const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", 10, 1000) : 50;
+  const auto checks = verify_claims(digits);
+  std::printf("%-8s %-8s %-22s %-10s %s\n", "claim", "cases", "verdict", "deviation", "statement");
+  int failed = 0;
+  for (const auto& c : checks) {
+    char dev[32];
+    std::snprintf(dev, sizeof dev, "%.2e", c.deviation);
+    std::printf("%-8s %-8zu %-22s %-10s %s\n", c.id.c_str(), c.cases, verdict_name(c.verdict).c_str(), dev, c.statement.c_str());
+    if (c.verdict == Verdict::fails) ++failed;
+  }
+  std::printf("\nrequested precision: %d digits (holds: deviation <= 1e-%d; holds approximately: <= 1e-3)\n", digits, digits);
+  std::printf("worst cases:\n");
+  for (const auto& c : checks) std::printf("  %-8s %s\n", c.id.c_str(), c.worst.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::set<std::string> prec{"digits", "type"};
+  auto with = [&](std::set<std::string> s) {
+    s.insert(prec.begin(), prec.end());
+    return s;
+  };
+  const std::map<std::string, std::set<std::string>> allowed{
+      {"mu", with({"wave", "beta", "gamma"})},
+      {"psi", with({"wave", "beta"})},
+      {"sweep", with({"wave", "beta", "gamma", "threads"})},
+      {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "mu0"})},
+      {"verify", {"digits"}},
+  };
+  try {
+    const Args a = parse_args(argc, argv, allowed);
+    if (a.help) {
+      std::cout << (a.command == "physical" ? kPhysicalUsage : kUsage);
+      return 0;
+    }
+    if (a.command == "mu") return run_mu_psi(a, Quantity::mu);
+    if (a.command == "psi") return run_mu_psi(a, Quantity::psi);
+    if (a.command == "sweep") return run_sweep(a);
+    if (a.command == "physical") return run_physical(a);
+    return run_verify(a);
+  } catch (const InputError& e) {
+    std::cerr << "vibrofric: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "vibrofric: error: " << e.what() << '\n';
+    return 1;
+  }
+}
