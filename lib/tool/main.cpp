@@ -36,6 +36,8 @@ const char* const kUsage =
     "precision (mu, psi, sweep, physical):\n"
     "  --digits D   significant digits, 1 to 10000 (default 50), mpfr with guard digits\n"
     "  --type T     double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr\n"
+    "  --no-escalate=1  fixed types: print the value computed in the type even where its\n"
+    "               rounding bound exceeds the type's epsilon (default: recompute with mpfr)\n"
     "\n"
     "waves W: sine (harmonic), triangle (tri), sawtooth-right (str), sawtooth-left (stl),\n"
     "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
@@ -167,7 +169,9 @@ int run_mu_psi(const Args& a, Quantity q) {
   Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
   check_decimal(p.beta, "--beta");
   if (q == Quantity::mu) check_decimal(p.gamma, "--gamma");
-  std::cout << evaluate(wave, q, {p}, parse_precision(a)).front() << '\n';
+  BatchOptions opt;
+  opt.escalate = !a.flags.count("no-escalate");
+  std::cout << evaluate(wave, q, {p}, parse_precision(a), opt).front() << '\n';
   return 0;
 }
 
@@ -181,6 +185,7 @@ int run_sweep(const Args& a) {
   for (const auto& g : gammas)
     for (const auto& b : betas) points.push_back({b, g});
   BatchOptions opt;
+  opt.escalate = !a.flags.count("no-escalate");
   opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
   std::mutex m;
   if (isatty(2))
@@ -245,7 +250,7 @@ int run_verify(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::set<std::string> prec{"digits", "type"};
+  const std::set<std::string> prec{"digits", "type", "no-escalate"};
   auto with = [&](std::set<std::string> s) {
     s.insert(prec.begin(), prec.end());
     return s;

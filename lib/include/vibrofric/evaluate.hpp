@@ -41,6 +41,10 @@ struct Point {
 
 struct BatchOptions {
   Options solver;
+  // Hardware and fixed types: where the solver's rounding bound exceeds the type's epsilon
+  // (β → 0, γ → −min w), recompute with mpfr and round to the type (like Boost.Math's
+  // promote_double). Off: the value computed in the type, whatever its error.
+  bool escalate = true;
   unsigned threads = 1;                               // 0: all cores
   std::function<void(std::size_t done)> progress;     // called from worker threads, may be empty
 };

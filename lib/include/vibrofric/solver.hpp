@@ -111,12 +111,11 @@ class Sweep {
     r.jumping = gamma_ + w_.minimum() < 0;
     r.area = method_;
     r.stick_phases = stick_;
+    // First-order rounding bounds (in eps) of the areas, relative to the areas themselves: large
+    // where the areas are small differences of O(1) phases and values (β → 0, γ → −min w).
     const Real eps = std::numeric_limits<Real>::epsilon();
-    // Each area term is a difference of quantities of size ≤ magnitude_: its rounding error is a
-    // few eps of that; quadrature adds its own estimate.
-    const Real abs_err = 8 * eps * magnitude_ + quad_error_;
-    r.relative_error = stick_.empty() ? Real(0) : Real(abs_err / retained_ + abs_err / normal_);
-    r.lost_relative_error = lost_ > 0 ? Real((8 * eps * lost_magnitude_ + quad_error_) / lost_) : Real(0);
+    r.relative_error = stick_.empty() ? Real(0) : Real(eps * (err_retained_ / retained_ + err_normal_ / normal_));
+    r.lost_relative_error = lost_ > 0 ? Real(eps * err_lost_ / lost_) : Real(0);
     r.events = events_;
     r.root_solves = stats_.solves;
     r.root_iterations = stats_.iterations;
@@ -149,7 +148,10 @@ class Sweep {
   // Pieces split at contact boundaries; start_ = first segment at the argmin breakpoint.
   void build_segments() {
     const std::size_t pieces = w_.piece_count();
+    using std::abs;
     for (std::size_t i = 0; i < pieces; ++i) {
+      for (const Real& x : {w_.piece_begin(i), w_.piece_end(i)})
+        if (abs(w_.slope(i, x)) > max_slope_) max_slope_ = abs(w_.slope(i, x));
       if (i == w_.argmin_break()) start_ = segs_.size();
       const Real& a = w_.piece_begin(i);
       const Real& b = w_.piece_end(i);
@@ -284,9 +286,13 @@ class Sweep {
   }
 
   void open_stick(const Real& at, const Real& level) {
+    using std::abs;
     sticking_ = true;
     a_ = at;
     level_ = level;
+    // The level is n at a rounded phase: its value error plus a phase error times the steepest
+    // slope of n near there (bounded by the waveform's largest |w'| over the piece ends).
+    level_err_ = value_bound() + (1 + abs(at)) * max_slope_;
     ++events_;
   }
   void close_stick(const Real& at) {
@@ -299,21 +305,34 @@ class Sweep {
     stick_.push_back({begin, end, level_});
   }
 
-  // ∫ n over [p, q] of segment g, exact or by quadrature.
-  Real area_n(const Segment& g, const Real& p, const Real& q) {
+  // Rounding bound (in eps) of ∫f over [p, q] from the phases alone: each phase carries an
+  // absolute error of about eps·(1 + |φ|), weighted by the integrand there.
+  static Real position_bound(const Real& p, const Real& q, const Real& fp, const Real& fq) {
+    using std::abs;
+    return (1 + abs(p)) * abs(fp) + (1 + abs(q)) * abs(fq);
+  }
+  // Bound (in eps) of one evaluation of n = γ + w.
+  Real value_bound() const {
+    using std::abs;
+    return abs(gamma_) + w_.maximum() - w_.minimum();
+  }
+
+  // ∫ n over [p, q] of segment g, exact or by quadrature; adds its rounding bound to `err`.
+  Real area_n(const Segment& g, const Real& p, const Real& q, Real& err) {
     if (!g.contact || !(q > p)) return Real(0);
+    using std::abs;
+    err += position_bound(p, q, n(g, p), n(g, q)) + (q - p) * value_bound();
     if (method_ == AreaMethod::exact) {
       evaluations_ += 2;
       const Real wq = w_.antiderivative(g.piece, q), wp = w_.antiderivative(g.piece, p);
-      using std::abs;
-      magnitude_ += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
+      err += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
       return gamma_ * (q - p) + (wq - wp);
     }
-    return quad([&](const Real& x) -> Real { return n(g, x); }, p, q);
+    return quad([&](const Real& x) -> Real { return n(g, x); }, p, q, err);
   }
 
   template <class F>
-  Real quad(F f, const Real& p, const Real& q) {
+  Real quad(F f, const Real& p, const Real& q, Real& err_bound) {
     ++quadratures_;
     using std::abs;
     using std::sqrt;
@@ -332,31 +351,43 @@ class Sweep {
       throw SolverError("tanh-sinh quadrature did not converge on [" + short_str(p) + ", " +
                         short_str(q) + "]: error estimate " + short_str(err) + " after " +
                         std::to_string(levels) + " levels");
-    magnitude_ += 4 * l1;
-    lost_magnitude_ += 4 * l1;
-    quad_error_ += 16 * eps * l1;
+    // tanh-sinh: rounding of the weighted sum, plus the estimate (which overstates the error
+    // of the last level: convergence is doubly exponential).
+    err_bound += 4 * l1 + err / eps;
     return value;
   }
 
   void add_slip(const Segment& g, const Real& p, const Real& q) {
-    const Real a = area_n(g, p, q);
+    Real err = 0;
+    const Real a = area_n(g, p, q, err);
     normal_ += a;
     retained_ += a;
+    err_normal_ += err;
+    err_retained_ += err;
   }
   void add_stick(const Segment& g, const Real& p, const Real& q, const Real& shift) {
     if (!(q > p)) return;
-    const Real r = (q - p) * (ramp(p + shift) + ramp(q + shift)) / 2;
-    retained_ += r;
     using std::abs;
+    const Real rp = ramp(p + shift), rq = ramp(q + shift);
+    const Real r = (q - p) * (rp + rq) / 2;
+    // Ramp: its phases, and its level (a value of n at an event, placed by a rounded phase).
+    const Real ramp_err = position_bound(p, q, rp, rq) +
+                          (q - p) * (level_err_ + beta_ * (abs(p + shift) + abs(a_) + 2));
+    retained_ += r;
+    err_retained_ += ramp_err;
+    Real err = 0;
     if (method_ == AreaMethod::exact || !g.contact) {
-      const Real before = magnitude_;
-      const Real a = area_n(g, p, q);
+      const Real a = area_n(g, p, q, err);
       normal_ += a;
       lost_ += a - r;
-      lost_magnitude_ += (magnitude_ - before) + abs(r);
+      err_normal_ += err;
+      err_lost_ += err + ramp_err;
     } else {
-      normal_ += area_n(g, p, q);
-      lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x + shift); }, p, q);
+      normal_ += area_n(g, p, q, err);
+      err_normal_ += err;
+      Real lerr = 0;
+      lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x + shift); }, p, q, lerr);
+      err_lost_ += lerr + ramp_err + err;
     }
   }
 
@@ -371,7 +402,7 @@ class Sweep {
   bool sticking_ = false;
   Real s_ = 0, a_ = 0, level_ = 0;
   Real retained_ = 0, normal_ = 0, lost_ = 0;
-  Real magnitude_ = 0, lost_magnitude_ = 0, quad_error_ = 0;
+  Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0, max_slope_ = 0;
   std::vector<StickPhase<Real>> stick_;
   std::size_t events_ = 0, quadratures_ = 0, evaluations_ = 0;
 };

@@ -58,6 +58,18 @@ std::string evaluate_point(const WaveSpec& spec, Quantity q, const Point& p, int
   }
 }
 
+// A fixed-precision type: its own value where the rounding bound allows, else the mpfr value
+// at the type's round-trip digits rounded to the type.
+template <class Real>
+std::string evaluate_fixed(const Waveform<Real>& w, const WaveSpec& spec, Quantity q, const Point& p,
+                           int digits, const BatchOptions& options) {
+  const auto v = compute_point(w, q, p, options.solver);
+  if (!options.escalate || v.relative_error <= std::numeric_limits<Real>::epsilon())
+    return format_significant(v.value, digits);
+  const std::string exact = evaluate_point<mpfr>(spec, q, p, std::numeric_limits<Real>::max_digits10 + 3, options.solver);
+  return format_significant(parse_real<Real>(exact, "escalated value"), digits);
+}
+
 template <class Real>
 std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const std::vector<Point>& points,
                                         int digits, const BatchOptions& options) {
@@ -73,7 +85,7 @@ std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const 
           out[i] = evaluate_point<Real>(spec, q, points[i], digits, options.solver);
         } else {
           if (!w) w = make_waveform<Real>(spec);
-          out[i] = format_significant(compute_point(*w, q, points[i], options.solver).value, digits);
+          out[i] = evaluate_fixed(*w, spec, q, points[i], digits, options);
         }
       } catch (...) {
         errors[i] = std::current_exception();
