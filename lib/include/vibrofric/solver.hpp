@@ -36,8 +36,11 @@ struct Options {
   AreaMethod area = AreaMethod::automatic;
   // Root finder: stops when the bracket is within 4 ulp; more iterations than this is an error.
   std::uintmax_t max_root_iterations = 200;
-  // tanh-sinh: at most this many halvings; an error estimate above the target is an error.
+  // tanh-sinh: at most this many halvings; stops when two levels differ by at most
+  // quadrature_tolerance·L1 (0: sqrt(eps), after which the error is ~eps as convergence is
+  // doubly exponential); not reaching it is an error.
   std::size_t max_quadrature_levels = 15;
+  double quadrature_tolerance = 0;
 };
 
 template <class Real>
@@ -100,7 +103,7 @@ class Sweep {
     s_ = n_min;
     sticking_ = false;
     for (std::size_t j = 0; j < m; ++j) sweep_segment(segs_[(start_ + j) % m], start_ + j >= m);
-    if (sticking_) close_stick(end_phase_);
+    if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), Real(1));
 
     Result<Real> r;
     r.retained_area = retained_;
@@ -171,20 +174,20 @@ class Sweep {
         segs_.push_back({i, c1, b, false, false});
       }
     }
-    end_phase_ = w_.piece_begin(w_.argmin_break()) + 1;
   }
 
-  // Ramp of the current stick phase at unwrapped phase x.
-  Real ramp(const Real& x) const { return level_ + beta_ * (x - a_); }
+  // Ramp of the current stick phase at phase x of a segment shifted by `shift` periods. Phases
+  // stay piece-local: x − a is exact-ish within a period, and the shift difference is an integer.
+  Real ramp(const Real& x, const Real& shift) const { return level_ + beta_ * ((x - a_) + (shift - a_shift_)); }
 
   void sweep_segment(const Segment& g, bool wrapped) {
     const Real shift = wrapped ? Real(1) : Real(0);
     Real pos = g.u;
     const Real n_u = n(g, g.u);
     if (!sticking_) {
-      if (g.jump && n_u > s_) open_stick(g.u + shift, s_);  // upward jump of n
-    } else if (n_u <= ramp(g.u + shift)) {
-      close_stick(g.u + shift);  // n jumps below (or touches) the ramp
+      if (g.jump && n_u > s_) open_stick(g.u, shift, s_);  // upward jump of n
+    } else if (n_u <= ramp(g.u, shift)) {
+      close_stick(g.u, shift);  // n jumps below (or touches) the ramp
     }
     const bool convex = !g.contact || w_.convex(g.piece);
     for (;;) {
@@ -194,12 +197,12 @@ class Sweep {
       if (!sticking_) {
         // Slip: s = n until n' exceeds β (Eq. 4); n' is monotone on the segment.
         if (dn(g, pos) > beta_) {
-          open_stick(pos + shift, n(g, pos));
+          open_stick(pos, shift, n(g, pos));
         } else if (convex && dn(g, g.v) > beta_) {
           const Real t = slope_root(g, pos, g.v);
           add_slip(g, pos, t);
           pos = t;
-          open_stick(pos + shift, n(g, pos));
+          open_stick(pos, shift, n(g, pos));
         } else {
           add_slip(g, pos, g.v);
           s_ = n(g, g.v);
@@ -211,7 +214,7 @@ class Sweep {
       Real t;
       if (!(convex && onset_here) && stick_end(g, pos, shift, convex, t)) {
         add_stick(g, pos, t, shift);
-        close_stick(t + shift);
+        close_stick(t, shift);
         s_ = n(g, t);
         pos = t;
         continue;
@@ -223,7 +226,7 @@ class Sweep {
 
   // First t in (p0, v] with n(t) ≤ ramp(t), if any. d = n − ramp has d' = n' − β monotone.
   bool stick_end(const Segment& g, const Real& p0, const Real& shift, bool convex, Real& t) {
-    auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x + shift); };
+    auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
     auto dd = [&](const Real& x) -> Real { return dn(g, x) - beta_; };
     const Real& v = g.v;
     if (!(v > p0)) return false;
@@ -285,24 +288,20 @@ class Sweep {
                                 f_lo, f_hi, "maximum of n − ramp", stats_);
   }
 
-  void open_stick(const Real& at, const Real& level) {
+  void open_stick(const Real& at, const Real& shift, const Real& level) {
     using std::abs;
     sticking_ = true;
     a_ = at;
+    a_shift_ = shift;
     level_ = level;
     // The level is n at a rounded phase: its value error plus a phase error times the steepest
     // slope of n near there (bounded by the waveform's largest |w'| over the piece ends).
-    level_err_ = value_bound() + (1 + abs(at)) * max_slope_;
+    level_err_ = value_bound() + (1 + abs(at) + shift) * max_slope_;
     ++events_;
   }
-  void close_stick(const Real& at) {
+  void close_stick(const Real& at, const Real& shift) {
     sticking_ = false;
-    Real begin = a_, end = at;
-    if (begin >= 1) {
-      begin -= 1;
-      end -= 1;
-    }
-    stick_.push_back({begin, end, level_});
+    stick_.push_back({a_, Real(at + (shift - a_shift_)), level_});
   }
 
   // Rounding bound (in eps) of ∫f over [p, q] from the phases alone: each phase carries an
@@ -337,8 +336,7 @@ class Sweep {
     using std::abs;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    // Termination at sqrt(eps): tanh-sinh then has (doubly exponentially) ~eps error.
-    const Real tol = sqrt(eps);
+    const Real tol = opt_.quadrature_tolerance > 0 ? Real(opt_.quadrature_tolerance) : Real(sqrt(eps));
     Real err = 0, l1 = 0;
     std::size_t levels = 0;
     Real value;
@@ -368,11 +366,11 @@ class Sweep {
   void add_stick(const Segment& g, const Real& p, const Real& q, const Real& shift) {
     if (!(q > p)) return;
     using std::abs;
-    const Real rp = ramp(p + shift), rq = ramp(q + shift);
+    const Real rp = ramp(p, shift), rq = ramp(q, shift);
     const Real r = (q - p) * (rp + rq) / 2;
     // Ramp: its phases, and its level (a value of n at an event, placed by a rounded phase).
     const Real ramp_err = position_bound(p, q, rp, rq) +
-                          (q - p) * (level_err_ + beta_ * (abs(p + shift) + abs(a_) + 2));
+                          (q - p) * (level_err_ + beta_ * (abs(p) + abs(a_) + 4));
     retained_ += r;
     err_retained_ += ramp_err;
     Real err = 0;
@@ -386,7 +384,7 @@ class Sweep {
       normal_ += area_n(g, p, q, err);
       err_normal_ += err;
       Real lerr = 0;
-      lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x + shift); }, p, q, lerr);
+      lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); }, p, q, lerr);
       err_lost_ += lerr + ramp_err + err;
     }
   }
@@ -398,9 +396,8 @@ class Sweep {
   RootStats stats_;
   std::vector<Segment> segs_;
   std::size_t start_ = 0;
-  Real end_phase_ = 1;
   bool sticking_ = false;
-  Real s_ = 0, a_ = 0, level_ = 0;
+  Real s_ = 0, a_ = 0, a_shift_ = 0, level_ = 0;
   Real retained_ = 0, normal_ = 0, lost_ = 0;
   Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0, max_slope_ = 0;
   std::vector<StickPhase<Real>> stick_;

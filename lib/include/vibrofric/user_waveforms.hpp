@@ -13,19 +13,21 @@ namespace vibrofric {
 
 namespace detail {
 
-// All roots of a smooth 1-periodic f on [0, 1), given L ≥ max |f'|. A cell [a, b] is dropped when
-// |f(mid)| > L·(b − a)/2 (then f has no zero in it); otherwise it is halved, down to a width of
-// 2^-depth cells, where a sign change is refined to working precision. A zero of even
-// multiplicity (no sign change) is not reported: it does not split a monotone piece.
+// All roots of a smooth 1-periodic f on [0, 1), given L ≥ max |f'| and M ≥ max |f|. A cell
+// [a, b] is dropped when |f(mid)| > L·(b − a)/2 + 64·eps·M (then f has no zero in it, even with
+// f's rounding); otherwise it is halved, down to a width of 2^-30 cells, where a sign change is
+// refined to working precision. A zero of even multiplicity (no sign change) is not reported:
+// it does not split a monotone piece.
 template <class Real, class F>
-std::vector<Real> periodic_roots(F f, const Real& lipschitz, std::size_t cells, const char* what,
-                                 RootStats& stats) {
+std::vector<Real> periodic_roots(F f, const Real& lipschitz, const Real& magnitude, std::size_t cells,
+                                 const char* what, RootStats& stats) {
   using std::abs;
   struct Cell {
     Real a, b, fa, fb;
     int depth;
   };
   constexpr int max_depth = 30;
+  const Real margin = 64 * std::numeric_limits<Real>::epsilon() * magnitude;
   std::vector<Real> roots;
   std::vector<Cell> stack;
   const Real f0 = f(Real(0));
@@ -47,7 +49,7 @@ std::vector<Real> periodic_roots(F f, const Real& lipschitz, std::size_t cells, 
     if (c.fb == 0) continue;  // reported by the neighbouring cell
     const Real mid = (c.a + c.b) / 2;
     const Real fm = f(mid);
-    if (abs(fm) > lipschitz * (c.b - c.a) / 2) continue;
+    if (abs(fm) > lipschitz * (c.b - c.a) / 2 + margin) continue;
     if (c.depth >= max_depth) {
       if ((c.fa > 0) != (c.fb > 0)) roots.push_back(bracketed_root<Real>(f, c.a, c.b, c.fa, c.fb, what, stats));
       continue;
@@ -91,9 +93,9 @@ class FourierSeries final : public Waveform<Real> {
 
     detail::RootStats stats;
     const auto extrema = detail::periodic_roots<Real>(
-        [&](const Real& x) -> Real { return derivative(x, 1); }, bound(2), cells(), "extremum of the Fourier waveform", stats);
+        [&](const Real& x) -> Real { return derivative(x, 1); }, bound(2), bound(1), cells(), "extremum of the Fourier waveform", stats);
     const auto inflections = detail::periodic_roots<Real>(
-        [&](const Real& x) -> Real { return derivative(x, 2); }, bound(3), cells(), "inflection of the Fourier waveform", stats);
+        [&](const Real& x) -> Real { return derivative(x, 2); }, bound(3), bound(2), cells(), "inflection of the Fourier waveform", stats);
     Real lo = derivative(Real(0), 0), hi = lo;
     for (const Real& x : extrema) {
       const Real v = derivative(x, 0);
@@ -101,6 +103,7 @@ class FourierSeries final : public Waveform<Real> {
       if (v > hi) hi = v;
     }
     const Real scale = (hi - lo) / 2;
+    if (!(scale > 0)) throw SolverError("Fourier waveform " + this->name() + ": no extrema found");
     for (unsigned j = 1; j <= max_k_; ++j) {
       a_[j] /= scale;
       b_[j] /= scale;

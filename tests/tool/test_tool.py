@@ -1,0 +1,893 @@
+#!/usr/bin/python3
+"""Command-line tests of the vibrofric tool.
+
+Usage:  /usr/bin/python3 test_tool.py PATH/TO/vibrofric
+
+Standard library only. One line per test ("ok" or "FAIL" and the reason), then a closing line
+"N passed, M failed"; the exit status is non-zero if any test failed.
+
+Every expected value is computed here from a closed form, in exact rational arithmetic
+(fractions.Fraction, from the decimal input strings) or with decimal at high precision; the tool
+is never used to produce an expected value. The only comparisons of the tool with itself are the
+ones that are about the tool itself: the --type double vs --digits 40 accuracy check, the
+determinism of sweep, and physical's mu_over_mu0 against mu at the same beta and gamma.
+"""
+
+import decimal
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from decimal import Decimal
+from fractions import Fraction
+
+if len(sys.argv) != 2:
+    sys.stderr.write("usage: test_tool.py PATH/TO/vibrofric\n")
+    sys.exit(2)
+
+TOOL = os.path.abspath(sys.argv[1])
+TMP = tempfile.mkdtemp(prefix="vibrofric-tool-test-")
+
+passed = 0
+failed = 0
+
+
+class Fail(AssertionError):
+    pass
+
+
+def run(args, timeout=120):
+    p = subprocess.run([TOOL] + list(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       timeout=timeout, env=dict(os.environ, LC_ALL="C"))
+    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+
+
+def cmd(args):
+    return "vibrofric " + " ".join(repr(a) if (a == "" or " " in a) else a for a in args)
+
+
+def test(name, fn):
+    global passed, failed
+    try:
+        fn()
+    except Fail as e:
+        failed += 1
+        print("FAIL %s: %s" % (name, e))
+    except Exception as e:                       # a crash of the test itself counts as a failure
+        failed += 1
+        print("FAIL %s: %s: %s" % (name, type(e).__name__, e))
+    else:
+        passed += 1
+        print("ok   %s" % name)
+    sys.stdout.flush()
+
+
+def ok_run(args):
+    """Run a command that must succeed; return its stdout."""
+    rc, out, err = run(args)
+    if rc != 0:
+        raise Fail("%s: exit %d, stderr %r" % (cmd(args), rc, err.strip()))
+    if err:
+        raise Fail("%s: unexpected stderr %r" % (cmd(args), err.strip()))
+    return out
+
+
+def one_line(args):
+    out = ok_run(args)
+    if not out.endswith("\n") or out.count("\n") != 1 or not out.strip():
+        raise Fail("%s: expected exactly one line on stdout, got %r" % (cmd(args), out))
+    return out.strip()
+
+
+# --------------------------------------------------------------------------------------------
+# numbers
+# --------------------------------------------------------------------------------------------
+
+NUM = re.compile(r"[+-]?(\d+)(?:\.(\d*))?(?:[eE][+-]?\d+)?")
+
+
+def sig_digits(s):
+    """Number of significant digits printed in s (trailing zeros count)."""
+    m = NUM.fullmatch(s)
+    if not m:
+        raise Fail("not a decimal number: %r" % s)
+    return len((m.group(1) + (m.group(2) or "")).lstrip("0"))
+
+
+def F(s):
+    """Exact value of a decimal string."""
+    if not NUM.fullmatch(s):
+        raise Fail("not a decimal number: %r" % s)
+    return Fraction(Decimal(s))
+
+
+def half_ulp(s):
+    """Half a unit in the last printed digit of s."""
+    return Fraction(1, 2) * Fraction(10) ** Decimal(s).as_tuple().exponent
+
+
+def half_ulp_sig(x, digits):
+    """Half a unit in the digits-th significant digit of the (non-zero) Fraction x."""
+    return Fraction(1, 2) * Fraction(10) ** (Decimal(dec(abs(x), digits + 5)).adjusted() - digits + 1)
+
+
+def expect_digits(s, exact, digits, what):
+    """s has exactly `digits` significant digits and is `exact` correctly rounded to them."""
+    n = sig_digits(s)
+    if n != digits:
+        raise Fail("%s: %r has %d significant digits, expected %d" % (what, s, n, digits))
+    if abs(F(s) - exact) > half_ulp(s):
+        raise Fail("%s: got %s, expected %s (exact %s), error %.3g units in the last place"
+                   % (what, s, dec(exact, digits), dec(exact, digits + 10),
+                      float(abs(F(s) - exact) / (2 * half_ulp(s)))))
+
+
+def dec(x, digits):
+    """A Fraction as a decimal string with `digits` significant digits."""
+    ctx = decimal.Context(prec=digits, rounding=decimal.ROUND_HALF_EVEN)
+    return str(ctx.divide(Decimal(x.numerator), Decimal(x.denominator)))
+
+
+def expect_exact_one(s, digits, what):
+    if F(s) != 1 or sig_digits(s) != digits:
+        raise Fail("%s: got %r, expected 1 exactly with %d significant digits" % (what, s, digits))
+
+
+def mentions(msg, value):
+    """value occurs in msg as a whole token (not inside a longer number or word), or value is a
+    decimal number and msg shows a number of exactly the same value (0.0 shown as 0, -2.5e-3 as
+    -0.0025; but not -1.0000000000000000000001 shown as -1)."""
+    if re.search(r"(?<![\w.+-])" + re.escape(value) + r"(?![\w.])", msg):
+        return True
+    if not NUM.fullmatch(value):
+        return False
+    for tok in re.findall(r"(?<![\w.])[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(?![\w.])", msg):
+        try:
+            if Fraction(Decimal(tok)) == Fraction(Decimal(value)):
+                return True
+        except decimal.InvalidOperation:
+            pass
+    return False
+
+
+# --------------------------------------------------------------------------------------------
+# 1. bad input: exit 2, nothing on stdout, one line on stderr naming the offending value
+# --------------------------------------------------------------------------------------------
+
+def bad(name, args, values=(), words=()):
+    """values: each an alternative tuple (or a string) of tokens of which one must occur in the
+    message; words: substrings that must occur (e.g. the flag's name)."""
+    def fn():
+        rc, out, err = run(args)
+        problems = []
+        if rc != 2:
+            problems.append("exit %d, expected 2" % rc)
+        if out != "":
+            problems.append("stdout not empty: %r" % out[:200])
+        if not (err.endswith("\n") and err.count("\n") == 1 and err.strip()):
+            problems.append("stderr is not exactly one non-empty line")
+        for alts in values:
+            alts = (alts,) if isinstance(alts, str) else alts
+            if not any(mentions(err, a) for a in alts):
+                problems.append("message does not mention %s" % " or ".join(repr(a) for a in alts))
+        for w in words:
+            if w.lower() not in err.lower():
+                problems.append("message does not contain %r" % w)
+        if problems:
+            raise Fail("%s: %s; stderr was %r" % (cmd(args), "; ".join(problems), err))
+    test("bad-input " + name, fn)
+
+
+def write(name, text):
+    path = os.path.join(TMP, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def bad_input_tests():
+    mu = ["mu", "--wave", "sine"]
+
+    def mu_beta(v): return mu + ["--beta", v, "--gamma", "0.5"]
+
+    def mu_gamma(v): return mu + ["--beta", "1", "--gamma", v]
+
+    # beta <= 0
+    for v in ("0", "-1", "0.0", "-0", "0e5", "-2.5e-3"):
+        bad("beta=%s" % v, mu_beta(v), [v], ["beta"])
+    bad("psi beta=0", ["psi", "--wave", "triangle", "--beta", "0"], ["0"], ["beta"])
+    # NaN / infinities, overflow, garbage, empty: beta and gamma
+    for v in ("NaN", "nan", "inf", "-inf", "Infinity", "1e400", "-1e999", "1.5x", "1.5.3", "0x10",
+              " 1", "1e", "e5", "--", "1,5"):
+        bad("beta=%r" % v, mu_beta(v), [v], ["beta"])
+    for v in ("NaN", "nan", "inf", "-inf", "1e400", "-1e999", "1.5x", "1.5.3", "0x10"):
+        bad("gamma=%r" % v, mu_gamma(v), [v], ["gamma"])
+    bad("beta empty (--beta=)", mu + ["--beta=", "--gamma", "0.5"], [], ["beta", "empty"])
+    bad("beta empty (--beta '')", mu + ["--beta", "", "--gamma", "0.5"], [], ["beta", "empty"])
+    bad("gamma empty (--gamma=)", mu + ["--beta", "1", "--gamma="], [], ["gamma", "empty"])
+    bad("gamma empty (--gamma '')", mu + ["--beta", "1", "--gamma", ""], [], ["gamma", "empty"])
+    # no contact: gamma <= -1 for every catalogue wave
+    for w in ("sine", "triangle", "sawtooth-right", "sawtooth-left", "square", "power:2"):
+        for v in ("-1", "-1.5"):
+            bad("no contact %s gamma=%s" % (w, v), ["mu", "--wave", w, "--beta", "1", "--gamma", v],
+                [v], ["gamma"])
+    # the message must show the value given, not -1 (which would read as a different input)
+    bad("no contact gamma=-1.0000000000000000000001",
+        mu_gamma("-1.0000000000000000000001"), ["-1.0000000000000000000001"], ["gamma"])
+    # power:p
+    for w in ("power:", "power:abc", "power:0", "power:-2", "power:0.5", "power:0.999999999999",
+              "power:2x", "power:nan", "power:inf", "power:1e400"):
+        p = w[len("power:"):]
+        vals = [(w, p)] if p else [w]
+        bad("wave %s" % w, ["mu", "--wave", w, "--beta", "1", "--gamma", "0.5"], vals, ["power"])
+    # digits
+    for v in ("0", "10001", "-5", "abc", "2.5", "", "1e3", "99999999999999999999"):
+        bad("digits=%r" % v, mu_gamma("0.5") + ["--digits", v], [v] if v else [], ["digits"])
+    bad("digits with --type double", mu_gamma("0.5") + ["--digits", "20", "--type", "double"],
+        ["double"], ["digits"])
+    bad("digits with --type long-double (order reversed)",
+        mu_gamma("0.5") + ["--type", "long-double", "--digits", "20"], ["long-double"], ["digits"])
+    for v in ("float", "Double", "", "mpfr50", "quad"):
+        bad("type=%r" % v, mu_gamma("0.5") + ["--type", v], [("'%s'" % v, v)] if v else [], ["type"])
+    # waves
+    for w in ("foo", "sin", "SINE", "power", "tri ", "", "fourier:", "samples:", "sine:2"):
+        bad("wave=%r" % w, ["mu", "--wave", w, "--beta", "1", "--gamma", "0.5"],
+            [("'%s'" % w,)], ["wave"])
+    # commands, flags
+    bad("unknown command", ["frobnicate", "--wave", "sine"], ["frobnicate"], ["command"])
+    bad("unknown command MU", ["MU", "--wave", "sine", "--beta", "1", "--gamma", "0.5"], ["MU"])
+    bad("no command", [], [], ["command"])
+    bad("only a flag, no command", ["--wave", "sine"], ["--wave"])
+    bad("unknown flag", mu_gamma("0.5") + ["--bogus", "3"], ["--bogus"])
+    bad("unknown flag with =", mu_gamma("0.5") + ["--bogus=3"], ["--bogus"])
+    bad("gamma flag given to psi", ["psi", "--wave", "sine", "--beta", "1", "--gamma", "1"],
+        ["--gamma"])
+    bad("threads flag given to mu", mu_gamma("0.5") + ["--threads", "1"], ["--threads"])
+    bad("single-dash flag", mu_gamma("0.5") + ["-x"], ["-x"])
+    bad("stray positional", mu_gamma("0.5") + ["extra"], ["extra"])
+    bad("flag given twice", mu + ["--beta", "1", "--beta", "2", "--gamma", "0.5"], ["--beta"],
+        ["twice"])
+    bad("flag given twice (= form)", mu + ["--beta=1", "--gamma", "0.5", "--gamma=0.5"],
+        ["--gamma"], ["twice"])
+    bad("flag missing its value (last)", mu + ["--beta", "1", "--gamma"], ["--gamma"])
+    bad("flag missing its value (--digits last)", mu_gamma("0.5") + ["--digits"], ["--digits"])
+    bad("missing --wave", ["mu", "--beta", "1", "--gamma", "0.5"], ["--wave"], ["missing"])
+    bad("missing --beta", ["mu", "--wave", "sine", "--gamma", "0.5"], ["--beta"], ["missing"])
+    bad("missing --gamma", ["mu", "--wave", "sine", "--beta", "1"], ["--gamma"], ["missing"])
+    bad("psi missing --beta", ["psi", "--wave", "sine"], ["--beta"], ["missing"])
+    bad("psi missing --wave", ["psi", "--beta", "1"], ["--wave"], ["missing"])
+    bad("psi beta=nan", ["psi", "--wave", "sine", "--beta", "nan"], ["nan"], ["beta"])
+    bad("sweep missing --gamma", ["sweep", "--wave", "sine", "--beta", "1:2:3"], ["--gamma"],
+        ["missing"])
+    bad("verify digits=5", ["verify", "--digits", "5"], ["5"], ["digits"])
+    bad("verify unknown flag --wave", ["verify", "--wave", "sine"], ["--wave"])
+
+    # sweep ranges and gamma lists
+    sw = ["sweep", "--wave", "sine"]
+    bad("sweep N=0 (0:1:0)", sw + ["--beta", "0:1:0", "--gamma", "0.5"], [("0:1:0", "N = 0")])
+    bad("sweep N=0 (1:2:0)", sw + ["--beta", "1:2:0", "--gamma", "0.5"], [("1:2:0", "N = 0")])
+    bad("sweep N=-3", sw + ["--beta", "1:2:-3", "--gamma", "0.5"], [("1:2:-3", "-3")])
+    bad("sweep N=2.5", sw + ["--beta", "1:2:2.5", "--gamma", "0.5"], [("1:2:2.5", "2.5")])
+    bad("sweep empty range 2:1:5", sw + ["--beta", "2:1:5", "--gamma", "0.5"], ["2:1:5"])
+    bad("sweep empty range 1:1:3", sw + ["--beta", "1:1:3", "--gamma", "0.5"], ["1:1:3"])
+    bad("sweep range 1:2", sw + ["--beta", "1:2", "--gamma", "0.5"], ["1:2"])
+    bad("sweep range a:b:c", sw + ["--beta", "a:b:c", "--gamma", "0.5"], [("a:b:c", "'a'")])
+    bad("sweep range 1:2:3:4", sw + ["--beta", "1:2:3:4", "--gamma", "0.5"], ["1:2:3:4"])
+    bad("sweep range 1:x:3", sw + ["--beta", "1:x:3", "--gamma", "0.5"], [("1:x:3", "'x'")])
+    bad("sweep range with beta 0", sw + ["--beta", "0:1:3", "--gamma", "0.5"], ["0"], ["beta"])
+    bad("sweep range nan:1:3", sw + ["--beta", "nan:1:3", "--gamma", "0.5"],
+        [("nan:1:3", "'nan'")])
+    bad("sweep single beta (plain number)", sw + ["--beta", "1", "--gamma", "0.5"], ["1"])
+    bad("sweep gamma list 0.5,,1", sw + ["--beta", "1:2:3", "--gamma", "0.5,,1"],
+        [("0.5,,1", "empty")], ["gamma"])
+    bad("sweep gamma list 0.5,x", sw + ["--beta", "1:2:3", "--gamma", "0.5,x"],
+        [("0.5,x", "'x'")], ["gamma"])
+    bad("sweep gamma list trailing comma", sw + ["--beta", "1:2:3", "--gamma", "0.5,"],
+        [("0.5,", "empty")], ["gamma"])
+    bad("sweep gamma list with -1", sw + ["--beta", "1:2:3", "--gamma", "0.5,-1"], ["-1"],
+        ["gamma"])
+    bad("sweep gamma list with nan", sw + ["--beta", "1:2:3", "--gamma", "nan,0.5"], ["nan"],
+        ["gamma"])
+    bad("sweep threads=-1", sw + ["--beta", "1:2:3", "--gamma", "0.5", "--threads", "-1"], ["-1"],
+        ["threads"])
+    bad("sweep threads=x", sw + ["--beta", "1:2:3", "--gamma", "0.5", "--threads", "x"], ["x"],
+        ["threads"])
+
+    # user waveform files
+    missing = os.path.join(TMP, "no-such-file.txt")
+    for kind in ("fourier", "samples"):
+        w = "%s:%s" % (kind, missing)
+        bad("%s missing file" % kind, ["mu", "--wave", w, "--beta", "1", "--gamma", "0.5"],
+            [(missing, w)])
+    cases = [
+        ("fourier", "two-fields.txt", "1 0\n", ["2"]),
+        ("fourier", "non-integer-k.txt", "1.5 0 1\n", ["1.5"]),
+        ("fourier", "duplicate-k.txt", "1 0 1\n1 0 0.5\n", ["1"]),
+        ("fourier", "nan-coefficient.txt", "1 0 nan\n", ["nan"]),
+        ("fourier", "inf-coefficient.txt", "1 inf 0\n", ["inf"]),
+        ("fourier", "negative-k.txt", "-1 0 1\n", ["-1"]),
+        ("fourier", "zero-amplitude.txt", "1 0 0\n2 0 0\n", []),
+        ("fourier", "only-k0.txt", "0 3 0\n", []),
+        ("fourier", "empty.txt", "# nothing\n", []),
+        ("samples", "one-sample.txt", "0.5\n", []),
+        ("samples", "constant.txt", "1 1 1 1\n", []),
+        ("samples", "non-number.txt", "0 1 abc -1\n", ["abc"]),
+        ("samples", "nan-sample.txt", "0 1 nan -1\n", ["nan"]),
+        ("samples", "empty.txt", "\n", []),
+    ]
+    for kind, fname, text, vals in cases:
+        path = write(kind + "-" + fname, text)
+        bad("%s file %s" % (kind, fname), ["mu", "--wave", "%s:%s" % (kind, path), "--beta", "1",
+                                            "--gamma", "0.5"],
+            vals, [os.path.basename(path)])
+
+    # physical
+    for name, change, vals, words in [
+        ("negative radius", ("--radius", "-0.001"), ["-0.001"], ["radius"]),
+        ("zero radius", ("--radius", "0"), ["0"], ["radius"]),
+        ("nu1 = 0.5", ("--nu1", "0.5"), ["0.5"], ["nu1"]),
+        ("nu2 = -1", ("--nu2", "-1"), ["-1"], ["nu2"]),
+        ("E1 = 0", ("--E1", "0"), ["0"], ["E1"]),
+        ("E2 = nan", ("--E2", "nan"), ["nan"], ["E2"]),
+        ("v0 = -1", ("--v0", "-1"), ["-1"], ["v0"]),
+        ("f = inf", ("--f", "inf"), ["inf"], ["f"]),
+        ("A = 0", ("--A", "0"), ["0"], ["A"]),
+        ("mu0 = 0", ("--mu0", "0"), ["0"], ["mu0"]),
+        ("u-mean = -A (no contact)", ("--u-mean", "-0.000001"), [("-1", "-0.000001")], ["gamma"]),
+        ("G1 = -5", ("--G1", "-5"), ["-5"], ["G1"]),
+    ]:
+        bad("physical " + name, physical_args(**{change[0]: change[1]}), vals, words)
+    bad("physical missing --mu0", physical_args(**{"--mu0": None}), ["--mu0"], ["missing"])
+    bad("physical missing --radius", physical_args(**{"--radius": None}), ["--radius"],
+        ["missing"])
+    bad("physical unknown flag --gamma", physical_args() + ["--gamma", "0.5"], ["--gamma"])
+
+
+STEEL = [("--wave", "sine"), ("--E1", "210e9"), ("--nu1", "0.3"), ("--E2", "210e9"),
+         ("--nu2", "0.3"), ("--radius", "0.001"), ("--v0", "0.0001"), ("--f", "100"),
+         ("--A", "0.000001"), ("--u-mean", "0.0000005"), ("--mu0", "0.5")]
+
+
+def physical_args(base=STEEL, **change):
+    args = ["physical"]
+    seen = set()
+    for k, v in base:
+        seen.add(k)
+        if k in change:
+            v = change[k]
+            if v is None:
+                continue
+        args += [k, v]
+    for k, v in change.items():
+        if k not in seen and v is not None:
+            args += [k, v]
+    return args
+
+
+# --------------------------------------------------------------------------------------------
+# 2. output formats
+# --------------------------------------------------------------------------------------------
+
+def format_tests():
+    base = ["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5"]
+    for d in (1, 2, 5, 17, 50, 200):
+        def fn(d=d):
+            s = one_line(base + ["--digits", str(d)])
+            if sig_digits(s) != d:
+                raise Fail("%s printed %r: %d significant digits, expected %d"
+                           % (cmd(base + ["--digits", str(d)]), s, sig_digits(s), d))
+        test("format mu --digits %d prints %d significant digits (sine)" % (d, d), fn)
+
+    # the same with an exactly known value: stl, beta 1, any gamma in (-1, 1) -> 1/3
+    for d in (1, 5, 50, 200, 10000):
+        def fn(d=d):
+            a = ["mu", "--wave", "sawtooth-left", "--beta", "1", "--gamma", "0.5", "--digits", str(d)]
+            expect_digits(one_line(a), Fraction(1, 3), d, cmd(a))
+        test("format mu --digits %d = 1/3 correctly rounded (stl beta 1)" % d, fn)
+    for d in (1, 5, 50, 200):
+        def fn(d=d):
+            a = ["mu", "--wave", "triangle", "--beta", "4", "--gamma", "0.5", "--digits", str(d)]
+            expect_exact_one(one_line(a), d, cmd(a))
+        test("format mu = 1 printed with %d digits (tri beta 4)" % d, fn)
+
+    def default_digits():
+        s = one_line(base)
+        if sig_digits(s) != 50:
+            raise Fail("%s printed %r, %d digits; the default is 50" % (cmd(base), s, sig_digits(s)))
+    test("format mu default prints 50 digits", default_digits)
+
+    def double():
+        a = base + ["--type", "double"]
+        s = one_line(a)
+        if sig_digits(s) != 17:
+            raise Fail("%s printed %r: %d significant digits, expected 17" % (cmd(a), s, sig_digits(s)))
+        x = float(s)
+        if Decimal("%.16e" % x) != Decimal(s):
+            raise Fail("%s printed %r, which does not round-trip through a double (%r)"
+                       % (cmd(a), s, "%.16e" % x))
+    test("format --type double: 17 significant digits, round-trips", double)
+
+    def double_exact():
+        # tri, beta 1, gamma -0.5: 2/5; the double nearest 0.4 is 0.40000000000000002220...
+        a = ["mu", "--wave", "triangle", "--beta", "1", "--gamma", "-0.5", "--type", "double"]
+        s = one_line(a)
+        if sig_digits(s) != 17 or abs(Fraction(float(s)) - Fraction(2, 5)) > 2 * Fraction(math.ulp(0.4)):
+            raise Fail("%s printed %r, expected 0.40000000000000002 (17 digits, within 2 ulp of 2/5)"
+                       % (cmd(a), s))
+    test("format --type double value 2/5 (tri beta 1 gamma -0.5)", double_exact)
+
+    def long_double():
+        a = base + ["--type", "long-double"]
+        s = one_line(a)
+        if sig_digits(s) != 21:
+            raise Fail("%s printed %r: %d significant digits, expected 21" % (cmd(a), s, sig_digits(s)))
+    test("format --type long-double: 21 significant digits", long_double)
+
+    for t, d in (("cpp_bin_float_50", 50), ("cpp_bin_float_100", 100), ("mpfr", 50)):
+        def fn(t=t, d=d):
+            a = ["mu", "--wave", "sawtooth-left", "--beta", "1", "--gamma", "0.5", "--type", t]
+            expect_digits(one_line(a), Fraction(1, 3), d, cmd(a))
+        test("format --type %s: %d digits, 1/3 correctly rounded" % (t, d), fn)
+
+    def mpfr_digits():
+        a = ["mu", "--wave", "sawtooth-left", "--beta", "1", "--gamma", "0.5", "--type", "mpfr",
+             "--digits", "30"]
+        expect_digits(one_line(a), Fraction(1, 3), 30, cmd(a))
+    test("format --type mpfr --digits 30 allowed", mpfr_digits)
+
+    def neg_gamma():
+        a1 = ["mu", "--wave", "sine", "--beta", "1", "--gamma", "-0.3"]
+        a2 = ["mu", "--wave", "sine", "--beta", "1", "--gamma=-0.3"]
+        a3 = ["mu", "--wave=sine", "--beta=1", "--gamma=-0.3"]
+        s1, s2, s3 = one_line(a1), one_line(a2), one_line(a3)
+        if not (s1 == s2 == s3):
+            raise Fail("different outputs: %r, %r, %r" % (s1, s2, s3))
+        if not (0 < F(s1) < 1):
+            raise Fail("%s printed %r, expected a value in (0, 1)" % (cmd(a1), s1))
+    test("format negative gamma: --gamma -0.3 and --gamma=-0.3 agree", neg_gamma)
+
+    def signs_and_forms():
+        outs = set()
+        for b, g in (("1", "0.5"), ("+1", "+0.5"), ("1.", ".5"), ("1E0", "5e-1"), ("1.000", "0.50")):
+            outs.add(one_line(["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--digits", "30"]))
+        if len(outs) != 1:
+            raise Fail("equal inputs written differently gave different outputs: %s" % sorted(outs))
+    test("format equivalent decimal spellings give identical output", signs_and_forms)
+
+    def aliases():
+        for full, short in (("sine", "harmonic"), ("triangle", "tri"), ("sawtooth-right", "str"),
+                            ("sawtooth-left", "stl"), ("square", "sqr")):
+            x = one_line(["mu", "--wave", full, "--beta", "0.7", "--gamma", "0.2"])
+            y = one_line(["mu", "--wave", short, "--beta", "0.7", "--gamma", "0.2"])
+            if x != y:
+                raise Fail("--wave %s gave %r but --wave %s gave %r" % (full, x, short, y))
+    test("format wave aliases (harmonic, tri, str, stl, sqr) agree with full names", aliases)
+
+    def psi_line():
+        s = one_line(["psi", "--wave", "sine", "--beta", "1"])
+        if sig_digits(s) != 50 or not (0 < F(s) < 1):
+            raise Fail("psi printed %r, expected one 50-digit value in (0, 1)" % s)
+    test("format psi prints one line", psi_line)
+
+    def failure_hygiene():
+        # beta = 1e-320 is a valid (subnormal in double) input: either a value in (0, beta/gamma]
+        # or a failure (exit 1 or 2) with one line naming the value and nothing on stdout
+        for prec in (["--type", "double"], ["--type", "long-double"], ["--digits", "20"]):
+            a = ["mu", "--wave", "triangle", "--beta", "1e-320", "--gamma", "0.5"] + prec
+            rc, out, err = run(a)
+            if rc == 0:
+                if not (err == "" and out.count("\n") == 1 and 0 < F(out.strip()) <= 2 * F("1e-320")):
+                    raise Fail("%s: exit 0 with stdout %r, stderr %r" % (cmd(a), out, err))
+            elif rc in (1, 2):
+                if out or err.count("\n") != 1 or not mentions(err, "1e-320"):
+                    raise Fail("%s: exit %d, stdout %r, stderr %r: expected one line naming 1e-320"
+                               % (cmd(a), rc, out, err))
+            else:
+                raise Fail("%s: exit %d, stderr %r" % (cmd(a), rc, err))
+    test("failure message names the value: beta 1e-320 (double, long-double, 20 digits)",
+         failure_hygiene)
+
+    sweep_tests()
+
+    def help_main():
+        for a in (["--help"], ["-h"], ["help"]):
+            rc, out, err = run(a)
+            if rc != 0 or "usage" not in out.lower() or err:
+                raise Fail("%s: exit %d, stdout %r, stderr %r" % (cmd(a), rc, out[:80], err))
+            for word in ("mu", "psi", "sweep", "physical", "verify"):
+                if not mentions(out, word):
+                    raise Fail("%s does not list the command %r" % (cmd(a), word))
+    test("help: vibrofric --help / -h / help exit 0 with usage on stdout", help_main)
+
+    def help_physical():
+        rc, out, err = run(["physical", "--help"])
+        if rc != 0 or not out.startswith("usage: vibrofric physical") or err:
+            raise Fail("vibrofric physical --help: exit %d, stdout %r, stderr %r" % (rc, out[:80], err))
+        for flag in ("--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--radius", "--v0", "--f",
+                     "--A", "--u-mean", "--mu0"):
+            if flag not in out:
+                raise Fail("physical --help does not mention %s" % flag)
+    test("help: vibrofric physical --help exits 0 with usage on stdout", help_physical)
+
+    def help_mu():
+        rc, out, err = run(["mu", "--help"])
+        if rc != 0 or "usage" not in out.lower() or err:
+            raise Fail("vibrofric mu --help: exit %d, stdout %r, stderr %r" % (rc, out[:80], err))
+    test("help: vibrofric mu --help exits 0 with usage on stdout", help_mu)
+
+    def verify():
+        out = ok_run(["verify"])
+        rows = {}
+        for line in out.splitlines():
+            m = re.match(r"(Eq\. \d+)\s+(\d+)\s+(holds approximately|holds|fails)\s", line)
+            if m:
+                rows.setdefault(m.group(1), []).append((int(m.group(2)), m.group(3)))
+        missing = [e for e in ("6", "13", "17", "18", "19", "21", "22") if "Eq. " + e not in rows]
+        if missing:
+            raise Fail("vibrofric verify has no row for Eq. %s; output:\n%s" % (", ".join(missing), out))
+        empty = [k for k, v in rows.items() if any(n == 0 for n, _ in v)]
+        if empty:
+            raise Fail("vibrofric verify checked 0 cases for %s" % empty)
+    test("verify exits 0 with a row for Eqs. 6, 13, 17, 18, 19, 21, 22", verify)
+
+
+def sweep_tests():
+    def header_and_order():
+        # tri: mu = 2b/(4+b) for -1 < g <= 1 (b < 4), 1 - Psi_tri(b)/g = 1 - (4-b)/((4+b) g) for g >= 1
+        a = ["sweep", "--wave", "triangle", "--beta", "0.5:2:4", "--gamma", "0.5,-0.5,2"]
+        lines = ok_run(a).splitlines()
+        if lines[0] != "wave,beta,gamma,mu_over_mu0":
+            raise Fail("header %r" % lines[0])
+        rows = [l.split(",") for l in lines[1:]]
+        if len(rows) != 12 or any(len(r) != 4 for r in rows):
+            raise Fail("%s: expected 12 rows of 4 fields, got %r" % (cmd(a), lines[1:]))
+        i = 0
+        for g in ("0.5", "-0.5", "2"):
+            for b in (Fraction(1, 2), Fraction(1), Fraction(3, 2), Fraction(2)):
+                w, bs, gs, ms = rows[i]
+                i += 1
+                if w not in ("triangle", "tri") or F(bs) != b or F(gs) != F(g):
+                    raise Fail("row %d is %r, expected wave triangle, beta %s, gamma %s"
+                               % (i, rows[i - 1], b, g))
+                G = F(g)
+                exact = 2 * b / (4 + b) if G <= 1 else 1 - (4 - b) / ((4 + b) * G)
+                expect_digits(ms, exact, 50, "%s row %d" % (cmd(a), i))
+    test("sweep header, gamma outer / beta inner, both ends, values (tri)", header_and_order)
+
+    def grid_rounding():
+        # betas 1e-3 + i (1 - 1e-3)/4 are not all short decimals: printed with <= 17 digits,
+        # correctly rounded, ascending, ends exact; mu (stl) = b/(2+b) for the printed b
+        a = ["sweep", "--wave", "sawtooth-left", "--beta", "1e-3:1:4", "--gamma", "0.3",
+             "--digits", "30"]
+        lines = ok_run(a).splitlines()
+        rows = [l.split(",") for l in lines[1:]]
+        if len(rows) != 4:
+            raise Fail("%s: expected 4 rows, got %d" % (cmd(a), len(rows)))
+        lo, hi = Fraction(1, 1000), Fraction(1)
+        prev = None
+        for i, (w, bs, gs, ms) in enumerate(rows):
+            exact_b = lo + i * (hi - lo) / 3
+            if sig_digits(bs) > 17 or abs(F(bs) - exact_b) > half_ulp_sig(exact_b, 17):
+                raise Fail("row %d beta %r, expected %s (17 digits)" % (i + 1, bs, dec(exact_b, 17)))
+            if (i in (0, 3)) and F(bs) != exact_b:
+                raise Fail("end point row %d beta %r, expected exactly %s" % (i + 1, bs, exact_b))
+            if prev is not None and not F(bs) > prev:
+                raise Fail("betas not ascending at row %d" % (i + 1))
+            prev = F(bs)
+            expect_digits(ms, F(bs) / (2 + F(bs)), 30, "%s row %d" % (cmd(a), i + 1))
+    test("sweep beta grid printed exactly as evaluated, ascending, ends included", grid_rounding)
+
+    def single_point():
+        a = ["sweep", "--wave", "square", "--beta", "1:1:1", "--gamma", "-0.5,0.5"]
+        lines = ok_run(a).splitlines()
+        if len(lines) != 3:
+            raise Fail("%s: expected header + 2 rows, got %r" % (cmd(a), lines))
+        # square, Eq. 22: g = -0.5: b = 1 >= 2(1+g) = 1 -> 1 - 0.5/1 = 1/2; g = 0.5: b < 3 -> 1/6
+        expect_digits(lines[1].split(",")[3], Fraction(1, 2), 50, cmd(a) + " row 1")
+        expect_digits(lines[2].split(",")[3], Fraction(1, 6), 50, cmd(a) + " row 2")
+    test("sweep N = 1 (FROM = TO), two gammas (square, Eq. 22)", single_point)
+
+    def deterministic():
+        a = ["sweep", "--wave", "sine", "--beta", "0.001:7:30", "--gamma", "-0.9,-0.3,0,0.5,1.5",
+             "--digits", "40"]
+        outs = [ok_run(a), ok_run(a), ok_run(a + ["--threads", "1"]), ok_run(a + ["--threads", "2"]),
+                ok_run(a + ["--threads", "0"])]
+        if len(set(outs)) != 1:
+            raise Fail("outputs differ between runs / thread counts")
+        lines = outs[0].splitlines()
+        if len(lines) != 1 + 5 * 30:
+            raise Fail("expected 151 lines, got %d" % len(lines))
+        gs = [l.split(",")[2] for l in lines[1:]]
+        if [gs[30 * k] for k in range(5)] != ["-0.9", "-0.3", "0", "0.5", "1.5"]:
+            raise Fail("gammas not in the given order: %r" % [gs[30 * k] for k in range(5)])
+        for k in range(5):
+            bs = [F(l.split(",")[1]) for l in lines[1 + 30 * k:31 + 30 * k]]
+            if bs[0] != Fraction(1, 1000) or bs[-1] != 7 or any(x >= y for x, y in zip(bs, bs[1:])):
+                raise Fail("betas for gamma block %d not ascending from 0.001 to 7" % k)
+    test("sweep deterministic: repeated runs and --threads 0/1/2 byte-identical", deterministic)
+
+    def double_sweep():
+        a = ["sweep", "--wave", "triangle", "--beta", "1:3:3", "--gamma", "-0.5", "--type", "double"]
+        lines = ok_run(a).splitlines()
+        for l, b in zip(lines[1:], (1, 2, 3)):
+            m = l.split(",")[3]
+            exact = Fraction(2 * b, 4 + b)
+            if sig_digits(m) != 17 or abs(Fraction(float(m)) - exact) > 2 * Fraction(math.ulp(float(exact))):
+                raise Fail("%s: row %r, expected %s within 2 ulp" % (cmd(a), l, dec(exact, 17)))
+    test("sweep --type double values (tri)", double_sweep)
+
+
+# --------------------------------------------------------------------------------------------
+# 3. values against closed forms
+# --------------------------------------------------------------------------------------------
+
+def mu_closed(wave, beta, gamma, exact, digits=50, name=None):
+    def fn():
+        a = ["mu", "--wave", wave, "--beta", beta, "--gamma", gamma, "--digits", str(digits)]
+        s = one_line(a)
+        if exact == 1:
+            expect_exact_one(s, digits, cmd(a))
+        else:
+            expect_digits(s, exact, digits, cmd(a))
+    test(name or "value mu %s beta=%s gamma=%s" % (wave, beta, gamma), fn)
+
+
+def psi_closed(wave, beta, exact, digits=50):
+    def fn():
+        a = ["psi", "--wave", wave, "--beta", beta, "--digits", str(digits)]
+        s = one_line(a)
+        if exact == 0:
+            if F(s) != 0:
+                raise Fail("%s printed %r, expected 0" % (cmd(a), s))
+        else:
+            expect_digits(s, exact, digits, cmd(a))
+    test("value psi %s beta=%s" % (wave, beta), fn)
+
+
+def value_tests():
+    mu_closed("tri", "1", "-0.5", Fraction(2, 5), 40,
+              "value mu tri beta=1 gamma=-0.5 --digits 40 = 2/5")
+    jumping = ("-0.999", "-0.9", "-0.5", "0", "0.3", "0.99")
+    # Eq. 19, str: beta/2 for beta < 2 (1 above)
+    for b in ("0.001", "0.3", "1", "1.9", "1.999999"):
+        for g in jumping[::2]:
+            mu_closed("str", b, g, F(b) / 2)
+    # stl: beta/(2+beta), no critical beta
+    for b in ("0.0001", "0.3", "1", "5", "100", "12345.678"):
+        for g in jumping[1::2]:
+            mu_closed("stl", b, g, F(b) / (2 + F(b)))
+    # tri: 2 beta/(4+beta) for beta < 4, every gamma in (-1, 1] (Eqs. 18, 19)
+    for b in ("0.01", "1", "3.5", "3.999"):
+        for g in ("-0.999", "-0.5", "0.5", "1"):
+            mu_closed("tri", b, g, 2 * F(b) / (4 + F(b)))
+    # non-jumping triangle: 1 - Psi_tri/g (Eqs. 13, 17)
+    for b, g in (("1", "2"), ("3", "1.5"), ("0.1", "10")):
+        mu_closed("tri", b, g, 1 - (4 - F(b)) / ((4 + F(b)) * F(g)))
+    for b, g in (("1", "2"), ("1.5", "1.25")):
+        mu_closed("str", b, g, 1 - (1 - F(b) / 2) / F(g))
+        mu_closed("stl", b, g, 1 - 2 / ((2 + F(b)) * F(g)))
+    # square, Eq. 22, both regimes
+    for b, g in (("0.4", "-0.5"), ("0.999", "-0.5"), ("1", "0.5"), ("0.001", "-0.999"),
+                 ("2.9", "0.5"), ("0.1", "0")):
+        G = F(g)
+        assert F(b) < 2 * (1 + G)
+        mu_closed("square", b, g, F(b) / (4 * (1 + G)))
+    for b, g in (("1", "-0.5"), ("3", "-0.5"), ("10", "0.5"), ("3", "0.5"), ("0.01", "-0.999"),
+                 ("1000", "0.9")):
+        G = F(g)
+        assert F(b) >= 2 * (1 + G)
+        mu_closed("square", b, g, 1 - (1 + G) / F(b))
+    # square, non-jumping: Psi_sqr = 1 - b/8 (b < 4), 2/b (b >= 4); derived from the envelope
+    for b, g in (("1", "2"), ("6", "1.5")):
+        psi = 1 - F(b) / 8 if F(b) < 4 else 2 / F(b)
+        mu_closed("square", b, g, 1 - psi / F(g))
+    # Psi, Eq. 17 (and the square's)
+    for b in ("0.001", "0.5", "1", "1.99"):
+        psi_closed("str", b, 1 - F(b) / 2)
+    for b in ("0.001", "1", "7", "1000"):
+        psi_closed("stl", b, 2 / (2 + F(b)))
+    for b in ("0.001", "1", "2", "3.99"):
+        psi_closed("tri", b, (4 - F(b)) / (4 + F(b)))
+    for b in ("1", "4", "8"):
+        psi_closed("square", b, 1 - F(b) / 8 if F(b) < 4 else 2 / F(b))
+    for w, b in (("str", "2"), ("str", "3"), ("tri", "4"), ("tri", "9"), ("sine", "7"),
+                 ("power:2", "8")):
+        psi_closed(w, b, 0)
+    # mu = 1 exactly at and above beta_c (Eq. 6)
+    for w, b, g in (("tri", "4", "0.5"), ("tri", "4", "-0.9"), ("tri", "4", "3"), ("sine", "7", "0.5"),
+                    ("sine", "6.2831854", "0.5"), ("sine", "6.2831854", "2"), ("str", "2", "0.5"),
+                    ("str", "2.5", "-0.9"), ("power:2", "8", "0.5"), ("power:3", "12", "1"),
+                    ("power:1.5", "6", "5"), ("power:1", "4", "0.5"),
+                    # sine with gamma < 0: contact starts at slope 2 pi sqrt(1 - g^2) (= 2 pi 0.6)
+                    ("sine", "3.77", "-0.8")):
+        mu_closed(w, b, g, Fraction(1), 50, "value mu = 1 exactly: %s beta=%s gamma=%s" % (w, b, g))
+    # power:1 is the triangle (shifted by 1/4)
+    for b, g in (("1", "0.5"), ("3", "-0.7"), ("2", "2")):
+        G = F(g)
+        exact = 2 * F(b) / (4 + F(b)) if G <= 1 else 1 - (4 - F(b)) / ((4 + F(b)) * G)
+        mu_closed("power:1", b, g, exact)
+    # small beta, closed forms (Eqs. 19, 22), every precision: mu ~ beta must not lose its digits
+    tiny = {"tri": lambda b, g: 2 * b / (4 + b), "str": lambda b, g: b / 2,
+            "stl": lambda b, g: b / (2 + b), "square": lambda b, g: b / (4 * (1 + g))}
+    for w, fn in tiny.items():
+        for b in ("1e-20", "1e-35", "1e-60"):
+            for g in ("0.05", "0.5"):
+                for prec in (["--digits", "20"], ["--digits", "40"], ["--type", "double"],
+                             ["--type", "long-double"]):
+                    typed_closed(w, b, g, prec, fn(F(b), F(g)))
+    # 0 < mu <= beta/gamma for any wave in the jumping range (no closed form needed):
+    # s(phi) <= n_min + beta = beta (n_min = 0; take tau back to the phase of the minimum) and
+    # int n >= int (g + w) = g, so mu/mu0 <= beta/g
+    for w in ("sine", "power:2", "power:3"):
+        for b in ("1e-20", "1e-35", "1e-60"):
+            for g in ("0.05", "0.5"):
+                for prec in (["--digits", "20"], ["--digits", "40"], ["--type", "double"],
+                             ["--type", "long-double"]):
+                    a = ["mu", "--wave", w, "--beta", b, "--gamma", g] + prec
+
+                    def fn(a=a, b=b, g=g):
+                        s = one_line(a)
+                        if not 0 < F(s) <= F(b) / F(g):
+                            raise Fail("%s printed %s: expected 0 < mu/mu0 <= beta/gamma = %s"
+                                       % (cmd(a), s, dec(F(b) / F(g), 5)))
+                    test("range 0 < mu <= beta/gamma: %s" % " ".join(a[1:]), fn)
+
+
+def typed_closed(wave, beta, gamma, prec, exact):
+    """mu against a closed form: --digits D correctly rounded; --type double / long-double
+    within 2 ulp of the type."""
+    a = ["mu", "--wave", wave, "--beta", beta, "--gamma", gamma] + prec
+
+    def fn():
+        s = one_line(a)
+        if prec[0] == "--digits":
+            expect_digits(s, exact, int(prec[1]), cmd(a))
+            return
+        digits, mant = {"double": (17, 53), "long-double": (21, 64)}[prec[1]]
+        if sig_digits(s) != digits:
+            raise Fail("%s printed %r, not %d digits" % (cmd(a), s, digits))
+        ulp = Fraction(2) ** (math.floor(math.log2(exact)) - mant + 1)
+        if abs(F(s) - exact) > 2 * ulp + half_ulp(s):
+            raise Fail("%s printed %s, expected %s (within 2 ulp)" % (cmd(a), s, dec(exact, digits)))
+    test("value small beta %s" % " ".join(a[1:]), fn)
+
+
+def physical_tests():
+    def groups(E1, nu1, E2, nu2, G1, G2, radius, v0, f, A, umean, mu0):
+        E1, nu1, E2, nu2, radius, v0, f, A, umean, mu0 = map(
+            F, (E1, nu1, E2, nu2, radius, v0, f, A, umean, mu0))
+        G1 = F(G1) if G1 else E1 / (2 * (1 + nu1))
+        G2 = F(G2) if G2 else E2 / (2 * (1 + nu2))
+        E_star = 1 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)       # Eq. 1
+        G_star = 1 / ((2 - nu1) / (4 * G1) + (2 - nu2) / (4 * G2))
+        k_z, k_x = 2 * E_star * radius, 2 * G_star * radius
+        beta = k_x * v0 / (mu0 * k_z * A * f)                           # Eq. 5
+        gamma = umean / A                                               # Eq. 14
+        return dict(E_star_Pa=E_star, G_star_Pa=G_star, k_z_N_per_m=k_z, k_x_N_per_m=k_x,
+                    beta=beta, gamma=gamma), mu0
+
+    def parse(out):
+        d = {}
+        for line in out.splitlines():
+            m = re.fullmatch(r"(\w+) = (\S+)", line)
+            if not m:
+                raise Fail("physical: unexpected line %r" % line)
+            d[m.group(1)] = m.group(2)
+        return d
+
+    def check_groups(a, got, exact, digits):
+        keys = ["E_star_Pa", "G_star_Pa", "k_z_N_per_m", "k_x_N_per_m", "beta", "gamma",
+                "mu_over_mu0", "mu"]
+        if list(got) != keys:
+            raise Fail("%s printed the fields %s, expected %s" % (cmd(a), list(got), keys))
+        for k, v in exact.items():
+            expect_digits(got[k], v, digits, "%s: %s" % (cmd(a), k))
+
+    # 1. steel on steel, G from E and nu; sine; gamma = 0.5 (jumping), beta ~ 1.65 < 2 pi
+    steel = dict(E1="210e9", nu1="0.3", E2="210e9", nu2="0.3", G1=None, G2=None, radius="0.001",
+                 v0="0.0001", f="100", A="0.000001", umean="0.0000005", mu0="0.5")
+
+    def steel_fn():
+        a = physical_args()
+        got = parse(ok_run(a))
+        exact, mu0 = groups(**steel)
+        check_groups(a, got, exact, 50)
+        if not (0 < F(got["mu_over_mu0"]) < 1):
+            raise Fail("mu_over_mu0 %s, expected a value in (0, 1) below beta_c" % got["mu_over_mu0"])
+        # mu_over_mu0 against mu at the same beta and gamma (beta given to 70 digits)
+        b = dec(exact["beta"], 70)
+        m = one_line(["mu", "--wave", "sine", "--beta", b, "--gamma", "0.5"])
+        if abs(F(m) - F(got["mu_over_mu0"])) > 2 * half_ulp(m):
+            raise Fail("mu_over_mu0 = %s but mu --beta %s --gamma 0.5 = %s"
+                       % (got["mu_over_mu0"], b, m))
+        expect_digits(got["mu"], F(got["mu_over_mu0"]) * mu0, 50, "mu = mu0 * mu_over_mu0")
+    test("physical steel on steel (sine): E*, G*, k_z, k_x, beta, gamma (Eqs. 1, 5, 14), mu", steel_fn)
+
+    # 2. steel on aluminium with explicit shear moduli; triangle, gamma 0.25: mu = 2b/(4+b)
+    alu = dict(E1="210e9", nu1="0.3", E2="70e9", nu2="0.33", G1="80e9", G2="26e9", radius="0.0025",
+               v0="0.00005", f="200", A="0.000001", umean="0.00000025", mu0="0.4")
+    alu_args = [("--wave", "triangle"), ("--E1", "210e9"), ("--nu1", "0.3"), ("--E2", "70e9"),
+                ("--nu2", "0.33"), ("--G1", "80e9"), ("--G2", "26e9"), ("--radius", "0.0025"),
+                ("--v0", "0.00005"), ("--f", "200"), ("--A", "0.000001"),
+                ("--u-mean", "0.00000025"), ("--mu0", "0.4")]
+
+    def alu_fn():
+        a = physical_args(alu_args, **{"--digits": "40"})
+        got = parse(ok_run(a))
+        exact, mu0 = groups(**alu)
+        b = exact["beta"]
+        assert b < 4
+        exact["mu_over_mu0"] = 2 * b / (4 + b)
+        exact["mu"] = mu0 * 2 * b / (4 + b)
+        check_groups(a, got, exact, 40)
+    test("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
+
+    # 3. non-jumping (gamma 2) and above beta_c: mu = mu0 exactly
+    def fast_fn():
+        a = physical_args(**{"--v0": "0.01", "--u-mean": "0.000002"})
+        got = parse(ok_run(a))
+        ex = dict(steel, v0="0.01", umean="0.000002")
+        exact, mu0 = groups(**ex)
+        assert exact["beta"] > 7
+        exact["mu_over_mu0"] = Fraction(1)
+        exact["mu"] = mu0
+        check_groups(a, got, exact, 50)
+    test("physical steel on steel above beta_c: mu = mu0 exactly", fast_fn)
+
+    # 4. --type double
+    def double_fn():
+        a = physical_args(**{"--type": "double"})
+        got = parse(ok_run(a))
+        exact, _ = groups(**steel)
+        for k in ("E_star_Pa", "G_star_Pa", "k_z_N_per_m", "k_x_N_per_m", "beta", "gamma"):
+            s = got[k]
+            if sig_digits(s) != 17 or abs(Fraction(float(s)) - exact[k]) > 4 * Fraction(math.ulp(float(exact[k]))):
+                raise Fail("%s: %s = %s, expected %s (17 digits, within 4 ulp)"
+                           % (cmd(a), k, s, dec(exact[k], 17)))
+    test("physical --type double: 17 digits, groups within 4 ulp", double_fn)
+
+
+# --------------------------------------------------------------------------------------------
+# 4. --type double accuracy: within 2 ulp of the 40-digit value
+# --------------------------------------------------------------------------------------------
+
+def double_accuracy_tests():
+    for w in ("sine", "triangle", "sawtooth-right", "sawtooth-left", "square", "power:2"):
+        for b in ("1e-6", "1e-3", "0.1", "1", "3"):
+            for g in ("-0.999", "-0.9", "-0.5", "0", "0.5", "1", "10"):
+                def fn(w=w, b=b, g=g):
+                    a = ["mu", "--wave", w, "--beta", b, "--gamma", g]
+                    d = one_line(a + ["--type", "double"])
+                    h = one_line(a + ["--digits", "40"])
+                    if sig_digits(d) != 17:
+                        raise Fail("%s --type double printed %r, not 17 digits" % (cmd(a), d))
+                    ref = F(h)
+                    u = Fraction(math.ulp(float(ref)))
+                    err = abs(Fraction(float(d)) - ref) / u
+                    if err > 2:
+                        raise Fail("%s: --type double %s, --digits 40 %s: %.2f ulp apart (> 2)"
+                                   % (cmd(a), d, h, float(err)))
+                test("double-accuracy %s beta=%s gamma=%s" % (w, b, g), fn)
+
+
+def main():
+    t0 = time.time()
+    bad_input_tests()
+    format_tests()
+    value_tests()
+    physical_tests()
+    double_accuracy_tests()
+    print("# %.1f s" % (time.time() - t0))
+    print("%d passed, %d failed" % (passed, failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    finally:
+        import shutil
+        shutil.rmtree(TMP, ignore_errors=True)

@@ -1,0 +1,5 @@
+#include "properties.hpp"
+
+namespace vt {
+VIBROFRIC_PROPERTIES(double, vt::Fixed<double>);
+}  // namespace vt
