@@ -2,6 +2,7 @@
 // (Eqs. 1, 5, 14) and the claims check. Bad input: one line on stderr, exit 2; solver failure: 1.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -216,8 +217,12 @@ int run_physical(const Args& a) {
   if (a.flags.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + a.flags.at("G2") + ": expected a value > 0");
   const auto g = physical_groups(in);
   const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
-  const std::string mu_ratio = evaluate(wave, Quantity::mu, {{beta, gamma}}, prec).front();
-  const mpfr mu = mpfr(mu_ratio) * in.mu0;
+  // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
+  Precision fine = prec;
+  if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
+  const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine).front();
+  const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
+  const mpfr mu = mpfr(ratio_fine) * in.mu0;
   auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
   line("E_star_Pa", g.E_star);
   line("G_star_Pa", g.G_star);

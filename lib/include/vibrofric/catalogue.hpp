@@ -3,6 +3,7 @@
 // each precision reads them exactly ("0.1" at 100 digits is 0.1 to 100 digits).
 #pragma once
 #include <array>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,10 +44,11 @@ void check_decimal(const std::string& text, const std::string& what);
 template <class Real>
 Real parse_real(const std::string& text, const std::string& what) {
   check_decimal(text, what);
+  // strtod/strtold, not stod: a subnormal result is a value, not an error.
   if constexpr (std::is_same_v<Real, double>)
-    return std::stod(text);
+    return std::strtod(text.c_str(), nullptr);
   else if constexpr (std::is_same_v<Real, long double>)
-    return std::stold(text);
+    return std::strtold(text.c_str(), nullptr);
   else
     return Real(text);
 }

@@ -4,6 +4,7 @@
 #pragma once
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -52,27 +53,48 @@ int round_trip_digits10() {
     return std::numeric_limits<Real>::max_digits10;
 }
 
-// x with `digits` significant digits in positional notation ("0.0123…"), no trailing-zero
-// trimming so the precision stays visible. Values outside [1e-5, 1e15) use scientific notation.
+// x correctly rounded to `digits` significant digits, in positional notation ("0.0123…") with
+// trailing zeros kept so that the precision stays visible; zero is "0"; values outside
+// [1e-5, 1e15) in scientific notation. The digits come from MPFR's correctly rounded
+// conversion of an exact mpfr copy of x, for every number type.
 template <class Real>
 std::string format_significant(const Real& x, int digits) {
-  std::ostringstream os;
-  os.precision(digits - 1);
-  os << std::scientific << x;
-  const std::string sci = os.str();
-  const auto e = sci.find_first_of("eE");
-  if (e == std::string::npos) return sci;  // inf/nan never reach here; kept for safety
-  const int exponent = std::stoi(sci.substr(e + 1));
-  if (x == 0 || exponent < -5 || exponent >= 15) return sci;
-  std::string mantissa = sci.substr(0, e);
-  std::string sign;
-  if (mantissa[0] == '-') {
-    sign = "-";
-    mantissa.erase(0, 1);
+  if (x == 0) return "0";
+  mpfr_t v;
+  if constexpr (std::is_same_v<Real, double>) {
+    mpfr_init2(v, 53);
+    mpfr_set_d(v, x, MPFR_RNDN);
+  } else if constexpr (std::is_same_v<Real, long double>) {
+    mpfr_init2(v, std::numeric_limits<long double>::digits);
+    mpfr_set_ld(v, x, MPFR_RNDN);
+  } else if constexpr (is_runtime_precision_v<Real>) {
+    mpfr_init2(v, mpfr_get_prec(x.backend().data()));
+    mpfr_set(v, x.backend().data(), MPFR_RNDN);
+  } else {
+    // cpp_bin_float: converted exactly, at more bits than the type has.
+    PrecisionScope scope(static_cast<unsigned>(std::numeric_limits<Real>::digits10 + 20));
+    const mpfr copy(x);
+    mpfr_init2(v, mpfr_get_prec(copy.backend().data()));
+    mpfr_set(v, copy.backend().data(), MPFR_RNDN);
   }
-  std::string ds;
-  for (char c : mantissa)
-    if (c != '.') ds += c;
+  mpfr_exp_t e10 = 0;
+  char* raw = mpfr_get_str(nullptr, &e10, 10, static_cast<std::size_t>(digits), v, MPFR_RNDN);
+  std::string ds(raw);
+  mpfr_free_str(raw);
+  mpfr_clear(v);
+  std::string sign;
+  if (ds[0] == '-') {
+    sign = "-";
+    ds.erase(0, 1);
+  }
+  const long exponent = static_cast<long>(e10) - 1;  // value = d.ddd × 10^exponent
+  if (exponent < -5 || exponent >= 15) {
+    std::string m = ds.substr(0, 1);
+    if (ds.size() > 1) m += "." + ds.substr(1);
+    char e[16];
+    std::snprintf(e, sizeof e, "e%c%02ld", exponent < 0 ? '-' : '+', exponent < 0 ? -exponent : exponent);
+    return sign + m + e;
+  }
   std::string out;
   if (exponent < 0) {
     out = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + ds;

@@ -117,8 +117,18 @@ class Sweep {
     // First-order rounding bounds (in eps) of the areas, relative to the areas themselves: large
     // where the areas are small differences of O(1) phases and values (β → 0, γ → −min w).
     const Real eps = std::numeric_limits<Real>::epsilon();
-    r.relative_error = stick_.empty() ? Real(0) : Real(eps * (err_retained_ / retained_ + err_normal_ / normal_));
-    r.lost_relative_error = lost_ > 0 ? Real(eps * err_lost_ / lost_) : Real(0);
+    // An area that rounding drove to zero or below has no relative accuracy at all.
+    const Real unknown = std::numeric_limits<Real>::infinity();
+    if (stick_.empty())
+      r.relative_error = 0;
+    else if (!(retained_ > 0 && normal_ > 0))
+      r.relative_error = unknown;
+    else
+      r.relative_error = eps * (err_retained_ / retained_ + err_normal_ / normal_);
+    if (stick_.empty())
+      r.lost_relative_error = 0;
+    else
+      r.lost_relative_error = lost_ > 0 ? Real(eps * err_lost_ / lost_) : unknown;
     r.events = events_;
     r.root_solves = stats_.solves;
     r.root_iterations = stats_.iterations;

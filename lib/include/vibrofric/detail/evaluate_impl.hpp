@@ -38,15 +38,18 @@ std::string evaluate_point(const WaveSpec& spec, Quantity q, const Point& p, int
                            const Options& opt) {
   if constexpr (is_runtime_precision_v<Real>) {
     int work = digits + guard_digits(digits);
-    for (int attempt = 0; attempt < 4; ++attempt) {
+    for (int attempt = 0; attempt < 8; ++attempt) {
       PrecisionScope scope(static_cast<unsigned>(work));
       const auto w = make_waveform<Real>(spec);
       const auto v = compute_point(*w, q, p, opt);
       const Real target = pow(Real(10), -digits) / 2;
       if (v.relative_error <= target) return format_significant(v.value, digits);
+      using std::isfinite;
       using std::log10;
-      const double lost = static_cast<double>(log10(v.relative_error / target));
-      work += static_cast<int>(std::ceil(lost)) + guard_digits(digits);
+      if (isfinite(v.relative_error))
+        work += static_cast<int>(std::ceil(static_cast<double>(log10(v.relative_error / target)))) + guard_digits(digits);
+      else
+        work *= 2;  // the areas were lost entirely: no estimate of how much is missing
       if (work > 4 * max_digits) break;
     }
     throw SolverError("wave " + spec.name + ", beta = " + p.beta +

@@ -5,6 +5,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -18,10 +19,13 @@ struct RootStats {
   std::uintmax_t max_iterations = 200;
 };
 
+// x for messages: enough digits to tell it from a nearby value (the type's round-trip digits,
+// at most 40), shortest form.
 template <class Real>
 std::string short_str(const Real& x) {
   std::ostringstream os;
-  os.precision(17);
+  const int d = std::numeric_limits<Real>::max_digits10;
+  os.precision(d > 0 && d < 40 ? d : 40);
   os << x;
   return os.str();
 }
