@@ -1,5 +1,5 @@
-# Installs vibrofric into a scratch prefix, then configures, builds and runs a project that only
-# knows find_package(vibrofric).
+# Installs the already built vibrofric into a scratch prefix, then configures, builds and runs a
+# project that only knows find_package(vibrofric).
 set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
@@ -8,11 +8,7 @@ function(run)
     message(FATAL_ERROR "failed (${rc}): ${ARGN}")
   endif()
 endfunction()
-run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/lib -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
-    -DVIBROFRIC_BUILD_TESTS=OFF -DVIBROFRIC_BUILD_BENCHMARKS=OFF -DVIBROFRIC_BUILD_PROOFS=OFF
-    -DCMAKE_INSTALL_PREFIX=${prefix})
-run(${CMAKE_COMMAND} --build ${WORK_DIR}/lib --target vibrofric -j2)
-run(${CMAKE_COMMAND} --install ${WORK_DIR}/lib --component Unspecified)
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer -B ${WORK_DIR}/app -G ${GENERATOR}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/app)

@@ -91,7 +91,7 @@ std::string format_significant(const Real& x, int digits) {
   if (exponent < -5 || exponent >= 15) {
     std::string m = ds.substr(0, 1);
     if (ds.size() > 1) m += "." + ds.substr(1);
-    char e[16];
+    char e[32];
     std::snprintf(e, sizeof e, "e%c%02ld", exponent < 0 ? '-' : '+', exponent < 0 ? -exponent : exponent);
     return sign + m + e;
   }

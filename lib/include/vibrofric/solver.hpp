@@ -68,6 +68,99 @@ struct Result {
   std::size_t evaluations = 0;  // waveform value/slope/antiderivative calls
 };
 
+// The clipped normal force n = max(γ + w, 0) of Eq. 2 for one γ: the waveform's pieces split
+// at the contact boundaries, with n, n' and the antiderivative at every segment end, the largest
+// rising slope β_c(γ) (Eq. 6), and where the sweep starts. Nothing here depends on β, so one
+// Contact serves every β of a sweep. Keeps a reference to the waveform.
+template <class Real>
+class Contact {
+ public:
+  struct Segment {
+    std::size_t piece;
+    Real u, v;       // sub-interval of the piece with constant contact status
+    bool contact;    // n = γ + w on it (else n = 0)
+    bool jump;       // u is a breakpoint where w jumps (n may jump there)
+    bool convex, linear;
+    Real nu, nv, dnu, dnv, Wu, Wv;  // n, n', antiderivative of w at u and v (0 off contact)
+  };
+
+  // Preconditions: γ finite with γ + max w > 0 (checked by solve()).
+  Contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) : w_(w), gamma_(gamma) {
+    detail::RootStats stats;
+    stats.max_iterations = opt.max_root_iterations;
+    const std::size_t pieces = w.piece_count();
+    using std::abs;
+    using std::max;
+    for (std::size_t i = 0; i < pieces; ++i) {
+      max_slope_ = max(max_slope_, max(abs(w.begin_slope(i)), abs(w.end_slope(i))));
+      if (i == w.argmin_break()) start_ = segs_.size();
+      const Real& a = w.piece_begin(i);
+      const Real& b = w.piece_end(i);
+      const bool jump = w.jump_at(i);
+      // β_c: an upward jump of n, else the largest slope at a contact segment's ends (w' is
+      // monotone on the piece).
+      const std::size_t prev = (i + pieces - 1) % pieces;
+      const Real left = clip(gamma + w.end_value(prev)), right = clip(gamma + w.begin_value(i));
+      if (jump && right > 0 && right > left) beta_c_ = std::numeric_limits<Real>::infinity();
+      Real c0, c1;
+      if (!w.contact_part(i, gamma, c0, c1, stats)) {
+        push(i, a, b, false, jump, false, false);
+        continue;
+      }
+      if (c0 > a) {
+        ++boundaries_;
+        push(i, a, c0, false, jump, false, false);
+      }
+      push(i, c0, c1, true, c0 > a ? false : jump, c0 > a, c1 < b);
+      beta_c_ = max(beta_c_, max(segs_.back().dnu, segs_.back().dnv));
+      if (c1 < b) {
+        ++boundaries_;
+        push(i, c1, b, false, false, false, false);
+      }
+    }
+    root_solves_ = stats.solves;
+    root_iterations_ = stats.iterations;
+  }
+
+  const Waveform<Real>& wave() const { return w_; }
+  const Real& gamma() const { return gamma_; }
+  const std::vector<Segment>& segments() const { return segs_; }
+  std::size_t start() const { return start_; }  // first segment of the sweep: at argmin w
+  const Real& beta_c() const { return beta_c_; }
+  const Real& max_slope() const { return max_slope_; }  // largest |w'| at piece ends
+  bool jumping() const { return gamma_ + w_.minimum() < 0; }
+  Real n_min() const { return clip(gamma_ + w_.minimum()); }
+  std::size_t boundaries() const { return boundaries_; }
+  std::size_t root_solves() const { return root_solves_; }
+  std::size_t root_iterations() const { return root_iterations_; }
+
+ private:
+  static Real clip(const Real& x) { return x > 0 ? x : Real(0); }
+  // A contact segment's ends: the cached piece-end values where they are piece ends, exactly 0
+  // for n at a contact boundary (its true value there).
+  void push(std::size_t i, const Real& u, const Real& v, bool contact, bool jump, bool u_boundary, bool v_boundary) {
+    Segment g{i, u, v, contact, jump, w_.convex(i), w_.linear(i), 0, 0, 0, 0, 0, 0};
+    if (contact) {
+      const bool ub = u == w_.piece_begin(i), ve = v == w_.piece_end(i);
+      g.nu = u_boundary ? Real(0) : Real(gamma_ + (ub ? w_.begin_value(i) : w_.value(i, u)));
+      g.nv = v_boundary ? Real(0) : Real(gamma_ + (ve ? w_.end_value(i) : w_.value(i, v)));
+      g.dnu = ub ? w_.begin_slope(i) : w_.slope(i, u);
+      g.dnv = ve ? w_.end_slope(i) : w_.slope(i, v);
+      if (w_.has_antiderivative()) {
+        g.Wu = w_.antiderivative(i, u);
+        g.Wv = w_.antiderivative(i, v);
+      }
+    }
+    segs_.push_back(std::move(g));
+  }
+
+  const Waveform<Real>& w_;
+  Real gamma_;
+  std::vector<Segment> segs_;
+  std::size_t start_ = 0, boundaries_ = 0, root_solves_ = 0, root_iterations_ = 0;
+  Real beta_c_ = 0, max_slope_ = 0;
+};
+
 namespace detail {
 
 // One tanh-sinh integrator per thread and precision: its tables are built at the precision that
@@ -85,8 +178,9 @@ boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
 template <class Real>
 class Sweep {
  public:
-  Sweep(const Waveform<Real>& w, const Real& beta, const Real& gamma, const Options& opt)
-      : w_(w), beta_(beta), gamma_(gamma), opt_(opt) {
+  Sweep(const Contact<Real>& contact, const Real& beta, const Options& opt)
+      : c_(contact), w_(contact.wave()), beta_(beta), gamma_(contact.gamma()), opt_(opt) {
+    const Waveform<Real>& w = w_;
     stats_.max_iterations = opt.max_root_iterations;
     method_ = opt.area;
     if (method_ == AreaMethod::automatic)
@@ -96,13 +190,13 @@ class Sweep {
   }
 
   Result<Real> run() {
-    build_segments();
-    const std::size_t m = segs_.size();
+    const auto& segs = c_.segments();
+    const std::size_t m = segs.size(), start = c_.start();
+    max_slope_ = c_.max_slope();
     // Start where n is smallest: there s = n (model.md), so the sweep needs no history.
-    const Real n_min = n_clip(gamma_ + w_.minimum());
-    s_ = n_min;
+    s_ = c_.n_min();
     sticking_ = false;
-    for (std::size_t j = 0; j < m; ++j) sweep_segment(segs_[(start_ + j) % m], start_ + j >= m);
+    for (std::size_t j = 0; j < m; ++j) sweep_segment(segs[(start + j) % m], start + j >= m);
     if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), Real(1));
 
     Result<Real> r;
@@ -110,8 +204,8 @@ class Sweep {
     r.normal_area = normal_;
     r.lost_area = lost_;
     r.mu = stick_.empty() ? Real(1) : Real(retained_ / normal_);
-    r.beta_c = w_.beta_c(gamma_);
-    r.jumping = gamma_ + w_.minimum() < 0;
+    r.beta_c = c_.beta_c();
+    r.jumping = c_.jumping();
     r.area = method_;
     r.stick_phases = stick_;
     // First-order rounding bounds (in eps) of the areas, relative to the areas themselves: large
@@ -129,61 +223,61 @@ class Sweep {
       r.lost_relative_error = 0;
     else
       r.lost_relative_error = lost_ > 0 ? Real(eps * err_lost_ / lost_) : unknown;
-    r.events = events_;
-    r.root_solves = stats_.solves;
-    r.root_iterations = stats_.iterations;
+    r.events = events_ + c_.boundaries();
+    r.root_solves = stats_.solves + c_.root_solves();
+    r.root_iterations = stats_.iterations + c_.root_iterations();
     r.quadratures = quadratures_;
     r.evaluations = evaluations_;
     return r;
   }
 
  private:
-  struct Segment {
-    std::size_t piece;
-    Real u, v;  // sub-interval of the piece with constant contact status
-    bool contact;
-    bool jump;  // u is a breakpoint where w jumps (n may jump there)
+  using Segment = typename Contact<Real>::Segment;
+
+  // n and n' on a segment, remembering the last few evaluations: the sweep asks for the same
+  // ends and events several times.
+  struct Memo {
+    static constexpr std::size_t size = 4;
+    std::size_t piece[size] = {};
+    Real x[size], v[size];
+    std::size_t used = 0, next = 0;
+    const Real* find(std::size_t p, const Real& at) const {
+      for (std::size_t k = 0; k < used; ++k)
+        if (piece[k] == p && x[k] == at) return &v[k];
+      return nullptr;
+    }
+    const Real& put(std::size_t p, const Real& at, Real value) {
+      const std::size_t k = next;
+      next = (next + 1) % size;
+      if (used < size) ++used;
+      piece[k] = p;
+      x[k] = at;
+      v[k] = std::move(value);
+      return v[k];
+    }
   };
-
-  static Real n_clip(const Real& x) { return x > 0 ? x : Real(0); }
-
   Real n(const Segment& g, const Real& x) {
     if (!g.contact) return Real(0);
+    if (x == g.u) return g.nu;
+    if (x == g.v) return g.nv;
+    if (const Real* hit = n_memo_.find(g.piece, x)) return *hit;
     ++evaluations_;
-    return gamma_ + w_.value(g.piece, x);
+    return n_memo_.put(g.piece, x, gamma_ + w_.value(g.piece, x));
+  }
+  Real antiderivative(const Segment& g, const Real& x) {
+    if (x == g.u) return g.Wu;
+    if (x == g.v) return g.Wv;
+    if (const Real* hit = w_memo_.find(g.piece, x)) return *hit;
+    ++evaluations_;
+    return w_memo_.put(g.piece, x, w_.antiderivative(g.piece, x));
   }
   Real dn(const Segment& g, const Real& x) {
     if (!g.contact) return Real(0);
+    if (x == g.u) return g.dnu;
+    if (x == g.v) return g.dnv;
+    if (const Real* hit = dn_memo_.find(g.piece, x)) return *hit;
     ++evaluations_;
-    return w_.slope(g.piece, x);
-  }
-
-  // Pieces split at contact boundaries; start_ = first segment at the argmin breakpoint.
-  void build_segments() {
-    const std::size_t pieces = w_.piece_count();
-    using std::abs;
-    for (std::size_t i = 0; i < pieces; ++i) {
-      for (const Real& x : {w_.piece_begin(i), w_.piece_end(i)})
-        if (abs(w_.slope(i, x)) > max_slope_) max_slope_ = abs(w_.slope(i, x));
-      if (i == w_.argmin_break()) start_ = segs_.size();
-      const Real& a = w_.piece_begin(i);
-      const Real& b = w_.piece_end(i);
-      Real c0, c1;
-      const bool jump = w_.jump_at(i);
-      if (!w_.contact_part(i, gamma_, c0, c1, stats_)) {
-        segs_.push_back({i, a, b, false, jump});
-        continue;
-      }
-      if (c0 > a) {
-        ++events_;
-        segs_.push_back({i, a, c0, false, jump});
-      }
-      segs_.push_back({i, c0, c1, true, c0 > a ? false : jump});
-      if (c1 < b) {
-        ++events_;
-        segs_.push_back({i, c1, b, false, false});
-      }
-    }
+    return dn_memo_.put(g.piece, x, w_.slope(g.piece, x));
   }
 
   // Ramp of the current stick phase at phase x of a segment shifted by `shift` periods. Phases
@@ -199,13 +293,24 @@ class Sweep {
     } else if (n_u <= ramp(g.u, shift)) {
       close_stick(g.u, shift);  // n jumps below (or touches) the ramp
     }
-    const bool convex = !g.contact || w_.convex(g.piece);
-    for (;;) {
-      // A stick that begins by n' ≥ β on a convex segment cannot end on it: n − ramp has a
-      // non-decreasing slope from ≥ 0 there. Saying so avoids re-opening it at a rounding tie.
+    const bool convex = !g.contact || g.convex;
+    // Facts of exact arithmetic that rounding must not undo near a tangency (β ≈ β_c):
+    // a stick that begins by n' ≥ β on a convex segment cannot end on it (n − ramp has a
+    // non-decreasing slope from ≥ 0), and after a stick ends on a concave or linear segment n'
+    // stays below β there, so no new one begins.
+    bool ended_here = false;
+    for (int round = 0;; ++round) {
+      if (round > 4)
+        throw SolverError("no progress on the segment [" + short_str(g.u) + ", " + short_str(g.v) + "] of piece " +
+                          std::to_string(g.piece) + " at phase " + short_str(pos));
       bool onset_here = false;
       if (!sticking_) {
         // Slip: s = n until n' exceeds β (Eq. 4); n' is monotone on the segment.
+        if (!convex && ended_here) {
+          add_slip(g, pos, g.v);
+          s_ = n(g, g.v);
+          return;
+        }
         if (dn(g, pos) > beta_) {
           open_stick(pos, shift, n(g, pos));
         } else if (convex && dn(g, g.v) > beta_) {
@@ -227,6 +332,7 @@ class Sweep {
         close_stick(t, shift);
         s_ = n(g, t);
         pos = t;
+        ended_here = true;
         continue;
       }
       add_stick(g, pos, g.v, shift);
@@ -241,7 +347,7 @@ class Sweep {
     const Real& v = g.v;
     if (!(v > p0)) return false;
     const Real dv = d(v);
-    const bool linear = !g.contact || w_.linear(g.piece);
+    const bool linear = !g.contact || g.linear;
     if (linear) {
       if (dv > 0) return false;
       const Real d0 = d(p0);
@@ -276,8 +382,41 @@ class Sweep {
       }
     }
     ++events_;
-    t = bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
+    t = stick_end_root(g, shift, lo, hi, dlo, dhi);
     return true;
+  }
+
+  // Eq. 8 on [lo, hi] where d = n − ramp changes sign monotonically: a double-precision root
+  // from the waveform's shadow, then Newton at the working precision (or toms748 for types no
+  // wider than double, where the guess is already the answer's precision).
+  Real stick_end_root(const Segment& g, const Real& shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
+    auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
+    if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<long double>::digits) {
+      return bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
+    } else {
+      const double g_ = static_cast<double>(gamma_), b_ = static_cast<double>(beta_);
+      const double lvl = static_cast<double>(level_), a0 = static_cast<double>(a_), sh = static_cast<double>(shift - a_shift_);
+      auto dd = [&](double x) { return g_ + w_.approx_value(g.piece, x) - (lvl + b_ * ((x - a0) + sh)); };
+      const double l = static_cast<double>(lo), h = static_cast<double>(hi);
+      double guess = (l + h) / 2;
+      const double fl = dd(l), fh = dd(h);
+      if ((fl > 0) != (fh > 0)) {
+        std::uintmax_t it = 100;
+        const auto r = boost::math::tools::toms748_solve(dd, l, h, fl, fh, boost::math::tools::eps_tolerance<double>(), it);
+        guess = (r.first + r.second) / 2;
+      }
+      // Newton asks for d and d' at the same phase: evaluate n and n' together, remember both.
+      auto d_joint = [&](const Real& x) -> Real {
+        if (!g.contact || n_memo_.find(g.piece, x)) return d(x);
+        auto [v, sl] = w_.value_and_slope(g.piece, x);
+        evaluations_ += 2;
+        n_memo_.put(g.piece, x, gamma_ + v);
+        dn_memo_.put(g.piece, x, std::move(sl));
+        return d(x);
+      };
+      return polished_root<Real>(d_joint, [&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi, dlo, dhi,
+                                 Real(guess), "stick end (Eq. 8)", stats_);
+    }
   }
 
   // Zero of n' − β on [lo, hi] where n' rises through β (convex segment; Eq. 4).
@@ -294,6 +433,7 @@ class Sweep {
   Real decreasing_slope_root(const Segment& g, const Real& lo, const Real& hi, const Real& f_lo,
                              const Real& f_hi) {
     ++events_;
+    if (auto r = w_.solve_slope(g.piece, beta_)) return *r < lo ? lo : (*r > hi ? hi : *r);
     return bracketed_root<Real>([&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi,
                                 f_lo, f_hi, "maximum of n − ramp", stats_);
   }
@@ -332,8 +472,7 @@ class Sweep {
     using std::abs;
     err += position_bound(p, q, n(g, p), n(g, q)) + (q - p) * value_bound();
     if (method_ == AreaMethod::exact) {
-      evaluations_ += 2;
-      const Real wq = w_.antiderivative(g.piece, q), wp = w_.antiderivative(g.piece, p);
+      const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
       err += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
       return gamma_ * (q - p) + (wq - wp);
     }
@@ -399,16 +538,16 @@ class Sweep {
     }
   }
 
+  const Contact<Real>& c_;
   const Waveform<Real>& w_;
   Real beta_, gamma_;
   Options opt_;
   AreaMethod method_;
   RootStats stats_;
-  std::vector<Segment> segs_;
-  std::size_t start_ = 0;
   bool sticking_ = false;
   Real s_ = 0, a_ = 0, a_shift_ = 0, level_ = 0;
   Real retained_ = 0, normal_ = 0, lost_ = 0;
+  Memo n_memo_, dn_memo_, w_memo_;
   Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0, max_slope_ = 0;
   std::vector<StickPhase<Real>> stick_;
   std::size_t events_ = 0, quadratures_ = 0, evaluations_ = 0;
@@ -444,9 +583,38 @@ Result<Real> solve(const Waveform<Real>& w, const Real& beta, const Real& gamma,
     throw DomainError("gamma = " + detail::short_str(gamma) + " gives no contact for wave " + w.name() +
                       ": expected gamma > " + detail::short_str(Real(-w.maximum())));
   try {
-    return detail::Sweep<Real>(w, beta, gamma, opt).run();
+    const Contact<Real> contact(w, gamma, opt);
+    return detail::Sweep<Real>(contact, beta, opt).run();
   } catch (const SolverError& e) {
     throw SolverError(detail::context(w, beta, &gamma) + ": " + e.what());
+  }
+}
+
+// The same for a prepared Contact (its γ already checked by constructing it through solve's
+// preconditions): a sweep over β at one γ builds the Contact once.
+template <class Real>
+Result<Real> solve(const Contact<Real>& contact, const Real& beta, const Options& opt = {}) {
+  detail::check_beta(contact.wave(), beta);
+  try {
+    return detail::Sweep<Real>(contact, beta, opt).run();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
+  }
+}
+
+// Checks γ (finite, contact exists) and builds its Contact; InputError/DomainError otherwise.
+template <class Real>
+Contact<Real> make_contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) {
+  using std::isfinite;
+  if (!isfinite(gamma))
+    throw InputError("gamma = " + detail::short_str(gamma) + ": expected a finite number");
+  if (!(gamma + w.maximum() > 0))
+    throw DomainError("gamma = " + detail::short_str(gamma) + " gives no contact for wave " + w.name() +
+                      ": expected gamma > " + detail::short_str(Real(-w.maximum())));
+  try {
+    return Contact<Real>(w, gamma, opt);
+  } catch (const SolverError& e) {
+    throw SolverError("wave " + w.name() + ", gamma = " + detail::short_str(gamma) + ": " + e.what());
   }
 }
 
@@ -457,7 +625,8 @@ Result<Real> psi(const Waveform<Real>& w, const Real& beta, const Options& opt =
   detail::check_beta(w, beta);
   const Real gamma = -w.minimum();
   try {
-    return detail::Sweep<Real>(w, beta, gamma, opt).run();
+    const Contact<Real> contact(w, gamma, opt);
+    return detail::Sweep<Real>(contact, beta, opt).run();
   } catch (const SolverError& e) {
     throw SolverError(detail::context<Real>(w, beta, nullptr) + ": " + e.what());
   }

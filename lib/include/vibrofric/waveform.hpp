@@ -7,18 +7,76 @@
 // and (8) is then the single root of a monotone function on a known bracket.
 #pragma once
 #include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/mpfr.hpp>
 
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <tuple>
+#include <type_traits>
 #include <string>
 #include <vector>
 
 #include "vibrofric/detail/roots.hpp"
 #include "vibrofric/errors.hpp"
+#include "vibrofric/numbers.hpp"
 
 namespace vibrofric {
+
+namespace detail {
+
+template <class Real>
+inline constexpr bool wider_than_hardware_v = std::numeric_limits<Real>::digits > std::numeric_limits<long double>::digits;
+
+// sin x and cos x together (one MPFR call for mpfr).
+template <class Real>
+std::pair<Real, Real> sin_cos(const Real& x) {
+  Real s, c;
+  if constexpr (std::is_same_v<Real, boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
+                                                                 boost::multiprecision::et_off>>) {
+    mpfr_sin_cos(s.backend().data(), c.backend().data(), x.backend().data(), MPFR_RNDN);
+  } else {
+    using std::cos;
+    using std::sin;
+    s = sin(x);
+    c = cos(x);
+  }
+  return {s, c};
+}
+
+// acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
+// from a double guess (two steps to 100 digits; θ/2 ≤ π/4 keeps it well conditioned, and small
+// θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos.
+template <class Real>
+Real acos_fast(const Real& y) {
+  using std::acos;
+  if constexpr (!wider_than_hardware_v<Real>) {
+    return acos(y);
+  } else {
+    using std::abs;
+    using std::cbrt;
+    using std::sqrt;
+    if (y < 0) return boost::math::constants::pi<Real>() - acos_fast(Real(-y));
+    if (y >= 1) return Real(0);
+    const Real t = sqrt((1 - y) / 2);
+    Real h = std::asin(static_cast<double>(t));
+    const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
+    for (int it = 0; it < 64; ++it) {
+      const auto [sh, ch] = sin_cos(h);
+      const Real f = sh - t;
+      if (f == 0) break;
+      // Halley: Δ = 2 f f' / (2 f'² − f f''), with f' = cos h, f'' = −sin h.
+      const Real step = 2 * f * ch / (2 * ch * ch + f * sh);
+      h -= step;
+      if (abs(step) <= tol * abs(h)) return 2 * h;
+    }
+    if (abs(sin_cos(h).first - t) <= 4 * std::numeric_limits<Real>::epsilon() * t) return 2 * h;
+    throw SolverError("acos(" + short_str(y) + "): Halley iteration did not converge");
+  }
+}
+
+}  // namespace detail
 
 // How a user waveform was brought to zero mean and unit amplitude: w = (raw − offset) / scale,
 // with scale = (max − min)/2 of the zero-mean signal, so that max w − min w = 2.
@@ -47,13 +105,24 @@ class Waveform {
   virtual Real antiderivative(std::size_t, const Real&) const {
     throw SolverError("waveform " + name_ + " has no antiderivative");
   }
+  // value and slope at one phase (a waveform may share the work, as sin and cos do).
+  virtual std::pair<Real, Real> value_and_slope(std::size_t i, const Real& phi) const { return {value(i, phi), slope(i, phi)}; }
+  // Double-precision shadows of value and slope, for initial guesses only (the default converts
+  // through Real; waveforms override them with their own double formulas).
+  virtual double approx_value(std::size_t i, double phi) const { return static_cast<double>(value(i, Real(phi))); }
+  virtual double approx_slope(std::size_t i, double phi) const { return static_cast<double>(slope(i, Real(phi))); }
   // Closed-form solutions on piece i, where known: φ with value(i, φ) = y, φ with slope = b.
   // Called only when the root exists on the piece; the generic root finder is the fallback.
   virtual std::optional<Real> solve_value(std::size_t, const Real&) const { return std::nullopt; }
   virtual std::optional<Real> solve_slope(std::size_t, const Real&) const { return std::nullopt; }
 
-  bool linear(std::size_t i) const { return slope(i, begins_[i]) == slope(i, ends_[i]); }
-  bool convex(std::size_t i) const { return slope(i, begins_[i]) <= slope(i, ends_[i]); }
+  // One-sided values and slopes at the piece ends, computed once.
+  const Real& begin_value(std::size_t i) const { return begin_value_[i]; }
+  const Real& end_value(std::size_t i) const { return end_value_[i]; }
+  const Real& begin_slope(std::size_t i) const { return begin_slope_[i]; }
+  const Real& end_slope(std::size_t i) const { return end_slope_[i]; }
+  bool linear(std::size_t i) const { return begin_slope_[i] == end_slope_[i]; }
+  bool convex(std::size_t i) const { return begin_slope_[i] <= end_slope_[i]; }
 
   // Right-continuous value and slope at any phase (reduced modulo 1).
   Real operator()(const Real& phi) const { return value(locate(phi), reduce(phi)); }
@@ -74,7 +143,7 @@ class Waveform {
                     detail::RootStats& stats) const {
     c0 = begins_[i];
     c1 = ends_[i];
-    const Real g0 = gamma + value(i, c0), g1 = gamma + value(i, c1);
+    const Real g0 = gamma + begin_value_[i], g1 = gamma + end_value_[i];
     if (g0 <= 0 && g1 <= 0) return false;
     if ((g0 < 0) != (g1 < 0)) {
       const Real c = solve_value_root(i, -gamma, c0, c1, g0, g1, stats);
@@ -99,13 +168,14 @@ class Waveform {
     const std::size_t m = piece_count();
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t prev = (i + m - 1) % m;
-      const Real left = gamma + value(prev, ends_[prev]);
-      const Real right = gamma + value(i, begins_[i]);
+      const Real left = gamma + end_value_[prev];
+      const Real right = gamma + begin_value_[i];
       if (jump_[i] && right > 0 && right > left) return std::numeric_limits<Real>::infinity();
       Real c0, c1;
       if (!contact_part(i, gamma, c0, c1, stats)) continue;
       using std::max;
-      best = max(best, max(slope(i, c0), slope(i, c1)));
+      best = max(best, max(c0 == begins_[i] ? begin_slope_[i] : slope(i, c0),
+                           c1 == ends_[i] ? end_slope_[i] : slope(i, c1)));
     }
     return best;
   }
@@ -119,10 +189,20 @@ class Waveform {
     ends_.assign(begins_.begin() + 1, begins_.end());
     ends_.push_back(Real(1));
     const std::size_t m = begins_.size();
-    min_ = max_ = value(0, begins_[0]);
+    begin_value_.clear();
+    end_value_.clear();
+    begin_slope_.clear();
+    end_slope_.clear();
+    for (std::size_t i = 0; i < m; ++i) {
+      begin_value_.push_back(value(i, begins_[i]));
+      end_value_.push_back(value(i, ends_[i]));
+      begin_slope_.push_back(slope(i, begins_[i]));
+      end_slope_.push_back(slope(i, ends_[i]));
+    }
+    min_ = max_ = begin_value_[0];
     argmin_ = 0;
     for (std::size_t i = 0; i < m; ++i) {
-      const Real a = value(i, begins_[i]), b = value(i, ends_[i]);
+      const Real &a = begin_value_[i], &b = end_value_[i];
       if (a < min_) { min_ = a; argmin_ = i; }
       if (b < min_) { min_ = b; argmin_ = (i + 1) % m; }
       if (a > max_) max_ = a;
@@ -133,7 +213,7 @@ class Waveform {
     const Real tiny = 64 * std::numeric_limits<Real>::epsilon() * (max_ - min_);
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t prev = (i + m - 1) % m;
-      jump_[i] = abs(value(prev, ends_[prev]) - value(i, begins_[i])) > tiny;
+      jump_[i] = abs(end_value_[prev] - begin_value_[i]) > tiny;
     }
   }
 
@@ -157,6 +237,7 @@ class Waveform {
 
   std::string name_;
   std::vector<Real> begins_, ends_;
+  std::vector<Real> begin_value_, end_value_, begin_slope_, end_slope_;
   std::vector<bool> jump_;
   Real min_ = 0, max_ = 0;
   std::size_t argmin_ = 0;
@@ -170,40 +251,98 @@ class Sine final : public Waveform<Real> {
     const Real q = Real(1) / 4;
     this->set_pieces({Real(0), q, 2 * q, 3 * q});
   }
-  Real value(std::size_t, const Real& phi) const override {
-    using std::sin;
-    return sin(two_pi() * phi);
+  Real value(std::size_t, const Real& phi) const override { return trig(phi).first; }
+  std::pair<Real, Real> value_and_slope(std::size_t, const Real& phi) const override {
+    const auto& [s, c] = trig(phi);
+    return {s, two_pi_ * c};
   }
-  Real slope(std::size_t, const Real& phi) const override {
-    using std::cos;
-    return two_pi() * cos(two_pi() * phi);
-  }
+  double approx_value(std::size_t, double phi) const override { return std::sin(2 * M_PI * phi); }
+  double approx_slope(std::size_t, double phi) const override { return 2 * M_PI * std::cos(2 * M_PI * phi); }
+  Real slope(std::size_t, const Real& phi) const override { return two_pi_ * trig(phi).second; }
   bool has_antiderivative() const override { return true; }
-  Real antiderivative(std::size_t, const Real& phi) const override {
-    using std::cos;
-    return -cos(two_pi() * phi) / two_pi();
-  }
+  Real antiderivative(std::size_t, const Real& phi) const override { return -trig(phi).second / two_pi_; }
   // acos keeps the distance from the nearest extremum accurate (the contact width near γ = −1).
   std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
-    using std::acos;
+    using detail::acos_fast;
     const Real q = Real(1) / 4;
     switch (i) {
-      case 0: return q - acos(y) / two_pi();
-      case 1: return q + acos(y) / two_pi();
-      case 2: return 3 * q - acos(-y) / two_pi();
-      default: return 3 * q + acos(-y) / two_pi();
+      case 0: return q - acos_fast(y) / two_pi_;
+      case 1: return q + acos_fast(y) / two_pi_;
+      case 2: return 3 * q - acos_fast(Real(-y)) / two_pi_;
+      default: return 3 * q + acos_fast(Real(-y)) / two_pi_;
     }
   }
+  // Rising pieces only (0 and 3): the solver asks for positive slopes.
   std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
-    using std::acos;
-    const Real c = b / two_pi();
-    if (i == 0) return acos(c) / two_pi();
-    if (i == 3) return 1 - acos(c) / two_pi();
+    using detail::acos_fast;
+    const Real c = b / two_pi_;
+    if (i == 0) return acos_fast(c) / two_pi_;
+    if (i == 3) return 1 - acos_fast(c) / two_pi_;
     return std::nullopt;
   }
 
  private:
   static Real two_pi() { return boost::math::constants::two_pi<Real>(); }
+
+  // sin 2πφ and cos 2πφ from the nearest quarter period: φ = k/4 + r, |r| ≤ 1/8, r exact
+  // (Sterbenz). Exact at the quarters, accurate near the extrema, and it spares MPFR the
+  // hard-to-round arguments next to multiples of π/2.
+  // sin and cos 2πφ of the last phases asked for on this thread (at this precision): value,
+  // slope and antiderivative at one event then cost one sin_cos. Every Sine is the same
+  // function, so the cache needs no owner.
+  const std::pair<Real, Real>& trig(const Real& phi) const {
+    struct Entry {
+      int digits = -1;
+      Real phi;
+      std::pair<Real, Real> sc;
+    };
+    thread_local Entry last[2];
+    thread_local int next = 0;
+    const int d = working_digits10<Real>();
+    for (const Entry& e : last)
+      if (e.digits == d && e.phi == phi) return e.sc;
+    Entry& e = last[next];
+    next ^= 1;
+    e.digits = d;
+    e.phi = phi;
+    e.sc = sin_cos_2pi(phi);
+    return e.sc;
+  }
+  Real sin_2pi(const Real& phi) const { return quarter(phi, 0); }
+  std::pair<Real, Real> sin_cos_2pi(const Real& phi) const {
+    using std::floor;
+    const Real k = floor(4 * phi + Real(1) / 2);
+    const Real r = phi - k / 4;
+    long q = static_cast<long>(k) % 4;
+    if (q < 0) q += 4;
+    Real s = 0, c = 1;
+    if (r != 0) std::tie(s, c) = detail::sin_cos(Real(two_pi_ * r));
+    switch (q) {  // rotate by q quarter turns
+      case 0: return {s, c};
+      case 1: return {c, Real(-s)};
+      case 2: return {Real(-s), Real(-c)};
+      default: return {Real(-c), s};
+    }
+  }
+  Real cos_2pi(const Real& phi) const { return quarter(phi, 1); }
+  Real quarter(const Real& phi, int shift) const {
+    using std::cos;
+    using std::floor;
+    using std::sin;
+    const Real k = floor(4 * phi + Real(1) / 2);
+    const Real r = phi - k / 4;
+    long q = (static_cast<long>(k) + shift) % 4;
+    if (q < 0) q += 4;
+    if (r == 0) return q == 0 || q == 2 ? Real(0) : Real(q == 1 ? 1 : -1);
+    const Real x = two_pi_ * r;
+    switch (q) {
+      case 0: return sin(x);
+      case 1: return cos(x);
+      case 2: return -sin(x);
+      default: return -cos(x);
+    }
+  }
+  Real two_pi_ = two_pi();
 };
 
 // Piecewise linear through (x_i, y_i) with slope s_i on each piece: triangle, sawteeth, square
@@ -272,13 +411,22 @@ std::unique_ptr<Waveform<Real>> make_square() {
 template <class Real>
 class Power final : public Waveform<Real> {
  public:
-  explicit Power(const Real& p, std::string name) : Waveform<Real>(std::move(name)), p_(p) {
+  explicit Power(const Real& p, std::string name)
+      : Waveform<Real>(std::move(name)), p_(p), pd_(static_cast<double>(p)) {
     if (!(p >= 1))
       throw InputError("power:p needs p ≥ 1 (got " + detail::short_str(p) + ")");
     const Real q = Real(1) / 4;
     this->set_pieces({Real(0), q, 2 * q, 3 * q});
   }
   const Real& exponent() const { return p_; }
+  double approx_value(std::size_t i, double phi) const override {
+    const double up = std::pow(static_cast<double>(distance(i, Real(phi))), pd_);
+    return i < 2 ? 1 - up : up - 1;
+  }
+  double approx_slope(std::size_t i, double phi) const override {
+    const double d = 4 * pd_ * std::pow(static_cast<double>(distance(i, Real(phi))), pd_ - 1);
+    return (i == 0 || i == 3) ? d : -d;
+  }
   Real value(std::size_t i, const Real& phi) const override {
     using std::pow;
     const Real up = pow(distance(i, phi), p_);
@@ -331,6 +479,7 @@ class Power final : public Waveform<Real> {
     }
   }
   Real p_;
+  double pd_;
 };
 
 }  // namespace vibrofric

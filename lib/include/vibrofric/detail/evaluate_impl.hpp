@@ -4,13 +4,16 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <map>
 #include <thread>
 
 #include "vibrofric/evaluate.hpp"
 
 namespace vibrofric::detail {
 
-// Extra digits carried beyond the request, before the solver's own error estimate is consulted.
+// Extra digits carried beyond the request before the solver's own rounding bound is consulted
+// (and the precision raised if it says the request is not met). Fewer guard digits were
+// measured slower: more points then need the second pass.
 inline int guard_digits(int digits) { return 10 + digits / 20; }
 
 template <class Real>
@@ -19,29 +22,57 @@ struct PointValue {
   Real relative_error;
 };
 
+// Waveforms of one thread, one per working precision (mpfr), built on first use, and the
+// Contact of the last γ (points come γ by γ, so a sweep builds each once).
 template <class Real>
-PointValue<Real> compute_point(const Waveform<Real>& w, Quantity q, const Point& p, const Options& opt) {
-  const Real beta = parse_real<Real>(p.beta, "beta");
-  if (q == Quantity::psi) {
-    const auto r = psi(w, beta, opt);
-    return {r.lost_area, r.lost_relative_error};
+class WaveCache {
+ public:
+  explicit WaveCache(const WaveSpec& spec) : spec_(spec) {}
+  const Waveform<Real>& get() {
+    auto& slot = by_digits_[working_digits10<Real>()];
+    if (!slot) slot = make_waveform<Real>(spec_);
+    return *slot;
   }
-  const Real gamma = parse_real<Real>(p.gamma, "gamma");
-  const auto r = solve(w, beta, gamma, opt);
+  // γ as written; "" for Ψ (γ = −min w, n touching zero).
+  const Contact<Real>& contact(const std::string& gamma_text, const Options& opt) {
+    const int d = working_digits10<Real>();
+    if (!contact_ || digits_ != d || text_ != gamma_text) {
+      const Waveform<Real>& w = get();
+      const Real gamma = gamma_text.empty() ? Real(-w.minimum()) : parse_real<Real>(gamma_text, "gamma");
+      contact_.reset();
+      contact_ = std::make_unique<Contact<Real>>(make_contact(w, gamma, opt));
+      digits_ = d;
+      text_ = gamma_text;
+    }
+    return *contact_;
+  }
+
+ private:
+  const WaveSpec& spec_;
+  std::map<int, std::unique_ptr<Waveform<Real>>> by_digits_;
+  std::unique_ptr<Contact<Real>> contact_;
+  int digits_ = -1;
+  std::string text_;
+};
+
+template <class Real>
+PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt) {
+  const Real beta = parse_real<Real>(p.beta, "beta");
+  const auto r = solve(waves.contact(q == Quantity::psi ? std::string() : p.gamma, opt), beta, opt);
+  if (q == Quantity::psi) return {r.lost_area, r.lost_relative_error};
   return {r.mu, r.relative_error};
 }
 
 // One point at `digits` significant digits: mpfr raises its working precision until the
 // error estimate is below half a unit in the last requested digit.
 template <class Real>
-std::string evaluate_point(const WaveSpec& spec, Quantity q, const Point& p, int digits,
-                           const Options& opt) {
+std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantity q, const Point& p,
+                           int digits, const Options& opt) {
   if constexpr (is_runtime_precision_v<Real>) {
     int work = digits + guard_digits(digits);
     for (int attempt = 0; attempt < 8; ++attempt) {
       PrecisionScope scope(static_cast<unsigned>(work));
-      const auto w = make_waveform<Real>(spec);
-      const auto v = compute_point(*w, q, p, opt);
+      const auto v = compute_point(waves, q, p, opt);
       const Real target = pow(Real(10), -digits) / 2;
       if (v.relative_error <= target) return format_significant(v.value, digits);
       using std::isfinite;
@@ -56,20 +87,19 @@ std::string evaluate_point(const WaveSpec& spec, Quantity q, const Point& p, int
                       (q == Quantity::mu ? ", gamma = " + p.gamma : std::string()) +
                       ": could not reach " + std::to_string(digits) + " digits (ill-conditioned)");
   } else {
-    const auto w = make_waveform<Real>(spec);
-    return format_significant(compute_point(*w, q, p, opt).value, digits);
+    return format_significant(compute_point(waves, q, p, opt).value, digits);
   }
 }
 
 // A fixed-precision type: its own value where the rounding bound allows, else the mpfr value
 // at the type's round-trip digits rounded to the type.
 template <class Real>
-std::string evaluate_fixed(const Waveform<Real>& w, const WaveSpec& spec, Quantity q, const Point& p,
-                           int digits, const BatchOptions& options) {
-  const auto v = compute_point(w, q, p, options.solver);
+std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<mpfr>& fallback, const WaveSpec& spec, Quantity q,
+                           const Point& p, int digits, const BatchOptions& options) {
+  const auto v = compute_point(waves, q, p, options.solver);
   if (!options.escalate || v.relative_error <= std::numeric_limits<Real>::epsilon())
     return format_significant(v.value, digits);
-  const std::string exact = evaluate_point<mpfr>(spec, q, p, std::numeric_limits<Real>::max_digits10 + 3, options.solver);
+  const std::string exact = evaluate_point<mpfr>(fallback, spec, q, p, std::numeric_limits<Real>::max_digits10 + 3, options.solver);
   return format_significant(parse_real<Real>(exact, "escalated value"), digits);
 }
 
@@ -80,16 +110,14 @@ std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const 
   std::vector<std::exception_ptr> errors(points.size());
   std::atomic<std::size_t> next{0}, done{0};
   auto worker = [&] {
-    // Waveforms are rebuilt per point only for mpfr (precision may change per point).
-    std::unique_ptr<Waveform<Real>> w;
+    WaveCache<Real> waves(spec);
+    WaveCache<mpfr> fallback(spec);
     for (std::size_t i; (i = next++) < points.size();) {
       try {
-        if constexpr (is_runtime_precision_v<Real>) {
-          out[i] = evaluate_point<Real>(spec, q, points[i], digits, options.solver);
-        } else {
-          if (!w) w = make_waveform<Real>(spec);
-          out[i] = evaluate_fixed(*w, spec, q, points[i], digits, options);
-        }
+        if constexpr (is_runtime_precision_v<Real>)
+          out[i] = evaluate_point<Real>(waves, spec, q, points[i], digits, options.solver);
+        else
+          out[i] = evaluate_fixed(waves, fallback, spec, q, points[i], digits, options);
       } catch (...) {
         errors[i] = std::current_exception();
       }

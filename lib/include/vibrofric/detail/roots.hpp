@@ -59,4 +59,44 @@ Real bracketed_root(F f, const Real& a, const Real& b, const Real& fa, const Rea
   return (r.first + r.second) / 2;
 }
 
+// Root of a smooth monotone f in [a, b] (fa, fb of opposite signs) from a close guess: Newton
+// with f' = df, kept inside the bracket (a step that leaves it bisects instead). Stops once a
+// step is below sqrt(eps)/64 relative: quadratic convergence then leaves ~eps. Running out of
+// iterations is a SolverError.
+template <class Real, class F, class DF>
+Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, const char* what, RootStats& stats) {
+  using std::abs;
+  using std::sqrt;
+  if (fa == 0) return a;
+  if (fb == 0) return b;
+  if ((fa > 0) == (fb > 0))
+    throw SolverError(std::string(what) + ": no sign change on [" + short_str(a) + ", " + short_str(b) + "]");
+  const Real small = sqrt(std::numeric_limits<Real>::epsilon()) / 64;
+  if (!(x > a && x < b)) x = (a + b) / 2;
+  ++stats.solves;
+  for (std::uintmax_t it = 1; it <= stats.max_iterations; ++it) {
+    ++stats.iterations;
+    const Real fx = f(x);
+    if (fx == 0) return x;
+    if ((fx > 0) == (fa > 0)) {
+      a = x;
+      fa = fx;
+    } else {
+      b = x;
+    }
+    const Real d = df(x);
+    Real next = d != 0 ? Real(x - fx / d) : Real((a + b) / 2);
+    if (next == x) return x;  // the step is below the last bit
+    const bool inside = next >= a && next <= b;
+    if (!inside) next = (a + b) / 2;
+    const Real step = abs(next - x);
+    x = next;
+    const Real scale = abs(x) > 0 ? abs(x) : Real(1);
+    if (inside && step <= small * scale) return x;
+    if (b - a <= 4 * std::numeric_limits<Real>::epsilon() * scale) return (a + b) / 2;
+  }
+  throw SolverError(std::string(what) + ": Newton iteration did not converge in " +
+                    std::to_string(stats.max_iterations) + " iterations on [" + short_str(a) + ", " + short_str(b) + "]");
+}
+
 }  // namespace vibrofric::detail
