@@ -27,13 +27,6 @@ namespace cf = closed_form;
 
 Real num(const char* s) { return Real(s); }
 
-// β grid strictly inside (0, bc) for a finite bc, plus the given extra points.
-std::vector<Real> betas_below(const Real& bc) {
-  std::vector<Real> out;
-  for (const char* f : {"0.001", "0.01", "0.1", "0.25", "0.5", "0.75", "0.9", "0.99", "0.999999"})
-    out.push_back(bc * num(f));
-  return out;
-}
 std::vector<Real> betas_wide() {
   std::vector<Real> out;
   for (const char* b : {"0.001", "0.01", "0.1", "0.5", "1", "1.5", "1.999", "2", "2.5", "3.9", "4", "5", "10", "100"})
@@ -49,8 +42,12 @@ std::vector<Real> gammas_jumping() {
 
 class Check {
  public:
-  Check(std::string id, std::string statement, std::string method, int digits)
-      : c_{std::move(id), std::move(statement), std::move(method), digits} {}
+  Check(std::string id, std::string statement, std::string method, int digits) {
+    c_.id = std::move(id);
+    c_.statement = std::move(statement);
+    c_.method = std::move(method);
+    c_.digits = digits;
+  }
   // Records |got − want| / |want| (absolute when want = 0) for the case described by `where`.
   void compare(const Real& got, const Real& want, const std::string& where) {
     using std::abs;

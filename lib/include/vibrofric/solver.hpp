@@ -569,40 +569,8 @@ void check_beta(const Waveform<Real>& w, const Real& beta) {
 
 }  // namespace detail
 
-// μ̄/μ0 = g_w(β, γ) with diagnostics. Preconditions: β > 0 finite; γ finite with
-// γ + max w > 0 (contact exists; γ ≤ −1 for the catalogue is a DomainError). β ≥ β_c(γ) gives
-// exactly 1 (Eq. 6). Throws SolverError, naming wave, β and γ, if an event cannot be bracketed
-// or a root finder or integrator does not converge.
-template <class Real>
-Result<Real> solve(const Waveform<Real>& w, const Real& beta, const Real& gamma, const Options& opt = {}) {
-  using std::isfinite;
-  detail::check_beta(w, beta);
-  if (!isfinite(gamma))
-    throw InputError("gamma = " + detail::short_str(gamma) + ": expected a finite number");
-  if (!(gamma + w.maximum() > 0))
-    throw DomainError("gamma = " + detail::short_str(gamma) + " gives no contact for wave " + w.name() +
-                      ": expected gamma > " + detail::short_str(Real(-w.maximum())));
-  try {
-    const Contact<Real> contact(w, gamma, opt);
-    return detail::Sweep<Real>(contact, beta, opt).run();
-  } catch (const SolverError& e) {
-    throw SolverError(detail::context(w, beta, &gamma) + ": " + e.what());
-  }
-}
-
-// The same for a prepared Contact (its γ already checked by constructing it through solve's
-// preconditions): a sweep over β at one γ builds the Contact once.
-template <class Real>
-Result<Real> solve(const Contact<Real>& contact, const Real& beta, const Options& opt = {}) {
-  detail::check_beta(contact.wave(), beta);
-  try {
-    return detail::Sweep<Real>(contact, beta, opt).run();
-  } catch (const SolverError& e) {
-    throw SolverError(detail::context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
-  }
-}
-
-// Checks γ (finite, contact exists) and builds its Contact; InputError/DomainError otherwise.
+// The Contact of (w, γ) after checking γ: finite, and contact exists (γ + max w > 0; γ ≤ −1
+// for the catalogue is a DomainError). Throws SolverError if a contact boundary cannot be found.
 template <class Real>
 Contact<Real> make_contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) {
   using std::isfinite;
@@ -616,6 +584,27 @@ Contact<Real> make_contact(const Waveform<Real>& w, const Real& gamma, const Opt
   } catch (const SolverError& e) {
     throw SolverError("wave " + w.name() + ", gamma = " + detail::short_str(gamma) + ": " + e.what());
   }
+}
+
+// μ̄/μ0 = g_w(β, γ) with diagnostics, for a Contact built once per γ (a sweep over β reuses
+// it). Precondition: β > 0 finite. β ≥ β_c(γ) gives exactly 1 (Eq. 6). Throws SolverError,
+// naming wave, β and γ, if an event cannot be bracketed or a root finder or integrator does not
+// converge.
+template <class Real>
+Result<Real> solve(const Contact<Real>& contact, const Real& beta, const Options& opt = {}) {
+  detail::check_beta(contact.wave(), beta);
+  try {
+    return detail::Sweep<Real>(contact, beta, opt).run();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
+  }
+}
+
+// The same from (w, β, γ): make_contact's checks on γ, then solve.
+template <class Real>
+Result<Real> solve(const Waveform<Real>& w, const Real& beta, const Real& gamma, const Options& opt = {}) {
+  detail::check_beta(w, beta);
+  return solve(make_contact(w, gamma, opt), beta, opt);
 }
 
 // Ψ_w(β) = ∫(n − s) without jumping (Eq. 12), computed at γ = −min w (n touches zero), where
