@@ -92,7 +92,6 @@ class Contact {
     using std::abs;
     using std::max;
     for (std::size_t i = 0; i < pieces; ++i) {
-      max_slope_ = max(max_slope_, max(abs(w.begin_slope(i)), abs(w.end_slope(i))));
       if (i == w.argmin_break()) start_ = segs_.size();
       const Real& a = w.piece_begin(i);
       const Real& b = w.piece_end(i);
@@ -127,7 +126,6 @@ class Contact {
   const std::vector<Segment>& segments() const { return segs_; }
   std::size_t start() const { return start_; }  // first segment of the sweep: at argmin w
   const Real& beta_c() const { return beta_c_; }
-  const Real& max_slope() const { return max_slope_; }  // largest |w'| at piece ends
   bool jumping() const { return gamma_ + w_.minimum() < 0; }
   Real n_min() const { return clip(gamma_ + w_.minimum()); }
   std::size_t boundaries() const { return boundaries_; }
@@ -158,7 +156,7 @@ class Contact {
   Real gamma_;
   std::vector<Segment> segs_;
   std::size_t start_ = 0, boundaries_ = 0, root_solves_ = 0, root_iterations_ = 0;
-  Real beta_c_ = 0, max_slope_ = 0;
+  Real beta_c_ = 0;
 };
 
 namespace detail {
@@ -192,7 +190,6 @@ class Sweep {
   Result<Real> run() {
     const auto& segs = c_.segments();
     const std::size_t m = segs.size(), start = c_.start();
-    max_slope_ = c_.max_slope();
     // Start where n is smallest: there s = n (model.md), so the sweep needs no history.
     s_ = c_.n_min();
     sticking_ = false;
@@ -350,8 +347,10 @@ class Sweep {
     const bool linear = !g.contact || g.linear;
     if (linear) {
       if (dv > 0) return false;
+      // d is linear here: interpolate between the ends, where d(p0) > 0 ≥ d(v), so t stays in
+      // the bracket even when n' equals β to rounding (then d0/(β − n') would divide by ~0).
       const Real d0 = d(p0);
-      t = d0 <= 0 ? p0 : Real(p0 + d0 / (beta_ - dn(g, p0)));
+      t = d0 <= 0 ? p0 : Real(p0 + (v - p0) * (d0 / (d0 - dv)));
       if (t > v) t = v;
       ++events_;
       return true;
@@ -444,9 +443,10 @@ class Sweep {
     a_ = at;
     a_shift_ = shift;
     level_ = level;
-    // The level is n at a rounded phase: its value error plus a phase error times the steepest
-    // slope of n near there (bounded by the waveform's largest |w'| over the piece ends).
-    level_err_ = value_bound() + (1 + abs(at) + shift) * max_slope_;
+    // The level is a value of n; the anchor phase is rounded. At an onset by n' = β the two
+    // errors cancel to first order (the ramp is tangent to n); at first contact or a jump the
+    // ramp shifts by β times the phase error.
+    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift);
     ++events_;
   }
   void close_stick(const Real& at, const Real& shift) {
@@ -454,13 +454,10 @@ class Sweep {
     stick_.push_back({a_, Real(at + (shift - a_shift_)), level_});
   }
 
-  // Rounding bound (in eps) of ∫f over [p, q] from the phases alone: each phase carries an
-  // absolute error of about eps·(1 + |φ|), weighted by the integrand there.
-  static Real position_bound(const Real& p, const Real& q, const Real& fp, const Real& fq) {
-    using std::abs;
-    return (1 + abs(p)) * abs(fp) + (1 + abs(q)) * abs(fq);
-  }
-  // Bound (in eps) of one evaluation of n = γ + w.
+  // Rounding bounds, in eps. Event phases carry an error of about eps·(1 + |φ|), but the areas
+  // are stationary in them wherever s and n are continuous (at a stick end d/dt of the retained
+  // area is ramp − n = 0; at a contact boundary n = 0; pieces join continuously), so phases
+  // enter only through where a ramp is anchored (open_stick). Bound of one evaluation of n = γ + w:
   Real value_bound() const {
     using std::abs;
     return abs(gamma_) + w_.maximum() - w_.minimum();
@@ -470,7 +467,7 @@ class Sweep {
   Real area_n(const Segment& g, const Real& p, const Real& q, Real& err) {
     if (!g.contact || !(q > p)) return Real(0);
     using std::abs;
-    err += position_bound(p, q, n(g, p), n(g, q)) + (q - p) * value_bound();
+    err += (q - p) * value_bound();
     if (method_ == AreaMethod::exact) {
       const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
       err += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
@@ -517,9 +514,8 @@ class Sweep {
     using std::abs;
     const Real rp = ramp(p, shift), rq = ramp(q, shift);
     const Real r = (q - p) * (rp + rq) / 2;
-    // Ramp: its phases, and its level (a value of n at an event, placed by a rounded phase).
-    const Real ramp_err = position_bound(p, q, rp, rq) +
-                          (q - p) * (level_err_ + beta_ * (abs(p) + abs(a_) + 4));
+    // Ramp: rounding of its values, and the uncertainty of where it is anchored.
+    const Real ramp_err = (q - p) * (abs(rp) + abs(rq) + level_err_);
     retained_ += r;
     err_retained_ += ramp_err;
     Real err = 0;
@@ -548,7 +544,7 @@ class Sweep {
   Real s_ = 0, a_ = 0, a_shift_ = 0, level_ = 0;
   Real retained_ = 0, normal_ = 0, lost_ = 0;
   Memo n_memo_, dn_memo_, w_memo_;
-  Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0, max_slope_ = 0;
+  Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0;
   std::vector<StickPhase<Real>> stick_;
   std::size_t events_ = 0, quadratures_ = 0, evaluations_ = 0;
 };

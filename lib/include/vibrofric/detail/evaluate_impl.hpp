@@ -91,14 +91,20 @@ std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantit
   }
 }
 
-// A fixed-precision type: its own value where the rounding bound allows, else the mpfr value
-// at the type's round-trip digits rounded to the type.
+// A fixed-precision type: its own value where the rounding bound allows; for double next the
+// long double value where its bound is below a quarter of double's epsilon (as Boost.Math
+// promotes double); else the mpfr value at the type's round-trip digits, rounded to the type.
 template <class Real>
-std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<mpfr>& fallback, const WaveSpec& spec, Quantity q,
-                           const Point& p, int digits, const BatchOptions& options) {
+std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
+                           const WaveSpec& spec, Quantity q, const Point& p, int digits, const BatchOptions& options) {
   const auto v = compute_point(waves, q, p, options.solver);
   if (!options.escalate || v.relative_error <= std::numeric_limits<Real>::epsilon())
     return format_significant(v.value, digits);
+  if constexpr (std::is_same_v<Real, double>) {
+    const auto w = compute_point(wider, q, p, options.solver);
+    if (w.relative_error <= std::numeric_limits<double>::epsilon() / 4)
+      return format_significant(static_cast<double>(w.value), digits);
+  }
   const std::string exact = evaluate_point<mpfr>(fallback, spec, q, p, std::numeric_limits<Real>::max_digits10 + 3, options.solver);
   return format_significant(parse_real<Real>(exact, "escalated value"), digits);
 }
@@ -111,13 +117,14 @@ std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const 
   std::atomic<std::size_t> next{0}, done{0};
   auto worker = [&] {
     WaveCache<Real> waves(spec);
+    WaveCache<long double> wider(spec);
     WaveCache<mpfr> fallback(spec);
     for (std::size_t i; (i = next++) < points.size();) {
       try {
         if constexpr (is_runtime_precision_v<Real>)
           out[i] = evaluate_point<Real>(waves, spec, q, points[i], digits, options.solver);
         else
-          out[i] = evaluate_fixed(waves, fallback, spec, q, points[i], digits, options);
+          out[i] = evaluate_fixed(waves, wider, fallback, spec, q, points[i], digits, options);
       } catch (...) {
         errors[i] = std::current_exception();
       }
