@@ -98,7 +98,7 @@ std::vector<ClaimCheck> verify_claims(int digits) {
     for (const auto* w : all)
       for (const char* g : {"3", "1", "0.5", "0", "-0.5", "-0.9"}) {
         const Real gamma = num(g);
-        const Real bc = w->beta_c(gamma);
+        const Real bc = make_contact(*w, gamma).beta_c();
         using std::isfinite;
         if (!isfinite(bc)) continue;
         for (const char* f : {"1", "1.5", "10"}) {

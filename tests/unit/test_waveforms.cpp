@@ -6,6 +6,7 @@
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/numbers.hpp"
+#include "vibrofric/solver.hpp"
 
 namespace {
 
@@ -59,13 +60,13 @@ TEST(Waveforms, ExtremaMeanAndBetaC) {
     EXPECT_DOUBLE_EQ(w->maximum(), 1.0) << name;
     EXPECT_NEAR(mean(*w), 0.0, 4e-16) << name;
   }
-  EXPECT_NEAR(wave("sine")->beta_c(1.0), 2 * M_PI, 1e-15);
-  EXPECT_NEAR(wave("sine")->beta_c(-0.6), 2 * M_PI * 0.8, 1e-14);
-  EXPECT_EQ(wave("tri")->beta_c(0.0), 4.0);
-  EXPECT_EQ(wave("str")->beta_c(0.0), 2.0);
-  EXPECT_TRUE(std::isinf(wave("stl")->beta_c(0.0)));
-  EXPECT_TRUE(std::isinf(wave("sqr")->beta_c(0.0)));
-  EXPECT_NEAR(wave("power:3")->beta_c(0.5), 12.0, 1e-14);
+  EXPECT_NEAR(make_contact(*wave("sine"), 1.0).beta_c(), 2 * M_PI, 1e-15);
+  EXPECT_NEAR(make_contact(*wave("sine"), -0.6).beta_c(), 2 * M_PI * 0.8, 1e-14);
+  EXPECT_EQ(make_contact(*wave("tri"), 0.0).beta_c(), 4.0);
+  EXPECT_EQ(make_contact(*wave("str"), 0.0).beta_c(), 2.0);
+  EXPECT_TRUE(std::isinf(make_contact(*wave("stl"), 0.0).beta_c()));
+  EXPECT_TRUE(std::isinf(make_contact(*wave("sqr"), 0.0).beta_c()));
+  EXPECT_NEAR(make_contact(*wave("power:3"), 0.5).beta_c(), 12.0, 1e-14);
 }
 
 TEST(Waveforms, JumpsOnlyWhereTheWaveIsDiscontinuous) {

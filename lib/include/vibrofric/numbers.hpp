@@ -44,15 +44,6 @@ int working_digits10() {
     return std::numeric_limits<Real>::digits10;
 }
 
-// Significant digits that round-trip the type: 17 for double, 21 for x87 long double.
-template <class Real>
-int round_trip_digits10() {
-  if constexpr (is_runtime_precision_v<Real>)
-    return working_digits10<Real>();
-  else
-    return std::numeric_limits<Real>::max_digits10;
-}
-
 // x correctly rounded to `digits` significant digits, in positional notation ("0.0123…") with
 // trailing zeros kept so that the precision stays visible; zero is "0"; values outside
 // [1e-5, 1e15) in scientific notation. The digits come from MPFR's correctly rounded

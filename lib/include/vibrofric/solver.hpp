@@ -372,7 +372,7 @@ class Sweep {
       if (dv > 0) return false;
       if (dd0 > 0) {
         const Real ddv = dd(v);
-        lo = ddv >= 0 ? v : decreasing_slope_root(g, p0, v, dd0, ddv);
+        lo = ddv >= 0 ? v : slope_root(g, p0, v);
       }
       dlo = d(lo);
       if (dlo < 0 && lo > p0) {
@@ -418,23 +418,13 @@ class Sweep {
     }
   }
 
-  // Zero of n' − β on [lo, hi] where n' rises through β (convex segment; Eq. 4).
+  // Zero of n' − β on [lo, hi], where n' crosses β monotonically (Eq. 4, and the top of
+  // n − ramp on a concave segment): the waveform's closed form if it has one, else toms748.
   Real slope_root(const Segment& g, const Real& lo, const Real& hi) {
-    if (auto r = w_.solve_slope(g.piece, beta_)) {
-      ++events_;
-      return *r < lo ? lo : (*r > hi ? hi : *r);
-    }
-    ++events_;
-    return bracketed_root<Real>([&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi,
-                                Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_),
-                                "stick onset n' = β (Eq. 4)", stats_);
-  }
-  Real decreasing_slope_root(const Segment& g, const Real& lo, const Real& hi, const Real& f_lo,
-                             const Real& f_hi) {
     ++events_;
     if (auto r = w_.solve_slope(g.piece, beta_)) return *r < lo ? lo : (*r > hi ? hi : *r);
     return bracketed_root<Real>([&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi,
-                                f_lo, f_hi, "maximum of n − ramp", stats_);
+                                Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_), "n' = beta (Eq. 4)", stats_);
   }
 
   void open_stick(const Real& at, const Real& shift, const Real& level) {

@@ -161,25 +161,6 @@ class Waveform {
         "contact boundary (γ + w = 0)", stats);
   }
 
-  // Largest rising slope of n = max(γ + w, 0) (Eq. 6, model.md): +∞ if n jumps upward.
-  Real beta_c(const Real& gamma) const {
-    detail::RootStats stats;
-    Real best = 0;
-    const std::size_t m = piece_count();
-    for (std::size_t i = 0; i < m; ++i) {
-      const std::size_t prev = (i + m - 1) % m;
-      const Real left = gamma + end_value_[prev];
-      const Real right = gamma + begin_value_[i];
-      if (jump_[i] && right > 0 && right > left) return std::numeric_limits<Real>::infinity();
-      Real c0, c1;
-      if (!contact_part(i, gamma, c0, c1, stats)) continue;
-      using std::max;
-      best = max(best, max(c0 == begins_[i] ? begin_slope_[i] : slope(i, c0),
-                           c1 == ends_[i] ? end_slope_[i] : slope(i, c1)));
-    }
-    return best;
-  }
-
  protected:
   explicit Waveform(std::string name) : name_(std::move(name)) {}
 
@@ -284,9 +265,6 @@ class Sine final : public Waveform<Real> {
  private:
   static Real two_pi() { return boost::math::constants::two_pi<Real>(); }
 
-  // sin 2πφ and cos 2πφ from the nearest quarter period: φ = k/4 + r, |r| ≤ 1/8, r exact
-  // (Sterbenz). Exact at the quarters, accurate near the extrema, and it spares MPFR the
-  // hard-to-round arguments next to multiples of π/2.
   // sin and cos 2πφ of the last phases asked for on this thread (at this precision): value,
   // slope and antiderivative at one event then cost one sin_cos. Every Sine is the same
   // function, so the cache needs no owner.
@@ -308,7 +286,9 @@ class Sine final : public Waveform<Real> {
     e.sc = sin_cos_2pi(phi);
     return e.sc;
   }
-  Real sin_2pi(const Real& phi) const { return quarter(phi, 0); }
+  // sin 2πφ and cos 2πφ from the nearest quarter period: φ = k/4 + r, |r| ≤ 1/8, r exact
+  // (Sterbenz). Exact at the quarters, accurate near the extrema, and it spares MPFR the
+  // hard-to-round arguments next to multiples of π/2.
   std::pair<Real, Real> sin_cos_2pi(const Real& phi) const {
     using std::floor;
     const Real k = floor(4 * phi + Real(1) / 2);
@@ -322,24 +302,6 @@ class Sine final : public Waveform<Real> {
       case 1: return {c, Real(-s)};
       case 2: return {Real(-s), Real(-c)};
       default: return {Real(-c), s};
-    }
-  }
-  Real cos_2pi(const Real& phi) const { return quarter(phi, 1); }
-  Real quarter(const Real& phi, int shift) const {
-    using std::cos;
-    using std::floor;
-    using std::sin;
-    const Real k = floor(4 * phi + Real(1) / 2);
-    const Real r = phi - k / 4;
-    long q = (static_cast<long>(k) + shift) % 4;
-    if (q < 0) q += 4;
-    if (r == 0) return q == 0 || q == 2 ? Real(0) : Real(q == 1 ? 1 : -1);
-    const Real x = two_pi_ * r;
-    switch (q) {
-      case 0: return sin(x);
-      case 1: return cos(x);
-      case 2: return -sin(x);
-      default: return -cos(x);
     }
   }
   Real two_pi_ = two_pi();
