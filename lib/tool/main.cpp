@@ -2,6 +2,8 @@
 // (Eqs. 1, 5, 14) and the claims check. Bad input: one line on stderr, exit 2; solver failure: 1.
 #include <unistd.h>
 
+#include <boost/version.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +16,7 @@
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/claims.hpp"
+#include "vibrofric/detail/evaluate_impl.hpp"
 #include "vibrofric/evaluate.hpp"
 #include "vibrofric/physical.hpp"
 
@@ -32,7 +35,12 @@ const char* const kUsage =
     "  psi       Psi_w(beta), non-jumping:   --wave W --beta B\n"
     "  sweep     CSV over beta and gamma:    --wave W --beta FROM:TO:N --gamma G1,G2,...\n"
     "  physical  from physical inputs (SI):  see 'vibrofric physical --help'\n"
-    "  verify    check the paper's claims (Eqs. 6, 13, 17, 18, 19, 21, 22)\n"
+    "  verify    decide every claim of the paper (Eqs. 6-24, Sec. 3, Figs. 3-4) and model.md's beta_c\n"
+    "            table at --digits D (10 to 1000, default 50); --claim KEY for one (e.g. eq24);\n"
+    "            --format json for the report generator\n"
+    "  trace     CSV phi,n,s over one period (Fig. 2): --wave W --beta B --gamma G [--points N]\n"
+    "            (default 1000, plus the ends of every stick phase; --digits D, default 17)\n"
+    "  version   versions of vibrofric, the compiler, Boost, MPFR and GMP\n"
     "\n"
     "precision (mu, psi, sweep, physical):\n"
     "  --digits D   significant digits, 1 to 10000 (default 50), mpfr with guard digits\n"
@@ -67,7 +75,7 @@ struct Args {
 // --name value, --name=value; values may start with '-' (negative numbers).
 Args parse_args(int argc, char** argv, const std::map<std::string, std::set<std::string>>& allowed) {
   Args a;
-  if (argc < 2) throw InputError("missing command: expected mu, psi, sweep, physical or verify (see --help)");
+  if (argc < 2) throw InputError("missing command: expected mu, psi, sweep, physical, verify, trace or version (see --help)");
   a.command = argv[1];
   if (a.command == "--help" || a.command == "-h" || a.command == "help") {
     a.help = true;
@@ -76,7 +84,7 @@ Args parse_args(int argc, char** argv, const std::map<std::string, std::set<std:
   }
   const auto it = allowed.find(a.command);
   if (it == allowed.end())
-    throw InputError("unknown command '" + a.command + "': expected mu, psi, sweep, physical or verify");
+    throw InputError("unknown command '" + a.command + "': expected mu, psi, sweep, physical, verify, trace or version");
   for (int i = 2; i < argc; ++i) {
     std::string tok = argv[i];
     if (tok == "--help" || tok == "-h") {
@@ -235,20 +243,119 @@ int run_physical(const Args& a) {
   return 0;
 }
 
+// s(φ) and n(φ) over one period (the paper's Fig. 2): N equally spaced phases plus both ends of
+// every stick phase, so that a plot shows the kinks where they are.
+int run_trace(const Args& a) {
+  const WaveSpec wave = parse_wave(need(a, "wave"));
+  const std::string beta_text = need(a, "beta"), gamma_text = need(a, "gamma");
+  check_decimal(beta_text, "--beta");
+  check_decimal(gamma_text, "--gamma");
+  const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits) : 17;
+  const int n_points = a.flags.count("points") ? parse_int(a.flags.at("points"), "--points", 2, 1000000) : 1000;
+  PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
+  const auto w = make_waveform<mpfr>(wave);
+  const mpfr beta = parse_real<mpfr>(beta_text, "--beta"), gamma = parse_real<mpfr>(gamma_text, "--gamma");
+  const auto r = solve(*w, beta, gamma);
+  std::vector<mpfr> phis;
+  for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
+  for (const auto& st : r.stick_phases)
+    for (const mpfr& x : {st.begin, st.end}) phis.push_back(x - floor(x));
+  std::sort(phis.begin(), phis.end());
+  phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+  std::cout << "phi,n,s\n";
+  for (const mpfr& phi : phis) {
+    const mpfr v = gamma + (*w)(phi - floor(phi));
+    std::cout << format_significant(phi, digits) << ',' << format_significant(v > 0 ? v : mpfr(0), digits) << ','
+              << format_significant(tangential_force(*w, r, beta, gamma, phi == 1 ? mpfr(0) : phi), digits) << '\n';
+  }
+  return 0;
+}
+
+int run_version() {
+  std::printf("vibrofric %s\n", VIBROFRIC_VERSION);
+#if defined(__clang__)
+  std::printf("compiler clang %s\n", __clang_version__);
+#elif defined(__GNUC__)
+  std::printf("compiler gcc %s\n", __VERSION__);
+#else
+  std::printf("compiler unknown\n");
+#endif
+  std::printf("boost %d.%d.%d\n", BOOST_VERSION / 100000, BOOST_VERSION / 100 % 1000, BOOST_VERSION % 100);
+  std::printf("mpfr %s\n", mpfr_get_version());
+  std::printf("gmp %s\n", gmp_version);
+  return 0;
+}
+
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char ch : text) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    if (static_cast<unsigned char>(ch) < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", ch);
+      out += b;
+      continue;
+    }
+    out += ch;
+  }
+  return out + "\"";
+}
+
+// The catalogue's results for the report generator (reports/generate.py).
+void print_claims_json(const std::vector<ClaimCheck>& checks, int digits) {
+  std::printf("{\"digits\": %d, \"claims\": [", digits);
+  for (std::size_t i = 0; i < checks.size(); ++i) {
+    const auto& c = checks[i];
+    std::printf("%s\n {", i ? "," : "");
+    const std::pair<const char*, std::string> fields[] = {
+        {"key", c.key},         {"id", c.id},         {"source", c.source},       {"statement", c.statement},
+        {"method", c.method},   {"how", c.how},       {"criterion", c.criterion}, {"proof", c.proof},
+        {"worst", c.worst},     {"verdict", verdict_name(c.verdict)}, {"scope", c.scope}, {"corrected", c.corrected}};
+    for (const auto& [k, v] : fields) std::printf("\"%s\": %s, ", k, json_string(v).c_str());
+    std::printf("\"cases\": %zu, \"deviation\": %.3e, \"corrected_deviation\": %.3e, \"measured\": [", c.cases,
+                c.deviation, c.corrected_deviation);
+    for (std::size_t j = 0; j < c.measured.size(); ++j)
+      std::printf("%s[%s, %s]", j ? ", " : "", json_string(c.measured[j].name).c_str(),
+                  json_string(c.measured[j].value).c_str());
+    std::printf("]}");
+  }
+  std::printf("\n]}\n");
+}
+
 int run_verify(const Args& a) {
   const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", 10, 1000) : 50;
-  const auto checks = verify_claims(digits);
-  std::printf("%-8s %-8s %-22s %-10s %s\n", "claim", "cases", "verdict", "deviation", "statement");
-  int failed = 0;
+  if (a.flags.count("format") && a.flags.at("format") != "json" && a.flags.at("format") != "text")
+    throw InputError("--format '" + a.flags.at("format") + "': expected text or json");
+  std::vector<ClaimCheck> checks;
+  if (a.flags.count("claim"))
+    checks.push_back(check_claim(a.flags.at("claim"), digits));
+  else
+    checks = verify_claims(digits);
+  if (a.flags.count("format") && a.flags.at("format") == "json") {
+    print_claims_json(checks, digits);
+    return 0;
+  }
+  std::printf("%-10s %-8s %-20s %-9s %s\n", "claim", "cases", "verdict", "deviation", "statement");
   for (const auto& c : checks) {
     char dev[32];
     std::snprintf(dev, sizeof dev, "%.2e", c.deviation);
-    std::printf("%-8s %-8zu %-22s %-10s %s\n", c.id.c_str(), c.cases, verdict_name(c.verdict).c_str(), dev, c.statement.c_str());
-    if (c.verdict == Verdict::fails) ++failed;
+    std::printf("%-10s %-8zu %-20s %-9s %s\n", c.id.c_str(), c.cases, verdict_name(c.verdict).c_str(), dev,
+                c.statement.c_str());
   }
-  std::printf("\nrequested precision: %d digits (holds: deviation <= 1e-%d; holds approximately: <= 1e-3)\n", digits, digits);
-  std::printf("worst cases:\n");
-  for (const auto& c : checks) std::printf("  %-8s %s\n", c.id.c_str(), c.worst.c_str());
+  std::printf("\nrequested precision: %d digits\n", digits);
+  for (const auto& c : checks) {
+    std::printf("\n%s (%s, %s) — %s\n", c.id.c_str(), c.key.c_str(), c.source.c_str(), verdict_name(c.verdict).c_str());
+    std::printf("  method:    %s%s\n", c.method.c_str(), c.proof.empty() ? "" : (" (" + c.proof + ")").c_str());
+    std::printf("  checked:   %s\n", c.how.c_str());
+    std::printf("  criterion: %s\n", c.criterion.c_str());
+    std::printf("  worst:     %s\n", c.worst.c_str());
+    if (!c.scope.empty()) std::printf("  scope:     %s\n", c.scope.c_str());
+    if (!c.corrected.empty()) {
+      std::printf("  corrected: %s\n", c.corrected.c_str());
+      if (c.corrected_deviation >= 0) std::printf("             largest deviation %.2e\n", c.corrected_deviation);
+    }
+    for (const auto& m : c.measured) std::printf("  measured:  %s: %s\n", m.name.c_str(), m.value.c_str());
+  }
   return 0;
 }
 
@@ -265,7 +372,9 @@ int main(int argc, char** argv) {
       {"psi", with({"wave", "beta"})},
       {"sweep", with({"wave", "beta", "gamma", "threads"})},
       {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "mu0"})},
-      {"verify", {"digits"}},
+      {"verify", {"digits", "claim", "format"}},
+      {"trace", {"wave", "beta", "gamma", "points", "digits"}},
+      {"version", {}},
   };
   try {
     const Args a = parse_args(argc, argv, allowed);
@@ -277,6 +386,8 @@ int main(int argc, char** argv) {
     if (a.command == "psi") return run_mu_psi(a, Quantity::psi);
     if (a.command == "sweep") return run_sweep(a);
     if (a.command == "physical") return run_physical(a);
+    if (a.command == "trace") return run_trace(a);
+    if (a.command == "version") return run_version();
     return run_verify(a);
   } catch (const InputError& e) {
     std::cerr << "vibrofric: " << e.what() << '\n';

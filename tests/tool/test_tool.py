@@ -16,6 +16,7 @@ determinism of sweep, and physical's mu_over_mu0 against mu at the same beta and
 import decimal
 import math
 import os
+import json
 import re
 import subprocess
 import sys
@@ -264,6 +265,11 @@ def bad_input_tests():
         ["missing"])
     bad("verify digits=5", ["verify", "--digits", "5"], ["5"], ["digits"])
     bad("verify unknown flag --wave", ["verify", "--wave", "sine"], ["--wave"])
+    bad("verify unknown claim", ["verify", "--claim", "eq99"], ["eq99", "eq24"])
+    bad("verify unknown format", ["verify", "--format", "xml"], ["xml"], ["--format"])
+    bad("trace beta not a number", ["trace", "--wave", "sine", "--beta", "x", "--gamma", "0"], ["x"], ["--beta"])
+    bad("trace points 1", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0", "--points", "1"], ["1"], ["--points"])
+    bad("trace no contact", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "-1"], ["-1"], ["gamma"])
 
     # sweep ranges and gamma lists
     sw = ["sweep", "--wave", "sine"]
@@ -519,19 +525,47 @@ def format_tests():
     test("help: vibrofric mu --help exits 0 with usage on stdout", help_mu)
 
     def verify():
-        out = ok_run(["verify"])
+        out = ok_run(["verify", "--digits", "20"])
         rows = {}
         for line in out.splitlines():
-            m = re.match(r"(Eq\. \d+)\s+(\d+)\s+(holds approximately|holds|fails)\s", line)
+            m = re.match(r"(Eq\. [\d-]+|Sec\. 3|Fig\. \d[a-c]?|beta_c)\s+(\d+)\s+(holds approximately|holds|fails)\s", line)
             if m:
                 rows.setdefault(m.group(1), []).append((int(m.group(2)), m.group(3)))
-        missing = [e for e in ("6", "13", "17", "18", "19", "21", "22") if "Eq. " + e not in rows]
+        want = ["Eq. 6", "Eq. 13", "Eq. 17", "Eq. 18", "Eq. 19", "Eq. 20-21", "Eq. 22", "Eq. 23", "Eq. 24",
+                "Sec. 3", "Fig. 3", "Fig. 4a", "Fig. 4b", "Fig. 4c", "beta_c"]
+        missing = [e for e in want if e not in rows]
         if missing:
-            raise Fail("vibrofric verify has no row for Eq. %s; output:\n%s" % (", ".join(missing), out))
+            raise Fail("vibrofric verify has no row for %s; output:\n%s" % (", ".join(missing), out))
         empty = [k for k, v in rows.items() if any(n == 0 for n, _ in v)]
         if empty:
             raise Fail("vibrofric verify checked 0 cases for %s" % empty)
-    test("verify exits 0 with a row for Eqs. 6, 13, 17, 18, 19, 21, 22", verify)
+        one = ok_run(["verify", "--digits", "20", "--claim", "eq22"])
+        if not re.search(r"^Eq\. 22\s+\d+\s+holds\s", one, re.M) or "Eq. 6 " in one:
+            raise Fail("vibrofric verify --claim eq22 printed:\n" + one)
+        doc = json.loads(ok_run(["verify", "--digits", "20", "--claim", "eq24", "--format", "json"]))
+        c = doc["claims"][0]
+        if doc["digits"] != 20 or c["key"] != "eq24" or c["verdict"] != "fails" or not c["corrected"] \
+                or not (0 <= c["corrected_deviation"] <= 1e-20) or not c["measured"]:
+            raise Fail("vibrofric verify --format json: unexpected %r" % c)
+    test("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
+
+    def trace():
+        out = ok_run(["trace", "--wave", "triangle", "--beta", "1", "--gamma", "3", "--points", "8", "--digits", "20"])
+        rows = [[decimal.Decimal(x) for x in line.split(",")] for line in out.strip().splitlines()[1:]]
+        phis = [r[0] for r in rows]
+        if phis != sorted(set(phis)) or phis[0] != 0 or phis[-1] != 1:
+            raise Fail("trace phases not increasing from 0 to 1: %r" % phis)
+        # Triangle, gamma = 3, beta = 1 < 4: s <= n everywhere, and s = n somewhere (slip) and s < n (stick).
+        if any(r[2] > r[1] for r in rows) or not any(r[2] == r[1] for r in rows) or not any(r[2] < r[1] for r in rows):
+            raise Fail("trace violates s <= n or has no stick/slip: %r" % rows)
+    test("trace: phases sorted over one period, s <= n, both stick and slip present", trace)
+
+    def version():
+        out = ok_run(["version"])
+        for word in ("vibrofric", "boost 1.81", "mpfr", "gmp", "compiler"):
+            if word not in out:
+                raise Fail("vibrofric version lacks %r: %r" % (word, out))
+    test("version names vibrofric, compiler, Boost 1.81, MPFR and GMP", version)
 
 
 def sweep_tests():

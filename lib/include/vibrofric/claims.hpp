@@ -1,6 +1,10 @@
-// The paper's claims (model.md, "The paper's claims that the suite verifies"), each decided by
-// the high-precision solver: Eq. 6, 13, 17, 18, 19, 21, 22.
+// The claims catalogue: one entry per claim of model.md ("The paper's claims that the suite
+// verifies": Eqs. 6, 13, 17, 18, 19, 20–21, 22, 23, 24, Sec. 3, Fig. 3, Fig. 4), plus the
+// statements of model.md itself that the suite found to need correction (β_c table). Each entry
+// says how the claim is checked; its check runs the high-precision solver and returns the measured
+// deviation and the verdict. A claim is never adjusted to fit: the verdict is what is measured.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -8,23 +12,49 @@ namespace vibrofric {
 
 enum class Verdict {
   holds,                // deviation within the requested precision
-  holds_approximately,  // deviation small but above the requested precision (size reported)
-  fails,                // counterexample given
+  holds_approximately,  // the statement is approximate (or asymptotic); its measured size is reported
+  fails,                // a counterexample is given, with the statement the solver and a proof support
 };
 std::string verdict_name(Verdict v);
 
-struct ClaimCheck {
-  std::string id;         // the paper's equation, e.g. "Eq. 17"
-  std::string statement;  // as the paper makes it
-  std::string method;     // how it is checked, with the number of cases
-  int digits = 0;         // requested precision; the solver runs with guard digits beyond
-  double deviation = 0;   // largest relative deviation over the cases (0: exact)
-  std::string worst;      // the case with the largest deviation
-  Verdict verdict = Verdict::holds;
-  std::size_t cases = 0;
+// A measured value that the verdict rests on, beyond the largest deviation.
+struct Measurement {
+  std::string name;   // e.g. "gamma_min(beta = 1)"
+  std::string value;  // as printed, e.g. "0.5876"
 };
 
-// Deviation at or below 10^-digits: holds; at or below 1e-3: holds approximately; else fails.
+struct ClaimCheck {
+  std::string key;        // short name for tests and the command line, e.g. "eq24"
+  std::string id;         // the paper's label, e.g. "Eq. 24"
+  std::string source;     // "paper" or "model.md"
+  std::string statement;  // as the paper (or model.md) makes it
+  std::string method;     // symbolic proof / high-precision comparison / independent method
+  std::string how;        // what the check computes, with its grid
+  std::string criterion;  // how the verdict follows from the numbers
+  std::string proof;      // derivation in proofs/ ("" if none)
+  int digits = 0;         // requested precision; the solver runs with guard digits beyond
+  std::size_t cases = 0;
+  double deviation = 0;   // largest deviation of the statement as made (relative unless stated)
+  std::string worst;      // the case with the largest deviation (the counterexample if it fails)
+  Verdict verdict = Verdict::holds;
+  std::string scope;      // where the verdict holds, when that is part of it (e.g. a β range)
+  std::string corrected;  // the statement the solver and a proof support, when it differs
+  double corrected_deviation = -1;  // its largest measured deviation (−1: no corrected statement)
+  std::vector<Measurement> measured;
+};
+
+struct ClaimEntry {
+  std::string key, id, source, statement, method, proof;
+  ClaimCheck (*check)(int digits);
+};
+
+// The catalogue, in the order of model.md.
+const std::vector<ClaimEntry>& claims_catalogue();
+
+// One claim by key ("eq6", …, "fig4-scaling"); throws InputError for an unknown key.
+ClaimCheck check_claim(const std::string& key, int digits);
+
+// Every claim at `digits` significant digits (10 to 1000).
 std::vector<ClaimCheck> verify_claims(int digits);
 
 }  // namespace vibrofric

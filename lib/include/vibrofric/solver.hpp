@@ -413,8 +413,11 @@ class Sweep {
         dn_memo_.put(g.piece, x, std::move(sl));
         return d(x);
       };
+      // d is a difference of values of size |γ| + |w| ≤ |γ| + 2 and of the ramp: its rounding.
+      using std::abs;
+      const Real noise = 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
       return polished_root<Real>(d_joint, [&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi, dlo, dhi,
-                                 Real(guess), "stick end (Eq. 8)", stats_);
+                                 Real(guess), noise, "stick end (Eq. 8)", stats_);
     }
   }
 

@@ -60,12 +60,17 @@ Real bracketed_root(F f, const Real& a, const Real& b, const Real& fa, const Rea
 }
 
 // Root of a smooth monotone f in [a, b] (fa, fb of opposite signs) from a close guess: Newton
-// with f' = df, kept inside the bracket (a step that leaves it bisects instead). Stops once a
-// step is below sqrt(eps)/64 relative: quadratic convergence then leaves ~eps. Running out of
-// iterations is a SolverError.
+// with f' = df, safeguarded as in rtsafe (Numerical Recipes §9.4): a step that leaves the bracket,
+// or is not half the step before last, bisects instead — so a flat f (a stick end where the ramp
+// is nearly tangent to n, β → β_c) or rounding noise still shrinks the bracket. Stops once a
+// Newton step is below sqrt(eps)/64 relative (quadratic convergence then leaves ~eps) or the
+// bracket is 4 eps wide, or |f| is below `noise`, the rounding level of f's evaluation (a flat,
+// noisy f has no better root). Running out of iterations is a SolverError.
 template <class Real, class F, class DF>
-Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, const char* what, RootStats& stats) {
+Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, const Real& noise, const char* what,
+                   RootStats& stats) {
   using std::abs;
+  using std::max;
   using std::sqrt;
   if (fa == 0) return a;
   if (fb == 0) return b;
@@ -73,11 +78,12 @@ Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, 
     throw SolverError(std::string(what) + ": no sign change on [" + short_str(a) + ", " + short_str(b) + "]");
   const Real small = sqrt(std::numeric_limits<Real>::epsilon()) / 64;
   if (!(x > a && x < b)) x = (a + b) / 2;
+  Real dx_old = b - a, dx = dx_old;
   ++stats.solves;
   for (std::uintmax_t it = 1; it <= stats.max_iterations; ++it) {
     ++stats.iterations;
     const Real fx = f(x);
-    if (fx == 0) return x;
+    if (abs(fx) <= noise) return x;
     if ((fx > 0) == (fa > 0)) {
       a = x;
       fa = fx;
@@ -85,15 +91,22 @@ Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, 
       b = x;
     }
     const Real d = df(x);
-    Real next = d != 0 ? Real(x - fx / d) : Real((a + b) / 2);
-    if (next == x) return x;  // the step is below the last bit
-    const bool inside = next >= a && next <= b;
-    if (!inside) next = (a + b) / 2;
-    const Real step = abs(next - x);
+    Real next = (a + b) / 2;
+    bool newton = false;
+    if (d != 0) {
+      const Real trial = x - fx / d;
+      if (trial == x) return x;  // the step is below the last bit
+      newton = trial >= a && trial <= b && abs(trial - x) <= abs(dx_old) / 2;
+      if (newton) next = trial;
+    }
+    dx_old = dx;
+    dx = next - x;
     x = next;
     const Real scale = abs(x) > 0 ? abs(x) : Real(1);
-    if (inside && step <= small * scale) return x;
-    if (b - a <= 4 * std::numeric_limits<Real>::epsilon() * scale) return (a + b) / 2;
+    if (newton && abs(dx) <= small * scale) return x;
+    // Phases are absolute: w(φ) near φ = 0 carries rounding of order ε (e.g. 1 − (1 − 4φ)^p), so
+    // a root there is not determined beyond ε·1.
+    if (b - a <= 4 * std::numeric_limits<Real>::epsilon() * max(scale, Real(1))) return (a + b) / 2;
   }
   throw SolverError(std::string(what) + ": Newton iteration did not converge in " +
                     std::to_string(stats.max_iterations) + " iterations on [" + short_str(a) + ", " + short_str(b) + "]");
