@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -53,6 +54,14 @@ const char* const kUsage =
     "  fourier FILE: lines 'k a_k b_k' for w = sum a_k cos(2 pi k phi) + b_k sin(2 pi k phi)\n"
     "  samples FILE: one period of values y_j at phi = j/N, whitespace separated, linear between\n"
     "  ('#' starts a comment in both). User waves are normalised to zero mean and max - min = 2.\n"
+    "\n"
+    "solver controls (mu, psi, sweep):\n"
+    "  --area auto|exact|quadrature  areas from antiderivatives (auto: where the wave has one) or\n"
+    "               tanh-sinh with every event a breakpoint\n"
+    "  --max-iterations N  root-finder budget per event (default 200)\n"
+    "  --max-levels N      tanh-sinh halvings, 4 to 30 (default 15); --quadrature-tolerance T\n"
+    "               (default sqrt(eps) of the working precision)\n"
+    "  A budget the solver cannot meet is an error (exit 1), never a value.\n"
     "\n"
     "exit status: 0 success, 1 solver failure, 2 bad input.\n";
 
@@ -173,6 +182,34 @@ std::vector<std::string> beta_range(const std::string& spec) {
   return out;
 }
 
+// Solver controls (solver.hpp Options): a budget the solver cannot meet is an error, never a value.
+Options parse_solver_options(const Args& a) {
+  Options o;
+  if (a.flags.count("area")) {
+    const std::string& m = a.flags.at("area");
+    if (m == "auto")
+      o.area = AreaMethod::automatic;
+    else if (m == "exact")
+      o.area = AreaMethod::exact;
+    else if (m == "quadrature")
+      o.area = AreaMethod::quadrature;
+    else
+      throw InputError("--area '" + m + "': expected auto, exact or quadrature");
+  }
+  if (a.flags.count("max-iterations"))
+    o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, 100000));
+  if (a.flags.count("max-levels"))
+    o.max_quadrature_levels = static_cast<std::size_t>(parse_int(a.flags.at("max-levels"), "--max-levels", 4, 30));
+  if (a.flags.count("quadrature-tolerance")) {
+    const std::string& t = a.flags.at("quadrature-tolerance");
+    check_decimal(t, "--quadrature-tolerance");
+    const double v = std::strtod(t.c_str(), nullptr);
+    if (!(v > 0 && v < 1)) throw InputError("--quadrature-tolerance = " + t + ": expected a number in (0, 1)");
+    o.quadrature_tolerance = v;
+  }
+  return o;
+}
+
 int run_mu_psi(const Args& a, Quantity q) {
   const WaveSpec wave = parse_wave(need(a, "wave"));
   Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
@@ -180,6 +217,7 @@ int run_mu_psi(const Args& a, Quantity q) {
   if (q == Quantity::mu) check_decimal(p.gamma, "--gamma");
   BatchOptions opt;
   opt.escalate = !a.flags.count("no-escalate");
+  opt.solver = parse_solver_options(a);
   std::cout << evaluate(wave, q, {p}, parse_precision(a), opt).front() << '\n';
   return 0;
 }
@@ -195,6 +233,7 @@ int run_sweep(const Args& a) {
     for (const auto& b : betas) points.push_back({b, g});
   BatchOptions opt;
   opt.escalate = !a.flags.count("no-escalate");
+  opt.solver = parse_solver_options(a);
   opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
   std::mutex m;
   if (isatty(2))
@@ -228,7 +267,10 @@ int run_physical(const Args& a) {
   // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine).front();
+  BatchOptions options;
+  options.escalate = !a.flags.count("no-escalate");
+  options.solver = parse_solver_options(a);
+  const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
   const mpfr mu = mpfr(ratio_fine) * in.mu0;
   auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
@@ -362,7 +404,8 @@ int run_verify(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::set<std::string> prec{"digits", "type", "no-escalate"};
+  const std::set<std::string> prec{"digits", "type", "no-escalate", "area", "max-iterations", "max-levels",
+                                   "quadrature-tolerance"};
   auto with = [&](std::set<std::string> s) {
     s.insert(prec.begin(), prec.end());
     return s;

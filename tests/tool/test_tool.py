@@ -907,6 +907,64 @@ def double_accuracy_tests():
                 test("double-accuracy %s beta=%s gamma=%s" % (w, b, g), fn)
 
 
+def solver_failure(name, args, words):
+    """A budget the solver cannot meet: exit 1, one line naming what failed, nothing on stdout."""
+    def fn():
+        rc, out, err = run(args)
+        problems = []
+        if rc != 1:
+            problems.append("exit %d, expected 1" % rc)
+        if out != "":
+            problems.append("stdout not empty: %r" % out[:200])
+        if not (err.endswith("\n") and err.count("\n") == 1):
+            problems.append("stderr is not exactly one line")
+        for w in words:
+            if w not in err:
+                problems.append("message lacks %r" % w)
+        if problems:
+            raise Fail("%s: %s; stderr was %r" % (cmd(args), "; ".join(problems), err))
+    test("failure-is-error " + name, fn)
+
+
+def failure_tests():
+    fourier = write("three_harmonics.txt", "1 0.3 1\n2 0.2 0\n3 0 0.4\n")
+    base = ["--beta", "0.5", "--gamma", "0.2"]
+    # Contact boundaries of a Fourier wave need the bracketed root finder (no closed form).
+    solver_failure("fourier root budget 1", ["mu", "--wave", "fourier:" + fourier] + base + ["--max-iterations", "1"],
+                   ["did not converge", "1 iterations", "gamma = 0.2"])
+    # The sine's stick end is Newton-polished: one iteration is not enough.
+    solver_failure("sine Newton budget 1", ["mu", "--wave", "sine"] + base + ["--max-iterations", "1"],
+                   ["Eq. 8", "did not converge"])
+    solver_failure("sweep root budget 1", ["sweep", "--wave", "sine", "--beta", "0.1:1:5", "--gamma", "0.2",
+                                           "--max-iterations", "1"], ["did not converge"])
+    for t in ("double", "long-double", "cpp_bin_float_50"):
+        solver_failure("%s root budget 1" % t, ["mu", "--wave", "sine", "--type", t] + base + ["--max-iterations", "1"],
+                       ["did not converge"])
+    # An impossible quadrature tolerance within 4 halvings.
+    solver_failure("quadrature tolerance 1e-300 in 4 levels",
+                   ["mu", "--wave", "sine"] + base + ["--area", "quadrature", "--quadrature-tolerance", "1e-300",
+                                                      "--max-levels", "4"], ["tanh-sinh", "did not converge"])
+    solver_failure("psi quadrature tolerance 1e-300",
+                   ["psi", "--wave", "triangle", "--beta", "1", "--area", "quadrature", "--quadrature-tolerance",
+                    "1e-300", "--max-levels", "4"], ["did not converge"])
+    bad("area unknown", ["mu", "--wave", "sine"] + base + ["--area", "simpson"], ["simpson"], ["--area"])
+    bad("max-levels 3 (Boost's tanh-sinh needs 4)", ["mu", "--wave", "sine"] + base + ["--max-levels", "3"], ["3"],
+        ["--max-levels"])
+    bad("max-iterations 0", ["mu", "--wave", "sine"] + base + ["--max-iterations", "0"], ["0"], ["--max-iterations"])
+    bad("quadrature-tolerance 0", ["mu", "--wave", "sine"] + base + ["--quadrature-tolerance", "0"], ["0"],
+        ["--quadrature-tolerance"])
+    bad("quadrature-tolerance nan", ["mu", "--wave", "sine"] + base + ["--quadrature-tolerance", "nan"], ["nan"],
+        ["--quadrature-tolerance"])
+
+    def generous_budget_agrees():
+        a = ["mu", "--wave", "sine"] + base + ["--digits", "30"]
+        exact = ok_run(a).strip()
+        quad = ok_run(a + ["--area", "quadrature", "--max-iterations", "1000", "--max-levels", "20"]).strip()
+        if exact != quad:
+            raise Fail("exact %s, quadrature %s" % (exact, quad))
+    test("failure-is-error: generous budgets give the exact-area value (control)", generous_budget_agrees)
+
+
 def main():
     t0 = time.time()
     bad_input_tests()
@@ -914,6 +972,7 @@ def main():
     value_tests()
     physical_tests()
     double_accuracy_tests()
+    failure_tests()
     print("# %.1f s" % (time.time() - t0))
     print("%d passed, %d failed" % (passed, failed))
     return 1 if failed else 0

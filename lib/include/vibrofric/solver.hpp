@@ -166,6 +166,9 @@ namespace detail {
 template <class Real>
 boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
   using Q = boost::math::quadrature::tanh_sinh<Real>;
+  // Boost 1.81's tanh_sinh builds its first rows unconditionally: fewer than 4 levels crash it.
+  if (levels < 4)
+    throw InputError("max_quadrature_levels = " + std::to_string(levels) + ": expected at least 4 (tanh-sinh)");
   thread_local std::map<std::pair<int, std::size_t>, std::unique_ptr<Q>> cache;
   const auto key = std::make_pair(working_digits10<Real>(), levels);
   auto& slot = cache[key];
