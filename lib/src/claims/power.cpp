@@ -58,6 +58,13 @@ ClaimCheck eq24(int digits) {
     c.measure("counterexample p = 3: mu(1/2, -7/8) / mu(xi = 1, 0) printed / mu(xi = 2, 0) self-similar",
               str(mu, 15) + " / " + str(mu_printed, 15) + " / " + str(mu_true, 15));
   }
+  // The smallest counterexample: p = 1 (the triangle), β = 1, γ = −1/2, γ0 = 0. True μ̄ = 2/5 (Eq. 18:
+  // no γ dependence); the printed ξ = β·(1/(1/2))^1 = 2 gives μ̄(2, 0) = 2/3.
+  {
+    Solver s("power:1", digits);
+    c.measure("smallest counterexample p = 1: mu(1, -1/2) / mu(xi = 2, 0) printed (exact 2/5 and 2/3)",
+              str(s.mu(Real(1), num("-0.5")), 15) + " / " + str(s.mu(Real(2), Real(0)), 15));
+  }
   // p = 1 is the triangle (shifted by 1/4): the self-similar exponent 0 is Eq. 18, μ = 2β/(4 + β).
   {
     Solver s("power:1", digits);
