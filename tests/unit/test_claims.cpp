@@ -39,13 +39,13 @@ const std::map<std::string, Expected>& established() {
       {"eq23", {Verdict::holds_approximately, "sine cap = parabola + O((1+gamma)^2)"}},
       // The scaling proof gives the exponent (p − 1)/p, which is 1/p only for p = 2.
       {"eq24", {Verdict::fails, "proofs/eq24_power_remap.md"}},
-      {"sec3", {Verdict::holds, "derived slope sum L_i^2/(2 int n), static.cpp"}},
+      {"sec3", {Verdict::holds, "proofs/sec3_static.md"}},
       {"fig3", {Verdict::holds, "Eq. 22, proofs/eq21_22_square.md"}},
       {"fig4-bunching", {Verdict::holds_approximately, "qualitative statement, measured"}},
       {"fig4-minimum", {Verdict::holds_approximately, "qualitative statement, measured"}},
       {"fig4-scaling", {Verdict::holds_approximately, "qualitative statement, measured"}},
       // model.md's table is β_c for γ ≥ 0; below, the steepest rise is at first contact.
-      {"beta-c", {Verdict::fails, "proofs/eq6_beta_c.md"}},
+      {"beta-c", {Verdict::fails, "proofs/beta_c_sine.md"}},
   };
   return e;
 }

@@ -17,6 +17,7 @@ std::string verdict_name(Verdict v) {
 namespace {
 const char* const kHighPrecision = "high-precision comparison";
 const char* const kProofAndHP = "symbolic proof + high-precision comparison";
+const char* const kDerivationAndHP = "written derivation + high-precision comparison";
 }  // namespace
 
 const std::vector<ClaimEntry>& claims_catalogue() {
@@ -42,7 +43,8 @@ const std::vector<ClaimEntry>& claims_catalogue() {
       {"eq24", "Eq. 24", "paper",
        "power law of order n: mu(beta, gamma) = mu(xi_n, gamma0), xi_n = beta ((1+gamma0)/(1+gamma))^(1/n)", kProofAndHP,
        "proofs/eq24_power_remap.md", eq24},
-      {"sec3", "Sec. 3", "paper", "jumping case: the static coefficient of friction is zero", kHighPrecision, "", sec3},
+      {"sec3", "Sec. 3", "paper", "jumping case: the static coefficient of friction is zero", kDerivationAndHP,
+       "proofs/sec3_static.md", sec3},
       {"fig3", "Fig. 3", "paper", "square-wave mu(beta) for 11 values of gamma from 1 to -1 (Eq. 22)", kHighPrecision,
        "proofs/eq21_22_square.md", fig3},
       {"fig4-bunching", "Fig. 4a", "paper",
@@ -55,7 +57,7 @@ const std::vector<ClaimEntry>& claims_catalogue() {
        "harmonic: from about gamma = -0.3 on, mu is roughly parabolic and follows Eq. 23 (black dots)", kHighPrecision,
        "", fig4_scaling},
       {"beta-c", "beta_c", "model.md", "beta_c = 2 pi (sine), 4 (triangle), 2 (str), 4p (power:p), infinite (stl, square)",
-       kHighPrecision, "proofs/eq6_beta_c.md", beta_c_table},
+       kDerivationAndHP, "proofs/beta_c_sine.md", beta_c_table},
   };
   return list;
 }

@@ -162,7 +162,7 @@ ClaimCheck beta_c_table(int digits) {
     const Real p = rows[i].wave ? Real(0) : rows[i].table / 4;
     Solver s(wave, digits);
     for (const Real& gamma : reals({"3", "1", "0.5", "0", "-0.3", "-0.6", "-0.9", "-0.99"})) {
-      // The corrected formula, derived in proofs/eq6_beta_c.md: below γ = 0 the steepest rise is at first contact.
+      // The corrected formula, derived in proofs/beta_c_sine.md: below γ = 0 the steepest rise is at first contact.
       Real corrected = rows[i].table;
       if (gamma < 0 && wave == "sine") corrected = 2 * pi * sqrt(1 - gamma * gamma);
       if (gamma < 0 && !rows[i].wave) corrected = 4 * p * pow(1 + gamma, (p - 1) / p);
