@@ -1,0 +1,97 @@
+// Speed of the double paths: the closed forms (where the wave has one), the solver in double as
+// computed ("raw"), the guaranteed double path of evaluate.hpp (escalation ladder double →
+// long double → mpfr, decimal in and out), the second algorithm (grid envelope) and the
+// time-stepping baseline.
+#include <cstdlib>
+
+#include "common.hpp"
+#include "ladder.hpp"
+#include "speed.hpp"
+#include "vibrofric/baseline.hpp"
+#include "vibrofric/evaluate.hpp"
+#include "vibrofric/grid_envelope.hpp"
+
+namespace vibrofric::bench {
+namespace {
+
+void BM_closed_form(benchmark::State& state, const std::string& wave) {
+  const WaveKind kind = parse_wave(wave).kind;
+  const std::vector<Input> in = speed_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    double beta = in[i].beta, gamma = in[i].gamma;
+    benchmark::DoNotOptimize(beta);  // keep the inputs opaque: no constant folding
+    benchmark::DoNotOptimize(gamma);
+    benchmark::DoNotOptimize(closed_form_mu(kind, beta, gamma));
+    if (++i == in.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// evaluate() with one point per call, as a caller of the string API (or `vibrofric mu --type
+// double`) pays: parsing, the double solve, the escalation where the rounding bound asks for it,
+// and the correctly rounded 17-digit output. Inputs are given in their shortest decimal form
+// ("0.25"), as a user types them (the decimal parser costs more for long strings).
+void BM_guaranteed_double(benchmark::State& state, const std::string& wave) {
+  const WaveSpec spec = parse_wave(wave);
+  std::vector<std::vector<Point>> in;
+  for (const Input& p : speed_inputs()) in.push_back({Point{shortest_decimal(p.beta), shortest_decimal(p.gamma)}});
+  Precision precision;
+  precision.type = NumberType::float64;
+  BatchOptions options;
+  options.threads = 1;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto out = evaluate(spec, Quantity::mu, in[i], precision, options);
+    benchmark::DoNotOptimize(out.data());
+    if (++i == in.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+  rung_counters(state, wave, speed_inputs());
+}
+
+void BM_grid_envelope(benchmark::State& state, const std::string& wave) {
+  const auto w = make_waveform<double>(parse_wave(wave));
+  const std::vector<Input> in = speed_inputs();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto r = grid_envelope(*w, in[i].beta, in[i].gamma, grid_points);
+    benchmark::DoNotOptimize(r.mu);
+    if (++i == in.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["points"] = grid_points;
+}
+
+void BM_baseline(benchmark::State& state, const std::string& wave) {
+  const auto w = make_waveform<double>(parse_wave(wave));
+  const std::vector<Input> in = speed_inputs();
+  BaselineOptions opt;
+  opt.steps = baseline_steps;
+  std::size_t i = 0, periods = 0;
+  for (auto _ : state) {
+    const auto r = simulate_spring(*w, in[i].beta, in[i].gamma, opt);
+    benchmark::DoNotOptimize(r.mu);
+    periods += r.periods;
+    if (++i == in.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["steps"] = baseline_steps;
+  state.counters["periods_mean"] = state.iterations() ? double(periods) / double(state.iterations()) : 0.0;
+}
+
+}  // namespace
+
+void register_speed_double() {
+  for (const auto& wave : waves()) {
+    const std::string prefix = "speed/" + wave + "/";
+    if (has_closed_form(parse_wave(wave).kind))
+      speed_settings(benchmark::RegisterBenchmark((prefix + "closed_form_double").c_str(), BM_closed_form, wave));
+    speed_settings(benchmark::RegisterBenchmark((prefix + "solver_double").c_str(), BM_solver<double>, wave, 0));
+    speed_settings(benchmark::RegisterBenchmark((prefix + "guaranteed_double").c_str(), BM_guaranteed_double, wave));
+    speed_settings(benchmark::RegisterBenchmark((prefix + "grid_envelope_double").c_str(), BM_grid_envelope, wave));
+    speed_settings(benchmark::RegisterBenchmark((prefix + "baseline_double").c_str(), BM_baseline, wave));
+  }
+}
+
+}  // namespace vibrofric::bench
