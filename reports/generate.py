@@ -432,7 +432,7 @@ def main():
     for wave, g, name, mx, rms, wb in ulp_summary:
         w("| %s | %s | %s | %.3g | %.3g | %s |" % (wave, g, name, mx, rms, wb))
     w("")
-    bench_section(w, a.bench_json)
+    bench_section(w, a.bench_json, r)
     w("## Reproduce")
     w("")
     w("On Debian 12, from a clone (the README's main command):")
@@ -452,7 +452,7 @@ def readme_command(marker):
     return "\n".join(lines[start:lines.index("```", start)])
 
 
-def bench_section(w, path):
+def bench_section(w, path, r):
     w("## Accuracy and speed (benchmarks)")
     w("")
     if not os.path.exists(path):
@@ -461,35 +461,44 @@ def bench_section(w, path):
         w("")
         return
     doc = json.load(open(path))
-    w("From [`%s`](../%s) (see [bench/README.md](../bench/README.md) for how it was measured)." %
-      (os.path.relpath(path, ROOT), os.path.relpath(path, ROOT)))
+    meta = doc.get("vibrofric", {})
+    before = meta.get("machine_before", {})
+    w("From [`%s`](../%s), written by `bench/run` (Google Benchmark; see [bench/README.md](../bench/README.md) for "
+      "the paths, the grid and its corners, and how the references are made and checked), started %s at commit "
+      "`%s`%s, mode %s. Errors are in ulp (ε) of the type against mpfr at twice its digits or more." % (
+          os.path.relpath(path, ROOT), os.path.relpath(path, ROOT), meta.get("started", "?"),
+          str(before.get("git_commit", "?"))[:12], " (dirty)" if before.get("git_dirty") else "",
+          meta.get("mode", "?")))
     w("")
-    benches = doc.get("benchmarks", [])
-    acc = [b for b in benches if "max_ulp" in b]
-    if acc:
-        w("### Accuracy: error in ε (ulp) of the type, against mpfr at twice its digits or more")
+    md = os.path.splitext(path)[0] + ".md"
+    if os.path.exists(md):
+        for line in open(md).read().splitlines():
+            w("#" + line if line.startswith("#") else line)
         w("")
-        w("| benchmark | max (ulp) | RMS (ulp) | worst input |")
-        w("|---|---|---|---|")
-        for b in acc:
-            w("| %s | %.3g | %.3g | %s |" % (b["name"], b["max_ulp"], b.get("rms_ulp", float("nan")), md_escape(b.get("label", ""))))
+    # Cost against digits, from the same JSON.
+    speed = meta.get("summary", {}).get("speed", {})
+    blocks = []
+    for wave, paths in sorted(speed.items()):
+        pts = [(d, paths["solver_mpfr_%d" % d]["cpu_ns"] / 1000.0) for d in (50, 100, 300, 1000)
+               if "solver_mpfr_%d" % d in paths]
+        if pts:
+            blocks.append((wave, pts))
+    if blocks:
+        r.write_data("cost_digits.dat", blocks, "digits cpu_us (solver in mpfr, one evaluation, from %s)" %
+                     os.path.relpath(path, ROOT))
+        plots = ", \\\n     ".join("'%s' index %d using 1:2 with linespoints lw 2 pt 7 title '%s'" %
+                                   ("cost_digits.dat" if i == 0 else "", i, wave) for i, (wave, _) in enumerate(blocks))
+        fig = r.gnuplot("cost_digits", """
+set title 'Cost of one evaluation of μ̄ against working precision (mpfr)'
+set xlabel 'working precision (decimal digits)'
+set ylabel 'CPU time per evaluation (µs)'
+set logscale xy
+set key left top
+plot %s
+""" % plots)
+        w("![Cost against digits](%s)" % fig)
         w("")
-    speed = [b for b in benches if "max_ulp" not in b and b.get("run_type", "iteration") == "iteration"]
-    if speed:
-        w("### Speed")
-        w("")
-        w("| benchmark | time per iteration | unit |")
-        w("|---|---|---|")
-        for b in speed:
-            w("| %s | %.4g | %s |" % (b["name"], b.get("real_time", float("nan")), b.get("time_unit", "")))
-        w("")
-    extra = {k: v for k, v in doc.items() if k not in ("benchmarks", "context")}
-    if extra:
-        w("### Further measurements")
-        w("")
-        w("```")
-        w(json.dumps(extra, indent=1, sort_keys=True))
-        w("```")
+        w("*Cost of one solver evaluation in mpfr against digits, per wave (log–log).*")
         w("")
 
 

@@ -204,6 +204,9 @@ class Sweep {
     r.normal_area = normal_;
     r.lost_area = lost_;
     r.mu = stick_.empty() ? Real(1) : Real(retained_ / normal_);
+    // s ≤ n pointwise, so ∫s ≤ ∫n: a ratio above 1 (seen in double just below β_c at γ → −1) is
+    // rounding, and 1 is nearer the truth.
+    if (r.mu > 1) r.mu = 1;
     r.beta_c = c_.beta_c();
     r.jumping = c_.jumping();
     r.area = method_;

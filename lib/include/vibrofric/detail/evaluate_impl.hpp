@@ -105,7 +105,9 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
     if (w.relative_error <= std::numeric_limits<double>::epsilon() / 4)
       return format_significant(static_cast<double>(w.value), digits);
   }
-  const std::string exact = evaluate_point<mpfr>(fallback, spec, q, p, std::numeric_limits<Real>::max_digits10 + 3, options.solver);
+  // Twice the type's digits: the decimal is then rounded once more, to the type, and a double
+  // rounding needs the value within 10^-(2·max_digits10) of a midpoint (seen at 20 digits).
+  const std::string exact = evaluate_point<mpfr>(fallback, spec, q, p, 2 * std::numeric_limits<Real>::max_digits10 + 3, options.solver);
   return format_significant(parse_real<Real>(exact, "escalated value"), digits);
 }
 

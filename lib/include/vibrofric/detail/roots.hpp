@@ -72,8 +72,10 @@ Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, 
   using std::abs;
   using std::max;
   using std::sqrt;
-  if (fa == 0) return a;
-  if (fb == 0) return b;
+  // A root at a bracket end (e.g. a stick that ends exactly at a peak, sine β = 3, γ = −1/2)
+  // leaves f there at the rounding level: Newton would step past the end and bisect ~100 times.
+  if (abs(fb) <= noise) return b;
+  if (abs(fa) <= noise) return a;
   if ((fa > 0) == (fb > 0))
     throw SolverError(std::string(what) + ": no sign change on [" + short_str(a) + ", " + short_str(b) + "]");
   const Real small = sqrt(std::numeric_limits<Real>::epsilon()) / 64;
