@@ -91,24 +91,48 @@ std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantit
   }
 }
 
-// A fixed-precision type: its own value where the rounding bound allows; for double next the
-// long double value where its bound is below a quarter of double's epsilon (as Boost.Math
-// promotes double); else the mpfr value at the type's round-trip digits, rounded to the type.
+// Ziv's rounding test: x carries an absolute error of at most e; if every number in [x − e, x + e]
+// rounds to the same value of T, that value is the correctly rounded result. x ± e is itself
+// computed in X, so e is widened by two units of X's precision first.
+template <class T, class X>
+bool rounds_alike(const X& x, const X& e) {
+  using std::abs;
+  using std::isfinite;
+  if (!isfinite(x) || !isfinite(e)) return false;
+  const X wide = e + 2 * std::numeric_limits<X>::epsilon() * abs(x);
+  return static_cast<T>(X(x - wide)) == static_cast<T>(X(x + wide));
+}
+
+// A fixed-precision type, correctly rounded: its own value where the rounding bound certifies it;
+// for double next the long double value where its bound does (as Boost.Math promotes double);
+// else mpfr at twice the type's digits and more, until the rounding is certified.
 template <class Real>
 std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
                            const WaveSpec& spec, Quantity q, const Point& p, int digits, const BatchOptions& options) {
+  using std::abs;
   const auto v = compute_point(waves, q, p, options.solver);
-  if (!options.escalate || v.relative_error <= std::numeric_limits<Real>::epsilon())
+  if (!options.escalate || rounds_alike<Real>(v.value, Real(v.relative_error * abs(v.value))))
     return format_significant(v.value, digits);
   if constexpr (std::is_same_v<Real, double>) {
     const auto w = compute_point(wider, q, p, options.solver);
-    if (w.relative_error <= std::numeric_limits<double>::epsilon() / 4)
+    if (rounds_alike<double>(w.value, static_cast<long double>(w.relative_error * abs(w.value))))
       return format_significant(static_cast<double>(w.value), digits);
   }
-  // Twice the type's digits: the decimal is then rounded once more, to the type, and a double
-  // rounding needs the value within 10^-(2·max_digits10) of a midpoint (seen at 20 digits).
-  const std::string exact = evaluate_point<mpfr>(fallback, spec, q, p, 2 * std::numeric_limits<Real>::max_digits10 + 3, options.solver);
-  return format_significant(parse_real<Real>(exact, "escalated value"), digits);
+  // The decimal from evaluate_point is within half a unit of its last digit of the value.
+  int d = 2 * std::numeric_limits<Real>::max_digits10 + 3;
+  for (; d <= 8 * std::numeric_limits<Real>::max_digits10 + 3; d *= 2) {
+    const std::string text = evaluate_point<mpfr>(fallback, spec, q, p, d, options.solver);
+    if constexpr (std::is_floating_point_v<Real>) {
+      PrecisionScope scope(static_cast<unsigned>(d + 10));
+      const mpfr x(text);
+      if (rounds_alike<Real>(x, mpfr(abs(x) * pow(mpfr(10), 1 - d)))) return format_significant(static_cast<Real>(x), digits);
+    } else {
+      return format_significant(parse_real<Real>(text, "escalated value"), digits);
+    }
+  }
+  // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: round the decimal.
+  return format_significant(parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, d, options.solver), "escalated value"),
+                            digits);
 }
 
 template <class Real>
