@@ -188,6 +188,9 @@ class Sweep {
       method_ = w.has_antiderivative() ? AreaMethod::exact : AreaMethod::quadrature;
     if (method_ == AreaMethod::exact && !w.has_antiderivative())
       throw InputError("waveform " + w.name() + " has no antiderivative: use the quadrature area method");
+    if (method_ == AreaMethod::quadrature && opt.max_quadrature_levels < 4)
+      throw InputError("max_quadrature_levels = " + std::to_string(opt.max_quadrature_levels) +
+                       ": expected at least 4 (tanh-sinh)");
   }
 
   Result<Real> run() {

@@ -90,6 +90,22 @@ class FourierSeries final : public Waveform<Real> {
     bool any = false;
     for (unsigned j = 1; j <= max_k_; ++j) any = any || a_[j] != 0 || b_[j] != 0;
     if (!any) throw InputError("Fourier waveform " + this->name() + " has zero amplitude: expected a non-zero coefficient with k ≥ 1");
+    // The normalisation removes the scale: bring the largest coefficient to [1/2, 1) by a power of
+    // two (exact), so that the derivative bounds of the root search neither overflow (1e300 in
+    // double: no cell was ever discarded) nor underflow (1e-300: no extremum found).
+    Real big = 0;
+    for (unsigned j = 1; j <= max_k_; ++j) {
+      using std::abs;
+      big = std::max(big, std::max(Real(abs(a_[j])), Real(abs(b_[j]))));
+    }
+    using std::frexp;
+    using std::ldexp;
+    int e = 0;
+    frexp(big, &e);
+    for (unsigned j = 1; j <= max_k_; ++j) {
+      a_[j] = ldexp(a_[j], -e);
+      b_[j] = ldexp(b_[j], -e);
+    }
 
     detail::RootStats stats;
     const auto extrema = detail::periodic_roots<Real>(
@@ -108,7 +124,7 @@ class FourierSeries final : public Waveform<Real> {
       a_[j] /= scale;
       b_[j] /= scale;
     }
-    this->norm_ = {true, mean, scale};
+    this->norm_ = {true, mean, ldexp(scale, e)};
 
     std::vector<Real> begins{Real(0)};
     std::vector<Real> all(extrema);
@@ -181,8 +197,20 @@ std::unique_ptr<Waveform<Real>> make_samples(std::string name, const std::vector
   const std::size_t n = y.size();
   if (n < 2)
     throw InputError("sampled waveform " + name + " has " + std::to_string(n) + " sample(s): expected at least 2");
-  Real mean = 0, lo = y[0], hi = y[0];
+  // Scale by a power of two (exact) so that the largest |y| is in [1/2, 1): the mean and the range
+  // then neither overflow (samples near ±1e308 in double) nor lose bits (subnormal samples).
+  Real big = 0;
   for (const Real& v : y) {
+    using std::abs;
+    big = std::max(big, Real(abs(v)));
+  }
+  using std::frexp;
+  using std::ldexp;
+  int e = 0;
+  frexp(big, &e);
+  Real mean = 0, lo = ldexp(y[0], -e), hi = lo;
+  for (const Real& raw : y) {
+    const Real v = ldexp(raw, -e);
     mean += v;
     if (v < lo) lo = v;
     if (v > hi) hi = v;
@@ -193,7 +221,7 @@ std::unique_ptr<Waveform<Real>> make_samples(std::string name, const std::vector
   using P = typename PiecewiseLinear<Real>::Piece;
   std::vector<P> pieces;
   for (std::size_t j = 0; j < n; ++j) {
-    const Real y0 = (y[j] - mean) / scale, y1 = (y[(j + 1) % n] - mean) / scale;
+    const Real y0 = (ldexp(y[j], -e) - mean) / scale, y1 = (ldexp(y[(j + 1) % n], -e) - mean) / scale;
     pieces.push_back({Real(j) / n, y0, (y1 - y0) * n});
   }
   struct Sampled final : PiecewiseLinear<Real> {
@@ -201,7 +229,7 @@ std::unique_ptr<Waveform<Real>> make_samples(std::string name, const std::vector
       this->norm_ = norm;
     }
   };
-  return std::make_unique<Sampled>(std::move(name), std::move(pieces), Normalisation<Real>{true, mean, scale});
+  return std::make_unique<Sampled>(std::move(name), std::move(pieces), Normalisation<Real>{true, ldexp(mean, e), ldexp(scale, e)});
 }
 
 }  // namespace vibrofric
