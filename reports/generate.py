@@ -490,6 +490,7 @@ def bench_section(w, path, r):
                                    ("cost_digits.dat" if i == 0 else "", i, wave) for i, (wave, _) in enumerate(blocks))
         fig = r.gnuplot("cost_digits", """
 set title 'Cost of one evaluation of μ̄ against working precision (mpfr)'
+set xrange [40:1200]
 set xlabel 'working precision (decimal digits)'
 set ylabel 'CPU time per evaluation (µs)'
 set logscale xy

@@ -3,6 +3,7 @@ set key box opaque
 set grid
 
 set title 'Cost of one evaluation of μ̄ against working precision (mpfr)'
+set xrange [40:1200]
 set xlabel 'working precision (decimal digits)'
 set ylabel 'CPU time per evaluation (µs)'
 set logscale xy
