@@ -1,0 +1,35 @@
+// Fuzz target: the samples:FILE reader (one period of values y_j, whitespace separated) and what is
+// built from it. The input is the file's contents; malformed and huge files, NaNs, a single sample,
+// constant signals must end in a clean InputError naming the file, and an accepted file must
+// evaluate cleanly and consistently (fuzz_waves.hpp). Cost bound: evaluation for at most 2,000
+// samples.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "fuzz_common.hpp"
+#include "fuzz_waves.hpp"
+#include "vibrofric/catalogue.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace vibrofric;
+  const std::string input(reinterpret_cast<const char*>(data), size);
+  const fuzz::MemFile file(data, size);
+  WaveSpec spec;
+  const auto parsed = fuzz::clean(input, "parse_wave(samples:FILE)", [&] { spec = parse_wave("samples:" + file.path()); });
+  if (parsed != fuzz::Outcome::value) return 0;
+  if (spec.kind != WaveKind::samples || spec.samples.size() < 2) fuzz::finding("accepted samples file with fewer than 2 samples", input);
+  if (spec.samples.size() > 2000) return 0;
+  long double lo = INFINITY, hi = -INFINITY, big = 0;
+  for (const auto& y : spec.samples) {
+    const long double v = std::strtold(y.c_str(), nullptr);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    big = std::max(big, std::fabs(v));
+  }
+  const double kappa = hi > lo ? static_cast<double>(big / ((hi - lo) / 2)) : 1.0;
+  fuzz::check_user_wave(spec, input, kappa);
+  return 0;
+}
