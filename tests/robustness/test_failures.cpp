@@ -487,9 +487,10 @@ TEST(KnownBug, DISABLED_HugePowerExponentIsNotSilentlyWrong) {
 // FourierSeries finds its pieces by subdividing [0, 1) down to 2^-30 cells wherever |f(mid)| is
 // below the Lipschitz bound times half the cell. At a zero of w' (or w'') of multiplicity > 1 the
 // number of cells kept grows like a power of 2^30: a cosine series Σ cos(2πkφ)/k² with an even
-// number of terms has w' = w'' = 0 at φ = 1/2 (a triple zero of w'). Measured: K = 4 takes 1.7 s
-// in double and did not finish in 10 minutes at the default 50 digits; K = 6 2.5 s, K = 10 17 s in
-// double (odd K: milliseconds).
+// number of terms has w' = w'' = 0 at φ = 1/2 (a triple zero of w'). Measured: K = 4 did not finish
+// in 4 minutes in double (f833a76; 1.7 s before it) nor in 10 minutes at the default 50 digits; odd
+// K: milliseconds. Generic series are slow too (LIMITS.md: K = 10 takes 5 s in double, 150 s at 50
+// digits), for the same reason: the Lipschitz bound Σ(2πk)^n·|c_k| is far above |f'| at the roots.
 //   printf '1 1 0\n2 0.25 0\n3 0.111111 0\n4 0.0625 0\n' > f4; vibrofric mu --wave fourier:f4 --beta 1 --gamma 0.5
 TEST(KnownBug, DISABLED_FourierWithADegenerateCriticalPointIsFast) {
   ::testing::FLAGS_gtest_death_test_style = "threadsafe";
