@@ -58,7 +58,7 @@ const char* const kUsage =
     "solver controls (mu, psi, sweep):\n"
     "  --area auto|exact|quadrature  areas from antiderivatives (auto: where the wave has one) or\n"
     "               tanh-sinh with every event a breakpoint\n"
-    "  --max-iterations N  root-finder budget per event (default 200)\n"
+    "  --max-iterations N  root-finder budget per event (default 200 + working bits)\n"
     "  --max-levels N      tanh-sinh halvings, 4 to 30 (default 15); --quadrature-tolerance T\n"
     "               (default sqrt(eps) of the working precision)\n"
     "  A budget the solver cannot meet is an error (exit 1), never a value.\n"

@@ -35,13 +35,21 @@ enum class AreaMethod {
 struct Options {
   AreaMethod area = AreaMethod::automatic;
   // Root finder: stops when the bracket is within 4 ulp; more iterations than this is an error.
-  std::uintmax_t max_root_iterations = 200;
+  // 0: 200 plus the working precision in bits, as a bisection step gains one bit and the
+  // safeguarded Newton bisects on flanks it cannot follow (power:P with P near 10^digits).
+  std::uintmax_t max_root_iterations = 0;
   // tanh-sinh: at most this many halvings; stops when two levels differ by at most
   // quadrature_tolerance·L1 (0: sqrt(eps), after which the error is ~eps as convergence is
   // doubly exponential); not reaching it is an error.
   std::size_t max_quadrature_levels = 15;
   double quadrature_tolerance = 0;
 };
+
+template <class Real>
+std::uintmax_t root_budget(const Options& opt) {
+  if (opt.max_root_iterations > 0) return opt.max_root_iterations;
+  return 200 + static_cast<std::uintmax_t>(std::ceil(working_digits10<Real>() * 3.3219280948873623));
+}
 
 template <class Real>
 struct StickPhase {
@@ -87,7 +95,7 @@ class Contact {
   // Preconditions: γ finite with γ + max w > 0 (checked by solve()).
   Contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) : w_(w), gamma_(gamma) {
     detail::RootStats stats;
-    stats.max_iterations = opt.max_root_iterations;
+    stats.max_iterations = root_budget<Real>(opt);
     const std::size_t pieces = w.piece_count();
     using std::abs;
     using std::max;
@@ -106,15 +114,18 @@ class Contact {
         push(i, a, b, false, jump, false, false);
         continue;
       }
-      if (c0 > a) {
+      // Contact begins (ends) inside the piece where n < 0 at its start (end), even when the
+      // boundary rounds onto the piece end (a flank narrower than the phase's precision).
+      const bool enters = gamma + w.begin_value(i) < 0, leaves = gamma + w.end_value(i) < 0;
+      if (enters) {
         ++boundaries_;
-        push(i, a, c0, false, jump, false, false);
+        if (c0 > a) push(i, a, c0, false, jump, false, false);
       }
-      push(i, c0, c1, true, c0 > a ? false : jump, c0 > a, c1 < b);
+      push(i, c0, c1, true, enters ? false : jump, enters, leaves);
       beta_c_ = max(beta_c_, max(segs_.back().dnu, segs_.back().dnv));
-      if (c1 < b) {
+      if (leaves) {
         ++boundaries_;
-        push(i, c1, b, false, false, false, false);
+        if (c1 < b) push(i, c1, b, false, false, false, false);
       }
     }
     root_solves_ = stats.solves;
@@ -182,7 +193,7 @@ class Sweep {
   Sweep(const Contact<Real>& contact, const Real& beta, const Options& opt)
       : c_(contact), w_(contact.wave()), beta_(beta), gamma_(contact.gamma()), opt_(opt) {
     const Waveform<Real>& w = w_;
-    stats_.max_iterations = opt.max_root_iterations;
+    stats_.max_iterations = root_budget<Real>(opt);
     method_ = opt.area;
     if (method_ == AreaMethod::automatic)
       method_ = w.has_antiderivative() ? AreaMethod::exact : AreaMethod::quadrature;
@@ -199,7 +210,10 @@ class Sweep {
     // Start where n is smallest: there s = n (model.md), so the sweep needs no history.
     s_ = c_.n_min();
     sticking_ = false;
-    for (std::size_t j = 0; j < m; ++j) sweep_segment(segs[(start + j) % m], start + j >= m);
+    for (std::size_t j = 0; j < m; ++j) {
+      prev_ = &segs[(start + j + m - 1) % m];
+      sweep_segment(segs[(start + j) % m], start + j >= m);
+    }
     if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), Real(1));
 
     Result<Real> r;
@@ -318,12 +332,12 @@ class Sweep {
           return;
         }
         if (dn(g, pos) > beta_) {
-          open_stick(pos, shift, n(g, pos));
+          open_stick(pos, shift, n(g, pos), anchor_bound(g, pos));
         } else if (convex && dn(g, g.v) > beta_) {
           const Real t = slope_root(g, pos, g.v);
           add_slip(g, pos, t);
           pos = t;
-          open_stick(pos, shift, n(g, pos));
+          open_stick(pos, shift, n(g, pos), anchor_bound(g, pos));
         } else {
           add_slip(g, pos, g.v);
           s_ = n(g, g.v);
@@ -439,16 +453,35 @@ class Sweep {
                                 Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_), "n' = beta (Eq. 4)", stats_);
   }
 
-  void open_stick(const Real& at, const Real& shift, const Real& level) {
+  // Bound (in eps) of n(φ̂) − n(φ) − β(φ̂ − φ) for a ramp anchored on n at a computed phase φ̂
+  // inside a segment (at a segment's start n is data, or exactly 0 at a contact boundary):
+  // max |n' − β| within the phase error (4 ulp of φ, as the root finders stop) times that error.
+  // n' is monotone on the segment, so the extremes are at the ends of the interval. Near 0 at an
+  // onset by n' = β on a smooth wave (the ramp is tangent); of order 1/eps where n' grows by
+  // orders of magnitude within the phase error, as on the flanks of power:P for P ≳ 1/eps.
+  Real anchor_bound(const Segment& g, const Real& at) {
+    using std::abs;
+    // At a segment's start the anchor is data (a piece end, or n = 0 exactly at first contact)
+    // when the onset belongs there: first contact, or n' rising past β across a kink. After a
+    // smooth join with n' > β already (power:P's flank at φ = 0) the onset was due earlier and
+    // only rounding of the previous segment's search left it here.
+    if (at == g.u && (!prev_->contact || !(prev_->dnv > beta_))) return Real(0);
+    const Real spread = 4 * (1 + abs(at));
+    const Real delta = spread * std::numeric_limits<Real>::epsilon();
+    const Real lo = at - delta < g.u ? g.u : Real(at - delta), hi = at + delta > g.v ? g.v : Real(at + delta);
+    const Real a = abs(dn(g, lo) - beta_), b = abs(dn(g, hi) - beta_);
+    return spread * (a > b ? a : b);
+  }
+
+  void open_stick(const Real& at, const Real& shift, const Real& level, const Real& anchor = Real(0)) {
     using std::abs;
     sticking_ = true;
     a_ = at;
     a_shift_ = shift;
     level_ = level;
-    // The level is a value of n; the anchor phase is rounded. At an onset by n' = β the two
-    // errors cancel to first order (the ramp is tangent to n); at first contact or a jump the
-    // ramp shifts by β times the phase error.
-    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift);
+    // The level is a value of n (or s before a jump); the anchor phase is rounded. The ramp
+    // shifts by β times the phase error, plus `anchor` where the level is n at that phase.
+    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift) + anchor;
     ++events_;
   }
   void close_stick(const Real& at, const Real& shift) {
@@ -538,6 +571,7 @@ class Sweep {
 
   const Contact<Real>& c_;
   const Waveform<Real>& w_;
+  const Segment* prev_ = nullptr;  // the segment swept before the current one
   Real beta_, gamma_;
   Options opt_;
   AreaMethod method_;
@@ -563,6 +597,7 @@ void check_beta(const Waveform<Real>& w, const Real& beta) {
   using std::isfinite;
   if (!(beta > 0) || !isfinite(beta))
     throw InputError("beta = " + short_str(beta) + " for wave " + w.name() + ": expected a finite number > 0");
+  if (const std::string why = w.unresolved(); !why.empty()) throw PrecisionError("wave " + w.name() + ": " + why);
 }
 
 }  // namespace detail

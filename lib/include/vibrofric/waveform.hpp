@@ -115,6 +115,9 @@ class Waveform {
   // Called only when the root exists on the piece; the generic root finder is the fallback.
   virtual std::optional<Real> solve_value(std::size_t, const Real&) const { return std::nullopt; }
   virtual std::optional<Real> solve_slope(std::size_t, const Real&) const { return std::nullopt; }
+  // Why the current working precision cannot resolve this waveform ("" if it can): the solver's
+  // rounding bounds take n' as nearly constant over a phase's rounding error.
+  virtual std::string unresolved() const { return {}; }
 
   // One-sided values and slopes at the piece ends, computed once.
   const Real& begin_value(std::size_t i) const { return begin_value_[i]; }
@@ -381,6 +384,14 @@ class Power final : public Waveform<Real> {
     this->set_pieces({Real(0), q, 2 * q, 3 * q});
   }
   const Real& exponent() const { return p_; }
+  // Near u = 1 (the flanks at φ = 0 and 1/2) n''/n' ≈ 4p: over a phase error of a few ulp n'
+  // changes by a factor exp(16·p·eps), so p·eps must stay small. Above 2^-10/eps (double: p >
+  // 4.4e12) the flank is left to more digits (the ladder escalates; 50 digits: p ≤ 1.9e47).
+  std::string unresolved() const override {
+    if (p_ * std::numeric_limits<Real>::epsilon() * 1024 <= 1) return {};
+    return "power:p with p = " + detail::short_str(p_) + " has flanks (width ~1/p) that " +
+           std::to_string(working_digits10<Real>()) + " digits do not resolve: expected p ≤ 2^-10/eps";
+  }
   double approx_value(std::size_t i, double phi) const override {
     const double up = std::pow(static_cast<double>(distance(i, Real(phi))), pd_);
     return i < 2 ? 1 - up : up - 1;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <optional>
 #include <thread>
 
 #include "vibrofric/evaluate.hpp"
@@ -27,6 +28,7 @@ struct PointValue {
 template <class Real>
 class WaveCache {
  public:
+  using real_type = Real;
   explicit WaveCache(const WaveSpec& spec) : spec_(spec) {}
   const Waveform<Real>& get() {
     auto& slot = by_digits_[working_digits10<Real>()];
@@ -72,7 +74,14 @@ std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantit
     int work = digits + guard_digits(digits);
     for (int attempt = 0; attempt < 8; ++attempt) {
       PrecisionScope scope(static_cast<unsigned>(work));
-      const auto v = compute_point(waves, q, p, opt);
+      PointValue<Real> v;
+      try {
+        v = compute_point(waves, q, p, opt);
+      } catch (const PrecisionError&) {
+        if (attempt == 7 || 2 * work > 4 * max_digits) throw;
+        work *= 2;  // the waveform needs more digits than these (power:P with P ~ 10^work)
+        continue;
+      }
       const Real target = pow(Real(10), -digits) / 2;
       if (v.relative_error <= target) return format_significant(v.value, digits);
       using std::isfinite;
@@ -110,13 +119,21 @@ template <class Real>
 std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
                            const WaveSpec& spec, Quantity q, const Point& p, int digits, const BatchOptions& options) {
   using std::abs;
-  const auto v = compute_point(waves, q, p, options.solver);
-  if (!options.escalate || rounds_alike<Real>(v.value, Real(v.relative_error * abs(v.value))))
-    return format_significant(v.value, digits);
+  // A rung whose precision cannot resolve the waveform (PrecisionError) is not certified.
+  auto rung = [&](auto& cache) -> std::optional<PointValue<typename std::decay_t<decltype(cache)>::real_type>> {
+    try {
+      return compute_point(cache, q, p, options.solver);
+    } catch (const PrecisionError&) {
+      if (!options.escalate) throw;
+      return std::nullopt;
+    }
+  };
+  if (const auto v = rung(waves); v && (!options.escalate || rounds_alike<Real>(v->value, Real(v->relative_error * abs(v->value)))))
+    return format_significant(v->value, digits);
   if constexpr (std::is_same_v<Real, double>) {
-    const auto w = compute_point(wider, q, p, options.solver);
-    if (rounds_alike<double>(w.value, static_cast<long double>(w.relative_error * abs(w.value))))
-      return format_significant(static_cast<double>(w.value), digits);
+    const auto w = rung(wider);
+    if (w && rounds_alike<double>(w->value, static_cast<long double>(w->relative_error * abs(w->value))))
+      return format_significant(static_cast<double>(w->value), digits);
   }
   // The decimal from evaluate_point is within half a unit of its last digit of the value.
   int d = 2 * std::numeric_limits<Real>::max_digits10 + 3;
