@@ -4,8 +4,8 @@
 // model's domain) that names the offending text. Library level: the tool's own exit codes for the
 // same failures are tested in tests/tool/test_tool.py.
 //
-// Library bugs found by this issue: Regression.* (fixed) and KnownBug.DISABLED_* (open, with their
-// reproducers; run them with --gtest_also_run_disabled_tests, remove the prefix when fixed).
+// Library bugs found by this issue are Regression.* tests, each with the reproducer and what the
+// tool printed before the fix.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -18,7 +18,9 @@
 
 #include "common.hpp"
 #include "vibrofric/catalogue.hpp"
+#include "vibrofric/closed_forms.hpp"
 #include "vibrofric/evaluate.hpp"
+#include "vibrofric/grid_envelope.hpp"
 #include "vibrofric/solver.hpp"
 
 namespace {
@@ -356,8 +358,8 @@ TEST(BadInput, LongDecimalIsNotAStackOverflow) {
 }
 
 // ---------------- Library bugs found by issue #7 ----------------
-// Regression.*: fixed in f833a76; the comments describe the bug as it was. KnownBug.DISABLED_*: still
-// open, with their reproducers; run them with --gtest_also_run_disabled_tests, enable when fixed.
+// Regression.*: the first five fixed in f833a76, the last three (samples with an offset, huge
+// power:P, degenerate Fourier critical points) after it; the comments describe each bug as it was.
 
 // detail::integrator() throws InputError for fewer than 4 levels ("bad input", as the tool's
 // --max-levels check says), but Sweep::quad catches every std::exception around it and rethrows
@@ -441,66 +443,111 @@ TEST(Regression, DoubleFourierWithExtremeCoefficients) {
   EXPECT_NO_THROW(evaluate(spec, Quantity::mu, {{"1", "0"}}, {NumberType::float64, 17}));
 }
 
-// make_samples normalises w = (y − mean)/scale at the working precision. With an offset large
-// against the amplitude, κ = max |y|/scale, log10 κ digits cancel in y − mean, and neither the
-// solver's rounding bound nor the guard digits account for it: the tool prints wrong digits
-// without complaint. The three files below describe the same normalised wave (−2/3, 4/3, −2/3),
-// for which μ(β = 3, γ = 2) = 8/9:
+// make_samples normalised w = (y − mean)/scale at the working precision, from samples already
+// rounded to it. With an offset large against the amplitude, log10 κ digits cancel in y − mean
+// (κ = max |y|/scale) and neither the rounding bound nor the guard digits knew: the tool printed
+// wrong digits without complaint. The files below describe the same normalised wave
+// (−2/3, 4/3, −2/3), for which μ(β = 3, γ = 2) = 8/9; before the fix:
 //   printf '1000 1000.001 1000\n' > a; vibrofric mu --wave samples:a --beta 3 --gamma 2 --type double
 //     0.88888888888889295   (8/9 is 0.88888888888888884 in double: 37 ulp off)
 //   printf '1 1.00000001 1\n' > b;      ... --type double      0.88888888888929041 (about 3600 ulp)
 //   printf '1 1.0000000000000000000000000000000000000001 1\n' > c; vibrofric mu --wave samples:c --beta 3 --gamma 2
 //     0.88888888888888888888889609145286789483993882337134  (default 50 digits: 27 of them wrong)
-TEST(KnownBug, DISABLED_IllConditionedSamplesAreCorrectlyRounded) {
-  const std::string eight_ninths_50 = "0.88888888888888888888888888888888888888888888888889";
+// and in double the last two files were "constant". Now the normalisation is done in mpfr from the
+// decimal text with the cancelled digits added, so every type sees the same signal, correctly
+// rounded: 8/9 in every type, rounded by the hardware or by MPFR, is the reference.
+TEST(Regression, IllConditionedSamplesAreCorrectlyRounded) {
+  PrecisionScope scope(60);
+  const std::string want_double = format_significant(8.0 / 9.0, 17);
+  const std::string want_long_double = format_significant(8.0L / 9.0L, std::numeric_limits<long double>::max_digits10);
+  const std::string want_bin50 = format_significant(bin50(8) / 9, 50);
+  const std::string want_mpfr = "0.88888888888888888888888888888888888888888888888889";
   for (const char* contents : {"1000 1000.001 1000\n", "1 1.00000001 1\n", "1 1.00000000000000000001 1\n",
-                               "1 1.0000000000000000000000000000000000000001 1\n"}) {
+                               "1 1.0000000000000000000000000000000000000001 1\n", "7e300 7.0000001e300 7e300\n",
+                               "3e-310 3.0000000000000000000001e-310 3e-310\n"}) {
     const ScratchFile f(contents);
     const WaveSpec spec = parse_wave("samples:" + f.path());
-    // (In double the last two files are constant, a true rejection.)
-    if (std::string(contents).size() < 20) {
-      EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::float64, 17}).front(), "0.88888888888888884") << contents;
-    }
-    EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::mpfr, 50}).front(), eight_ninths_50) << contents;
+    EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::float64, 17}).front(), want_double) << contents;
+    EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::float80, std::numeric_limits<long double>::max_digits10})
+                  .front(),
+              want_long_double)
+        << contents;
+    EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::bin50, 50}).front(), want_bin50) << contents;
+    EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::mpfr, 50}).front(), want_mpfr) << contents;
+  }
+  // Equal decimals written differently are constant in every type; one digit in the 40th place is not.
+  for (NumberType t : {NumberType::float64, NumberType::mpfr}) {
+    const ScratchFile same("3 3.000 0.3e1 30e-1\n");
+    EXPECT_THROW(evaluate(parse_wave("samples:" + same.path()), Quantity::mu, {{"3", "2"}}, {t, 17}), InputError);
+    const ScratchFile differs("3 3.000000000000000000000000000000000000001 3\n");
+    EXPECT_NO_THROW(evaluate(parse_wave("samples:" + differs.path()), Quantity::mu, {{"3", "2"}}, {t, 17}));
   }
 }
 
-// power:P for P beyond about 10^(working digits): the steep flanks (width ~1/P) vanish in rounding,
-// and μ comes out wrong without complaint. As P → ∞ the wave tends to the square wave, and μ(β = 3,
-// γ = 2) → 11/16 = 0.6875 (Ψ → 5/8); what the tool prints:
-//   vibrofric mu --wave power:1e30 --beta 3 --gamma 2 --type double    0.91666666666666663  (P = 1e20: 0.6875)
-//   vibrofric mu --wave power:1e70 --beta 3 --gamma 2                  0.91666…  (50 digits; P = 1e60: 0.6875)
-//   vibrofric psi --wave power:1e30 --beta 3 --type double             0.16666666666666666  (20 digits: 0.625)
-// Either bound P (nothing in the model needs P > 1e6) or fold a flank narrower than the precision
-// into a jump.
-TEST(KnownBug, DISABLED_HugePowerExponentIsNotSilentlyWrong) {
-  for (const char* p : {"power:1e30", "power:1e70", "power:1e300"})
-    for (NumberType t : {NumberType::float64, NumberType::mpfr}) {
-      try {
-        const std::string v = evaluate(parse_wave(p), Quantity::mu, {{"3", "2"}}, {t, 20}).front();
-        EXPECT_LT(std::abs(std::stod(v) - 0.6875), 1e-12) << p << " " << number_type_name(t) << ": " << v;
-      } catch (const InputError&) {  // a bound on P is a fix too
+// power:P for P beyond about 1/eps of the working type: the flanks (width ~1/P) are narrower than
+// the phase's rounding, a stick onset by n' = β (Eq. 4) rounded onto the middle of the flank was
+// anchored half a flank too high, and the rounding bound assumed the ramp tangent there. What the
+// tool printed before the fix (μ(β = 3, γ = 2) → 11/16 as P → ∞):
+//   vibrofric mu --wave power:1e30 --beta 3 --gamma 2 --type double    0.91666666666666663
+//   vibrofric psi --wave power:1e30 --beta 3 --type double             0.16666666666666666  (5/8)
+// Now the anchor's bound carries max |n' − β| within the phase error, the ladder escalates until
+// the flank is resolved, and the root budget grows with the precision (P = 1e300 needs ~1,100
+// bisection steps at the 360 digits it escalates to). |μ(P) − μ_sqr| = O(1/P), far below the
+// printed digits, so every type must print the square wave's closed form (Eqs. 20–22).
+TEST(Regression, HugePowerExponentTendsToTheSquareWave) {
+  struct Case {
+    const char *beta, *gamma;
+  };
+  for (const Case c : {Case{"3", "2"}, Case{"3", "-0.5"}, Case{"0.5", "-0.5"}, Case{"1", "0.3"}, Case{"0.2", "5"},
+                       Case{"1.5", "-0.9"}})
+    for (const char* p : {"power:1e30", "power:1e70", "power:1e300"})
+      for (const auto& [type, digits] : {std::pair{NumberType::float64, 17}, std::pair{NumberType::mpfr, 25}}) {
+        PrecisionScope scope(60);
+        const mpfr beta(c.beta), gamma(c.gamma);
+        const mpfr expected = gamma >= 1 ? closed_form::mu_from_psi(closed_form::psi_square(beta), gamma)
+                                         : closed_form::mu_square_jumping(beta, gamma);
+        const mpfr got(evaluate(parse_wave(p), Quantity::mu, {{c.beta, c.gamma}}, {type, digits}).front());
+        // double: within one ulp; 25 digits: half a unit of the last digit (μ(1e30) − μ_sqr is ~1e-29).
+        const mpfr tol = type == NumberType::float64
+                             ? mpfr(std::numeric_limits<double>::epsilon() / 2 * abs(expected))
+                             : mpfr(pow(mpfr(10), floor(log10(abs(expected))) - 24) / 2);
+        EXPECT_LE(abs(got - expected), tol) << p << " beta " << c.beta << " gamma " << c.gamma << " "
+                                                            << number_type_name(type) << ": " << got;
       }
-    }
+  for (const char* p : {"power:1e30", "power:1e300"}) {
+    PrecisionScope scope(60);
+    const mpfr got(evaluate(parse_wave(p), Quantity::psi, {{"3", ""}}, {NumberType::float64, 17}).front());
+    EXPECT_LE(abs(got - mpfr("0.625")), std::numeric_limits<double>::epsilon() / 2 * 0.625) << p << ": " << got;
+  }
 }
 
-// FourierSeries finds its pieces by subdividing [0, 1) down to 2^-30 cells wherever |f(mid)| is
-// below the Lipschitz bound times half the cell. At a zero of w' (or w'') of multiplicity > 1 the
-// number of cells kept grows like a power of 2^30: a cosine series Σ cos(2πkφ)/k² with an even
-// number of terms has w' = w'' = 0 at φ = 1/2 (a triple zero of w'). Measured: K = 4 did not finish
-// in 4 minutes in double (f833a76; 1.7 s before it) nor in 10 minutes at the default 50 digits; odd
-// K: milliseconds. Generic series are slow too (LIMITS.md: K = 10 takes 5 s in double, 150 s at 50
-// digits), for the same reason: the Lipschitz bound Σ(2πk)^n·|c_k| is far above |f'| at the roots.
+// FourierSeries finds its pieces by subdividing [0, 1) down to 2^-30 cells wherever |f(mid)| was
+// below the Lipschitz bound times half the cell. At a zero of w' (or w'') of multiplicity m > 1 the
+// number of cells kept grew like 2^(d(1−1/m)) at depth d: a cosine series Σ cos(2πkφ)/k² with an
+// even number of terms has w' = w'' = w''' = 0 at φ = 1/2 (a triple zero of w'). Measured before
+// the fix: K = 4 did not finish in 4 minutes in double nor in 10 minutes at 50 digits; generic
+// series were slow for the same reason (K = 10: 5 s in double, 150 s at 50 digits). Now the cell
+// test is Taylor's theorem to order 4 at the midpoint, which keeps a bounded number of cells per
+// level near zeros of multiplicity up to 4 (33 ms for K = 4, 0.1 s for K = 10 at 50 digits).
 //   printf '1 1 0\n2 0.25 0\n3 0.111111 0\n4 0.0625 0\n' > f4; vibrofric mu --wave fourier:f4 --beta 1 --gamma 0.5
-TEST(KnownBug, DISABLED_FourierWithADegenerateCriticalPointIsFast) {
+// The alarm only guards against a hang (four orders of magnitude above the time taken); what is
+// asserted is the extremum at 1/2 and agreement with the grid envelope, an independent algorithm
+// that needs no root search.
+TEST(Regression, FourierWithADegenerateCriticalPoint) {
   ::testing::FLAGS_gtest_death_test_style = "threadsafe";
   EXPECT_EXIT(
       {
-        alarm(60);
+        alarm(300);
         PrecisionScope digits(60);
         const FourierSeries<mpfr> w("f4", {1, 2, 3, 4}, {mpfr(1), mpfr("0.25"), mpfr("0.111111"), mpfr("0.0625")},
                                     {mpfr(0), mpfr(0), mpfr(0), mpfr(0)});
-        std::_Exit(solve(w, mpfr(1), mpfr("0.5")).mu > 0 ? 0 : 3);
+        bool half = false;
+        for (std::size_t i = 0; i < w.piece_count(); ++i) half = half || abs(w.piece_begin(i) - mpfr(1) / 2) < mpfr("1e-55");
+        const mpfr mu = solve(w, mpfr(1), mpfr("0.5")).mu;
+        const FourierSeries<double> wd("f4", {1, 2, 3, 4}, {1, 0.25, 0.111111, 0.0625}, {0, 0, 0, 0});
+        // O(h²) grid error: curvature of n ≤ max|w''| ≈ 20 times h² = 2^-32 is 5e-9; 1e-7 is 20× that.
+        const double grid = grid_envelope<double>(wd, 1.0, 0.5, std::size_t(1) << 16).mu;
+        std::_Exit(!half ? 3 : std::abs(static_cast<double>(mu) - grid) > 1e-7 ? 4 : 0);
       },
       ::testing::ExitedWithCode(0), "");
 }

@@ -74,10 +74,19 @@ std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
       return std::make_unique<FourierSeries<Real>>(spec.name, k, a, b);
     }
     case WaveKind::samples: {
-      std::vector<Real> y;
-      for (std::size_t j = 0; j < spec.samples.size(); ++j)
-        y.push_back(parse_real<Real>(spec.samples[j], spec.name + " sample " + std::to_string(j + 1)));
-      return make_samples<Real>(spec.name, y);
+      // Normalised from the decimal text itself (parse_wave checked its grammar and range): its
+      // rounding to Real would be amplified by the offset-to-amplitude ratio.
+      int distinct = 1;
+      for (const std::string& t : spec.samples) {
+        int d = 0;
+        for (const char c : t) {
+          if (c == 'e' || c == 'E') break;
+          if (c >= '0' && c <= '9') ++d;
+        }
+        distinct = std::max(distinct, d);
+      }
+      return make_samples_from<Real>(spec.name, spec.samples.size(),
+                                     [&](std::size_t j) { return mpfr(spec.samples[j]); }, distinct);
     }
   }
   throw InputError("unknown wave kind");

@@ -44,6 +44,25 @@ int working_digits10() {
     return std::numeric_limits<Real>::digits10;
 }
 
+namespace detail {
+// x rounded once to Real (to `mpfr_digits10` decimal digits of precision when Real is mpfr).
+template <class Real>
+Real rounded(const mpfr& x, unsigned mpfr_digits10) {
+  if constexpr (std::is_same_v<Real, double>) {
+    return mpfr_get_d(x.backend().data(), MPFR_RNDN);
+  } else if constexpr (std::is_same_v<Real, long double>) {
+    return mpfr_get_ld(x.backend().data(), MPFR_RNDN);
+  } else if constexpr (is_runtime_precision_v<Real>) {
+    Real r;
+    r.precision(mpfr_digits10);
+    mpfr_set(r.backend().data(), x.backend().data(), MPFR_RNDN);
+    return r;
+  } else {
+    return static_cast<Real>(x);
+  }
+}
+}  // namespace detail
+
 // x correctly rounded to `digits` significant digits, in positional notation ("0.0123…") with
 // trailing zeros kept so that the precision stays visible; zero is "0"; values outside
 // [1e-5, 1e15) in scientific notation. The digits come from MPFR's correctly rounded

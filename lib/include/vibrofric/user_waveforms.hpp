@@ -7,20 +7,23 @@
 #include <string>
 #include <vector>
 
+#include "vibrofric/numbers.hpp"
 #include "vibrofric/waveform.hpp"
 
 namespace vibrofric {
 
 namespace detail {
 
-// All roots of a smooth 1-periodic f on [0, 1), given L ≥ max |f'| and M ≥ max |f|. A cell
-// [a, b] is dropped when |f(mid)| > L·(b − a)/2 + 64·eps·M (then f has no zero in it, even with
-// f's rounding); otherwise it is halved, down to a width of 2^-30 cells, where a sign change is
-// refined to working precision. A zero of even multiplicity (no sign change) is not reported:
-// it does not split a monotone piece.
-template <class Real, class F>
-std::vector<Real> periodic_roots(F f, const Real& lipschitz, const Real& magnitude, std::size_t cells,
-                                 const char* what, RootStats& stats) {
+// All roots of a smooth 1-periodic f on [0, 1), given spread(x, r) ≥ max_{|y−x| ≤ r} |f(y) − f(x)|
+// (rounding included) and M ≥ max |f|. A cell [a, b] is dropped when |f(mid)| > spread(mid, r) +
+// 64·eps·M with r = (b − a)/2 (then f has no zero in it, even with f's rounding); otherwise it is
+// halved, down to a width of 2^-30 cells, where a sign change is refined to working precision. A
+// zero of even multiplicity (no sign change) is not reported: it does not split a monotone piece.
+// With a Taylor spread of order J the cells kept near a zero of multiplicity m ≤ J stay bounded
+// in number per level; a Lipschitz spread (J = 1) keeps ~2^(d(1−1/m)) at depth d.
+template <class Real, class F, class S>
+std::vector<Real> periodic_roots(F f, S spread, const Real& magnitude, std::size_t cells, const char* what,
+                                 RootStats& stats) {
   using std::abs;
   struct Cell {
     Real a, b, fa, fb;
@@ -49,7 +52,7 @@ std::vector<Real> periodic_roots(F f, const Real& lipschitz, const Real& magnitu
     if (c.fb == 0) continue;  // reported by the neighbouring cell
     const Real mid = (c.a + c.b) / 2;
     const Real fm = f(mid);
-    if (abs(fm) > lipschitz * (c.b - c.a) / 2 + margin) continue;
+    if (abs(fm) > spread(mid, Real((c.b - c.a) / 2)) + margin) continue;
     if (c.depth >= max_depth) {
       if ((c.fa > 0) != (c.fb > 0)) roots.push_back(bracketed_root<Real>(f, c.a, c.b, c.fa, c.fb, what, stats));
       continue;
@@ -108,10 +111,16 @@ class FourierSeries final : public Waveform<Real> {
     }
 
     detail::RootStats stats;
+    std::vector<Real> bounds;  // of |w^(o)|, o = 0 … 7, for the root search's spread
+    for (int o = 0; o < 8; ++o) bounds.push_back(bound(o));
     const auto extrema = detail::periodic_roots<Real>(
-        [&](const Real& x) -> Real { return derivative(x, 1); }, bound(2), bound(1), cells(), "extremum of the Fourier waveform", stats);
+        [&](const Real& x) -> Real { return derivative(x, 1); },
+        [&](const Real& x, const Real& r) -> Real { return taylor_spread(1, x, r, bounds); }, bounds[1], cells(),
+        "extremum of the Fourier waveform", stats);
     const auto inflections = detail::periodic_roots<Real>(
-        [&](const Real& x) -> Real { return derivative(x, 2); }, bound(3), bound(2), cells(), "inflection of the Fourier waveform", stats);
+        [&](const Real& x) -> Real { return derivative(x, 2); },
+        [&](const Real& x, const Real& r) -> Real { return taylor_spread(2, x, r, bounds); }, bounds[2], cells(),
+        "inflection of the Fourier waveform", stats);
     Real lo = derivative(Real(0), 0), hi = lo;
     for (const Real& x : extrema) {
       const Real v = derivative(x, 0);
@@ -173,6 +182,45 @@ class FourierSeries final : public Waveform<Real> {
     }
     return sum;
   }
+  // A bound of |w^(order)(y) − w^(order)(x)| for |y − x| ≤ r: Taylor's theorem to order J = 4 at x,
+  // Σ_{j=1..J} |w^(order+j)(x)|·r^j/j! + max |w^(order+J+1)|·r^(J+1)/(J+1)!, each term widened by
+  // its rounding (64 eps of the derivative's bound; `bounds` holds them). One pass over the harmonics.
+  Real taylor_spread(int order, const Real& phi, const Real& r, const std::vector<Real>& bounds) const {
+    constexpr int J = 4;
+    using std::abs;
+    using std::cos;
+    using std::sin;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    const Real theta = two_pi * phi;
+    const Real c1 = cos(theta), s1 = sin(theta);
+    Real c = c1, s = s1, sum[J + 1] = {};
+    for (unsigned k = 1; k <= max_k_; ++k) {
+      if (k > 1) {
+        const Real cn = c * c1 - s * s1;
+        s = s * c1 + c * s1;
+        c = cn;
+      }
+      const Real w = two_pi * k;
+      Real factor = 1;
+      for (int o = 0; o <= order; ++o) factor *= w;
+      for (int j = 1; j <= J; ++j, factor *= w) {
+        switch ((order + j) % 4) {
+          case 0: sum[j] += factor * (a_[k] * c + b_[k] * s); break;
+          case 1: sum[j] += factor * (-a_[k] * s + b_[k] * c); break;
+          case 2: sum[j] += factor * (-a_[k] * c - b_[k] * s); break;
+          default: sum[j] += factor * (a_[k] * s - b_[k] * c); break;
+        }
+      }
+    }
+    const Real eps64 = 64 * std::numeric_limits<Real>::epsilon();
+    Real total = 0, rj = 1, fact = 1;
+    for (int j = 1; j <= J; ++j) {
+      rj *= r;
+      fact *= j;
+      total += (abs(sum[j]) + eps64 * bounds[order + j]) * rj / fact;
+    }
+    return total + bounds[order + J + 1] * rj * r / (fact * (J + 1));
+  }
   // Σ_k (2πk)^order·sqrt(a_k² + b_k²): a bound on |w^(order)|.
   Real bound(int order) const {
     using std::sqrt;
@@ -190,46 +238,76 @@ class FourierSeries final : public Waveform<Real> {
   unsigned max_k_ = 0;
 };
 
-// Periodic samples y_0 … y_{N−1} at φ_j = j/N, joined by straight lines (y_N = y_0), normalised.
-// The mean of the piecewise-linear signal is the mean of the samples.
-template <class Real>
-std::unique_ptr<Waveform<Real>> make_samples(std::string name, const std::vector<Real>& y) {
-  const std::size_t n = y.size();
+// Periodic samples y_0 … y_{N−1} at φ_j = j/N, joined by straight lines (y_N = y_0), normalised
+// to w_j = (y_j − mean)/scale with scale = (max − min)/2. The mean of the piecewise-linear signal
+// is the mean of the samples. With an offset large against the amplitude the subtraction cancels
+// log10 κ digits, κ = 2·max|y|/(max − min) (1000, 1000.001, 1000: κ ≈ 2·10^6), so it is done in
+// mpfr from the exact samples with those digits, log10 N for the mean and 10 guard digits on top,
+// and each w_j is rounded to Real once. `sample(j)` returns y_j at the current mpfr precision,
+// correctly rounded; `distinct_digits` bounds the significant digits of any y_j, so that two
+// samples that differ still differ at that precision (else the signal is constant).
+template <class Real, class Sample>
+std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t n, Sample sample, int distinct_digits) {
   if (n < 2)
     throw InputError("sampled waveform " + name + " has " + std::to_string(n) + " sample(s): expected at least 2");
-  // Scale by a power of two (exact) so that the largest |y| is in [1/2, 1): the mean and the range
-  // then neither overflow (samples near ±1e308 in double) nor lose bits (subnormal samples).
-  Real big = 0;
-  for (const Real& v : y) {
-    using std::abs;
-    big = std::max(big, Real(abs(v)));
+  using std::abs;
+  const int wanted = working_digits10<Real>() + 10;
+  const unsigned working = mpfr::thread_default_precision();  // mpfr's working precision, restored below
+  const int log_n = static_cast<int>(std::ceil(std::log10(static_cast<double>(n))));
+  std::vector<Real> w;
+  Normalisation<Real> norm;
+  for (int p = wanted + log_n, attempt = 0; w.empty(); ++attempt) {
+    if (attempt == 8)
+      throw InputError("sampled waveform " + name + ": the normalisation does not converge: offset too large against the amplitude");
+    PrecisionScope scope(static_cast<unsigned>(p));
+    mpfr sum = 0, lo = sample(0), hi = lo, big = abs(lo);
+    for (std::size_t j = 0; j < n; ++j) {
+      const mpfr v = sample(j);
+      sum += v;
+      if (v < lo) lo = v;
+      if (v > hi) hi = v;
+      if (abs(v) > big) big = abs(v);
+    }
+    if (!(hi > lo)) {
+      if (p >= distinct_digits + log_n + 10)
+        throw InputError("sampled waveform " + name + " is constant: expected a signal with non-zero amplitude");
+      p = distinct_digits + log_n + 10;
+      continue;
+    }
+    const int cancelled = static_cast<int>(std::ceil(static_cast<double>(log10(2 * big / (hi - lo)))));
+    if (wanted + log_n + cancelled + 2 > p) {
+      p = wanted + log_n + cancelled + 2;
+      continue;
+    }
+    const mpfr mean = sum / n, scale = (hi - lo) / 2;
+    w.reserve(n);
+    for (std::size_t j = 0; j < n; ++j) w.push_back(detail::rounded<Real>(mpfr((sample(j) - mean) / scale), working));
+    norm = {true, detail::rounded<Real>(mean, working), detail::rounded<Real>(scale, working)};
   }
-  using std::frexp;
-  using std::ldexp;
-  int e = 0;
-  frexp(big, &e);
-  Real mean = 0, lo = ldexp(y[0], -e), hi = lo;
-  for (const Real& raw : y) {
-    const Real v = ldexp(raw, -e);
-    mean += v;
-    if (v < lo) lo = v;
-    if (v > hi) hi = v;
-  }
-  mean /= n;
-  if (!(hi > lo)) throw InputError("sampled waveform " + name + " is constant: expected a signal with non-zero amplitude");
-  const Real scale = (hi - lo) / 2;
   using P = typename PiecewiseLinear<Real>::Piece;
   std::vector<P> pieces;
-  for (std::size_t j = 0; j < n; ++j) {
-    const Real y0 = (ldexp(y[j], -e) - mean) / scale, y1 = (ldexp(y[(j + 1) % n], -e) - mean) / scale;
-    pieces.push_back({Real(j) / n, y0, (y1 - y0) * n});
-  }
+  pieces.reserve(n);
+  for (std::size_t j = 0; j < n; ++j) pieces.push_back({Real(j) / n, w[j], Real((w[(j + 1) % n] - w[j]) * n)});
   struct Sampled final : PiecewiseLinear<Real> {
-    Sampled(std::string nm, std::vector<P> p, Normalisation<Real> norm) : PiecewiseLinear<Real>(std::move(nm), std::move(p)) {
-      this->norm_ = norm;
+    Sampled(std::string nm, std::vector<P> p, Normalisation<Real> nz) : PiecewiseLinear<Real>(std::move(nm), std::move(p)) {
+      this->norm_ = nz;
     }
   };
-  return std::make_unique<Sampled>(std::move(name), std::move(pieces), Normalisation<Real>{true, ldexp(mean, e), ldexp(scale, e)});
+  return std::make_unique<Sampled>(std::move(name), std::move(pieces), norm);
+}
+
+// Samples given as numbers of the working type: exact in mpfr, at most max_digits10 digits each.
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_samples(std::string name, const std::vector<Real>& y) {
+  if constexpr (is_runtime_precision_v<Real>) {
+    long bits = 0;
+    for (const Real& v : y) bits = std::max<long>(bits, static_cast<long>(mpfr_get_prec(v.backend().data())));
+    return make_samples_from<Real>(std::move(name), y.size(), [&](std::size_t j) { return mpfr(y[j]); },
+                                   static_cast<int>(bits * 0.30103) + 2);
+  } else {
+    return make_samples_from<Real>(std::move(name), y.size(), [&](std::size_t j) { return mpfr(y[j]); },
+                                   std::numeric_limits<Real>::max_digits10);
+  }
 }
 
 }  // namespace vibrofric
