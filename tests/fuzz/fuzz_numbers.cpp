@@ -107,12 +107,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Names: catalogue and power:P (file waves are the other targets' business).
   if (s.rfind("fourier:", 0) != 0 && s.rfind("samples:", 0) != 0) {
     WaveSpec spec;
-    // Known library bug (reported, issue #7; test_failures.cpp,
-    // KnownBug.DISABLED_HugePowerExponentIsNotSilentlyWrong): power:P with P beyond about 10^(working
-    // digits) gives a wrong μ without complaint (power:1e30, β = 3, γ = 2 in double: 0.9167, not
-    // 0.6875). Such P are parsed but not evaluated. Remove when fixed.
-    const bool huge_power = s.rfind("power:", 0) == 0 && std::strtold(s.c_str() + 6, nullptr) > 1e15L;
-    if (fuzz::clean(s, "parse_wave", [&] { spec = parse_wave(s); }) == fuzz::Outcome::value && !huge_power) {
+    if (fuzz::clean(s, "parse_wave", [&] { spec = parse_wave(s); }) == fuzz::Outcome::value) {
       for (const Point& p : {Point{"1", "0.5"}, Point{"0.25", "-0.5"}, Point{"3", "2"}}) {
         std::string vd, vm;
         const auto od = fuzz::clean(s, "evaluate wave double", [&] { vd = evaluate(spec, Quantity::mu, {p}, {NumberType::float64, 17}).front(); });

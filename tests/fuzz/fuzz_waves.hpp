@@ -3,13 +3,11 @@
 // every outcome must be clean, every value finite (μ in [0, 1], Ψ ≥ 0), and double must agree with
 // mpfr — on accepting the point (unless it sits within 1e-12 of the no-contact boundary, where
 // rounding may decide either way), and on the value to 4 ulp plus what the rounding of the input
-// to double can move it: the double path computes for the input rounded to double (values, and
-// for samples their normalisation (y − mean)/scale), a perturbation δ ≤ 8·eps·κ of the normalised
-// wave, κ = max |y|/scale for samples and Σ k(|a_k| + |b_k|)/scale for Fourier series (the
-// recurrence error grows with k); μ moves by at most (1 + μ)δ/∫n and Ψ by 2δ (grid_envelope.hpp's
-// argument). A difference beyond that is a finding. (That the tool's double is then not the
-// correctly rounded μ of the decimal input for large κ is a known bug: test_failures.cpp,
-// KnownBug.DISABLED_IllConditionedSamplesAreCorrectlyRounded.)
+// to double can move it: the double path computes for the Fourier coefficients rounded to double,
+// a perturbation δ ≤ 8·eps·κ of the normalised wave, κ = Σ k(|a_k| + |b_k|)/scale (the recurrence
+// error grows with k); μ moves by at most (1 + μ)δ/∫n and Ψ by 2δ (grid_envelope.hpp's argument).
+// Samples are normalised from their decimal text in mpfr in every type (κ = 1). A difference beyond
+// that is a finding.
 #pragma once
 #include <algorithm>
 #include <cmath>

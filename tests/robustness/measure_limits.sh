@@ -10,8 +10,8 @@ tool=${1:?usage: measure_limits.sh path/to/vibrofric [scratch-dir]}
 scratch=${2:-$(mktemp -d)}
 mkdir -p "$scratch"
 limit=${VIBROFRIC_LIMIT_TIMEOUT:-900}
-# VIBROFRIC_LIMIT_SECTIONS: any of digits, samples, fourier, numbers (default: all).
-sections=${VIBROFRIC_LIMIT_SECTIONS:-digits samples fourier numbers}
+# VIBROFRIC_LIMIT_SECTIONS: any of digits, samples, fourier, waves, numbers (default: all).
+sections=${VIBROFRIC_LIMIT_SECTIONS:-digits samples fourier waves numbers}
 want() { case " $sections " in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
 
 # run LABEL ARGS...: one table row: label | exit status | wall s | max RSS MiB | first 60 chars of
@@ -77,8 +77,8 @@ if want fourier; then
 
 # Fourier files. Generic: harmonics 1..K with amplitude 1/k^2 and phase 1.3k (cost grows with K:
 # the pieces come from a root search over 16K + 16 cells, each evaluation O(K)). Degenerate: the
-# cosine series 1/k^2 with K = 4 has w' = w'' = 0 at phi = 1/2, where the root search subdivides
-# to 2^-30 cells over a whole neighbourhood.
+# cosine series 1/k^2 with K = 4 has w' = w'' = w''' = 0 at phi = 1/2 (it hung the Lipschitz root
+# search before 5ac3516).
 for k in 10 30 100 300; do
   f=$scratch/fourier_$k.txt
   awk -v K="$k" 'BEGIN { for (j = 1; j <= K; j++) printf "%d %.6e %.6e\n", j, cos(1.3 * j) / (j * j), sin(1.3 * j) / (j * j) }' >"$f"
@@ -94,6 +94,19 @@ echo "100000 0 1" >"$f"
 run "fourier one harmonic k=100000 --type double" mu --wave "fourier:$f" --beta 1 --gamma 0.5 --type double
 echo "100001 0 1" >"$f"
 run "fourier k=100001" mu --wave "fourier:$f" --beta 1 --gamma 0.5 --type double
+fi
+
+if want waves; then
+# power:P with flanks narrower than the working precision: escalated until resolved (PrecisionError
+# without escalation); a sampled signal whose offset is 1e40 times its amplitude (normalised in
+# mpfr with the cancelled digits; μ = 8/9).
+run "power:1e30 beta=3 gamma=2 --type double" mu --wave power:1e30 --beta 3 --gamma 2 --type double
+run "power:1e300 beta=3 gamma=2 --digits 50" mu --wave power:1e300 --beta 3 --gamma 2 --digits 50
+run "power:1e300 beta=3 gamma=2 --type double --no-escalate=1" mu --wave power:1e300 --beta 3 --gamma 2 --type double --no-escalate=1
+f=$scratch/samples_offset.txt
+printf '1 1.0000000000000000000000000000000000000001 1\n' >"$f"
+run "samples offset/amplitude 1e40 beta=3 gamma=2 --digits 50" mu --wave "samples:$f" --beta 3 --gamma 2 --digits 50
+run "samples offset/amplitude 1e40 beta=3 gamma=2 --type double" mu --wave "samples:$f" --beta 3 --gamma 2 --type double
 fi
 
 if want numbers; then

@@ -200,6 +200,9 @@ def bad_input_tests():
     for v in ("0", "-1", "0.0", "-0", "0e5", "-2.5e-3"):
         bad("beta=%s" % v, mu_beta(v), [v], ["beta"])
     bad("psi beta=0", ["psi", "--wave", "triangle", "--beta", "0"], ["0"], ["beta"])
+    # A positive beta that underflows the type is named as written, not as 0.
+    for t in ("double", "long-double"):
+        bad("beta=1e-5000 --type %s" % t, mu_beta("1e-5000") + ["--type", t], ["1e-5000"], ["beta", "underflows"])
     # NaN / infinities, overflow, garbage, empty: beta and gamma
     for v in ("NaN", "nan", "inf", "-inf", "Infinity", "1e400", "-1e999", "1.5x", "1.5.3", "0x10",
               " 1", "1e", "e5", "--", "1,5"):

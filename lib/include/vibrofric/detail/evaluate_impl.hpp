@@ -60,6 +60,9 @@ class WaveCache {
 template <class Real>
 PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt) {
   const Real beta = parse_real<Real>(p.beta, "beta");
+  // A positive β below the type's smallest number reads as 0: name what was written.
+  if (beta == 0 && p.beta[0] != '-' && p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
+    throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: --digits)");
   const auto r = solve(waves.contact(q == Quantity::psi ? std::string() : p.gamma, opt), beta, opt);
   if (q == Quantity::psi) return {r.lost_area, r.lost_relative_error};
   return {r.mu, r.relative_error};
