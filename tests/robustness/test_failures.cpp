@@ -490,9 +490,10 @@ TEST(Regression, IllConditionedSamplesAreCorrectlyRounded) {
 // tool printed before the fix (μ(β = 3, γ = 2) → 11/16 as P → ∞):
 //   vibrofric mu --wave power:1e30 --beta 3 --gamma 2 --type double    0.91666666666666663
 //   vibrofric psi --wave power:1e30 --beta 3 --type double             0.16666666666666666  (5/8)
-// Now the anchor's bound carries max |n' − β| within the phase error, the ladder escalates until
-// the flank is resolved, and the root budget grows with the precision (P = 1e300 needs ~1,100
-// bisection steps at the 360 digits it escalates to). |μ(P) − μ_sqr| = O(1/P), far below the
+// Now a precision that does not resolve the flanks (p·eps > 2^-10) is a PrecisionError, on which
+// the ladder escalates until they are resolved; a contact boundary that rounds onto a piece end
+// keeps n = 0 there (γ < 0 cases below); and the root budget grows with the precision (P = 1e300
+// needs about 1,100 bisection steps at the 384–496 digits it escalates to). |μ(P) − μ_sqr| = O(1/P), far below the
 // printed digits, so every type must print the square wave's closed form (Eqs. 20–22).
 TEST(Regression, HugePowerExponentTendsToTheSquareWave) {
   struct Case {

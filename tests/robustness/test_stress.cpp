@@ -533,6 +533,16 @@ Rational parse_rational(const std::string& decimal) {
 
 // ---------------- double ----------------
 
+// A sampled signal long enough that its own samples make the grid.
+bool is_long_samples(const Wave& w) { return w.family == Family::samples && w.raw_samples.size() > 64; }
+
+// The second algorithm for one case: through the samples of a long sampled signal, else the grid
+// of the wave's own formula (Fourier: at the solver's normalisation scale).
+std::optional<Grid> grid_for(const Wave& w, const Waveform<double>& wd, double beta, double gamma) {
+  if (is_long_samples(w)) return sample_grid_check(wd, w.raw_samples.size(), beta, gamma);
+  return grid_check(Direct{w, w.family == Family::fourier ? static_cast<double>(wd.normalisation().scale) : 1.0}, beta, gamma);
+}
+
 TEST(Stress, DoubleAgainstSecondAlgorithm) {
   const long n_cases = stress_size("VIBROFRIC_STRESS_DOUBLE", 10000, 100000);
   std::mt19937 rng(20260701);
@@ -554,7 +564,7 @@ TEST(Stress, DoubleAgainstSecondAlgorithm) {
     }
     double lo, hi, beta_c;
     point_scales(w, *wd, lo, hi, beta_c);
-    const bool long_samples = w.family == Family::samples && w.raw_samples.size() > 64;
+    const bool long_samples = is_long_samples(w);
     if (long_samples && !wm) wm = make_waveform<mpfr>(w.spec);
     for (int i = 0; i < 4 && t.cases < n_cases; ++i) {
       const Point3 p = random_point(rng, w, lo, hi, beta_c);
@@ -661,9 +671,7 @@ TEST(Stress, DoubleAgainstSecondAlgorithm) {
           t.fail("disagrees with the exact envelope: " + describe(w, p) + buf);
         }
       } else {
-        const std::optional<Grid> og = long_samples ? sample_grid_check(*wd, w.raw_samples.size(), beta, p.psi ? -wd->minimum() : gamma)
-                                    : grid_check(Direct{w, w.family == Family::fourier ? static_cast<double>(wd->normalisation().scale) : 1.0},
-                                                 beta, p.psi ? -wd->minimum() : gamma);
+        const std::optional<Grid> og = grid_for(w, *wd, beta, p.psi ? -wd->minimum() : gamma);
         if (!og) {
           ++t.grid_skipped;
           continue;
@@ -714,7 +722,7 @@ TEST(Stress, FiftyDigitsAgainstSecondAlgorithm) {
     }
     double lo, hi, beta_c;
     point_scales(w, *wd, lo, hi, beta_c);
-    const bool long_samples = w.family == Family::samples && w.raw_samples.size() > 64;
+    const bool long_samples = is_long_samples(w);
     for (int i = 0; i < 2 && t.cases < n_cases; ++i) {
       const Point3 p = random_point(rng, w, lo, hi, beta_c);
       ++t.cases;
@@ -762,9 +770,7 @@ TEST(Stress, FiftyDigitsAgainstSecondAlgorithm) {
         }
       }
       const double beta = parse_real<double>(p.beta, "beta"), gamma = parse_real<double>(p.gamma, "gamma");
-      const std::optional<Grid> og = long_samples ? sample_grid_check(*wd, w.raw_samples.size(), beta, p.psi ? -wd->minimum() : gamma)
-                                  : grid_check(Direct{w, w.family == Family::fourier ? static_cast<double>(wd->normalisation().scale) : 1.0},
-                                               beta, p.psi ? -wd->minimum() : gamma);
+      const std::optional<Grid> og = grid_for(w, *wd, beta, p.psi ? -wd->minimum() : gamma);
       if (!og) {
         ++t.grid_skipped;
         continue;

@@ -210,10 +210,7 @@ class Sweep {
     // Start where n is smallest: there s = n (model.md), so the sweep needs no history.
     s_ = c_.n_min();
     sticking_ = false;
-    for (std::size_t j = 0; j < m; ++j) {
-      prev_ = &segs[(start + j + m - 1) % m];
-      sweep_segment(segs[(start + j) % m], start + j >= m);
-    }
+    for (std::size_t j = 0; j < m; ++j) sweep_segment(segs[(start + j) % m], start + j >= m);
     if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), Real(1));
 
     Result<Real> r;
@@ -332,12 +329,12 @@ class Sweep {
           return;
         }
         if (dn(g, pos) > beta_) {
-          open_stick(pos, shift, n(g, pos), anchor_bound(g, pos));
+          open_stick(pos, shift, n(g, pos));
         } else if (convex && dn(g, g.v) > beta_) {
           const Real t = slope_root(g, pos, g.v);
           add_slip(g, pos, t);
           pos = t;
-          open_stick(pos, shift, n(g, pos), anchor_bound(g, pos));
+          open_stick(pos, shift, n(g, pos));
         } else {
           add_slip(g, pos, g.v);
           s_ = n(g, g.v);
@@ -453,35 +450,17 @@ class Sweep {
                                 Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_), "n' = beta (Eq. 4)", stats_);
   }
 
-  // Bound (in eps) of n(φ̂) − n(φ) − β(φ̂ − φ) for a ramp anchored on n at a computed phase φ̂
-  // inside a segment (at a segment's start n is data, or exactly 0 at a contact boundary):
-  // max |n' − β| within the phase error (4 ulp of φ, as the root finders stop) times that error.
-  // n' is monotone on the segment, so the extremes are at the ends of the interval. Near 0 at an
-  // onset by n' = β on a smooth wave (the ramp is tangent); of order 1/eps where n' grows by
-  // orders of magnitude within the phase error, as on the flanks of power:P for P ≳ 1/eps.
-  Real anchor_bound(const Segment& g, const Real& at) {
-    using std::abs;
-    // At a segment's start the anchor is data (a piece end, or n = 0 exactly at first contact)
-    // when the onset belongs there: first contact, or n' rising past β across a kink. After a
-    // smooth join with n' > β already (power:P's flank at φ = 0) the onset was due earlier and
-    // only rounding of the previous segment's search left it here.
-    if (at == g.u && (!prev_->contact || !(prev_->dnv > beta_))) return Real(0);
-    const Real spread = 4 * (1 + abs(at));
-    const Real delta = spread * std::numeric_limits<Real>::epsilon();
-    const Real lo = at - delta < g.u ? g.u : Real(at - delta), hi = at + delta > g.v ? g.v : Real(at + delta);
-    const Real a = abs(dn(g, lo) - beta_), b = abs(dn(g, hi) - beta_);
-    return spread * (a > b ? a : b);
-  }
-
-  void open_stick(const Real& at, const Real& shift, const Real& level, const Real& anchor = Real(0)) {
+  void open_stick(const Real& at, const Real& shift, const Real& level) {
     using std::abs;
     sticking_ = true;
     a_ = at;
     a_shift_ = shift;
     level_ = level;
-    // The level is a value of n (or s before a jump); the anchor phase is rounded. The ramp
-    // shifts by β times the phase error, plus `anchor` where the level is n at that phase.
-    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift) + anchor;
+    // The level is a value of n; the anchor phase is rounded. At an onset by n' = β the two
+    // errors cancel to first order (the ramp is tangent to n, and n' is nearly constant over the
+    // phase error: Waveform::unresolved); at first contact or a jump the ramp shifts by β times
+    // the phase error.
+    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift);
     ++events_;
   }
   void close_stick(const Real& at, const Real& shift) {
@@ -571,7 +550,6 @@ class Sweep {
 
   const Contact<Real>& c_;
   const Waveform<Real>& w_;
-  const Segment* prev_ = nullptr;  // the segment swept before the current one
   Real beta_, gamma_;
   Options opt_;
   AreaMethod method_;
