@@ -66,6 +66,7 @@ struct Result {
   Real beta_c;          // largest rising slope of n (Eq. 6); +∞ with an upward jump
   Real relative_error;  // estimated relative error of mu from rounding and quadrature
   Real lost_relative_error;  // the same for lost_area
+  Real area_error;           // bound on the absolute rounding error of retained_area and of normal_area
   bool jumping = false;      // n vanishes somewhere in the period
   AreaMethod area = AreaMethod::exact;
   std::vector<StickPhase<Real>> stick_phases;
@@ -236,6 +237,7 @@ class Sweep {
       r.relative_error = unknown;
     else
       r.relative_error = eps * (err_retained_ / retained_ + err_normal_ / normal_);
+    r.area_error = eps * (err_retained_ > err_normal_ ? err_retained_ : err_normal_);
     if (stick_.empty())
       r.lost_relative_error = 0;
     else

@@ -1,0 +1,306 @@
+// Curved contacts by the method of dimensionality reduction (model.md, "Curved contacts (MDR)"):
+//
+//   μ̄/μ0 = ∫ Φ_w(β, γ − σ(x)) dx / ∫ N_w(γ − σ(x)) dx,   Φ_w = ∫₀¹ s dφ,  N_w = ∫₀¹ n dφ,
+//
+// every spring of the row being the flat punch (solver.hpp) at the shifted mean indentation
+// γ' = γ − σ(x). The x-integral runs from the centre to the contact edge σ = γ + max w, by
+// tanh-sinh between breakpoints. Φ_w(β, ·) and N_w(·) are analytic in γ' between the values
+// where the flat-punch event structure changes; those are found from the structure itself
+// (gamma_breakpoints below), never from a grid, and each is a breakpoint of the x-integral,
+// as are the profile's own kinks. Endpoint singularities (the contact edge, the profile's
+// square-root onsets) are left to tanh-sinh, which converges doubly exponentially through them;
+// the wear-flat sphere is integrated in σ, where x(σ) is analytic.
+//
+// Not for: Ψ (Eq. 12). The outer springs of a curved contact always jump, so Eq. 13's
+// separation of α and β does not exist there.
+#pragma once
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "vibrofric/profile.hpp"
+#include "vibrofric/solver.hpp"
+
+namespace vibrofric {
+
+template <class Real>
+struct CurvedResult {
+  Real mu;                 // μ̄/μ0 = friction_integral / normal_integral
+  Real friction_integral;  // ∫₀^X Φ_w(β, γ − σ(x)) dx over the half-row (profile units)
+  Real normal_integral;    // ∫₀^X N_w(γ − σ(x)) dx
+  Real contact_radius;     // X: σ(X) = γ + max w, the edge of the contact (profile units)
+  Real beta_c;             // β_c(γ) of the central spring; β ≥ β_c gives μ̄ = μ0 exactly (Eq. 6)
+  Real relative_error;     // estimate for mu: quadrature estimates plus the springs' rounding bounds
+  Real quadrature_error;   // sum of the tanh-sinh error estimates of both integrals (absolute)
+  bool center_jumps = false;          // γ < −min w: every spring loses contact once a period
+  std::vector<Real> gamma_breaks;     // γ' breakpoints inside (−max w, γ), ascending
+  std::size_t segments = 0;           // tanh-sinh segments
+  std::size_t springs = 0;            // flat-punch solves (breakpoint search and quadrature)
+};
+
+namespace detail {
+
+// One spring: (Φ, N) and the bound on their absolute rounding error; no contact gives zeros.
+template <class Real>
+struct SpringValue {
+  Real phi, n, err;
+};
+
+template <class Real>
+class SpringRow {
+ public:
+  SpringRow(const Waveform<Real>& w, const Real& beta, const Options& opt) : w_(w), beta_(beta), opt_(opt) {
+    stats_.max_iterations = root_budget<Real>(opt);
+  }
+  SpringValue<Real> at(const Real& g) {
+    if (!(g + w_.maximum() > 0)) return {Real(0), Real(0), Real(0)};
+    ++solves;
+    const Result<Real> r = solve(make_contact(w_, g, opt_), beta_, opt_);
+    return {r.retained_area, r.normal_area, r.area_error};
+  }
+  Result<Real> result(const Real& g) {
+    ++solves;
+    return solve(make_contact(w_, g, opt_), beta_, opt_);
+  }
+  const Waveform<Real>& wave() const { return w_; }
+  const Real& beta() const { return beta_; }
+  RootStats& stats() { return stats_; }
+  std::size_t solves = 0;
+
+ private:
+  const Waveform<Real>& w_;
+  Real beta_;
+  Options opt_;
+  RootStats stats_;
+};
+
+// The rising piece of w that contains phase φ ∈ [0, 1) (first contact lies on one).
+template <class Real>
+std::size_t rising_piece_at(const Waveform<Real>& w, const Real& phi) {
+  for (std::size_t i = 0; i < w.piece_count(); ++i)
+    if (w.piece_begin(i) <= phi && phi <= w.piece_end(i) && w.end_value(i) > w.begin_value(i)) return i;
+  throw SolverError("first contact at phase " + short_str(phi) + " lies on no rising piece");
+}
+
+}  // namespace detail
+
+// The γ' in (lo, hi) where Φ_w(β, γ') or N_w(γ') is not analytic, ascending. From the waveform:
+// the contact boundary passes a piece end (γ' = −w at a piece end: jumping starts, a contact
+// interval appears or splits, a kink of w enters), and first contact passes a point with
+// w' = β (the onset switches between first contact and Eq. 4, and β = β_c(γ') there). From the
+// event structure: a stick that starts at first contact (or at an upward jump from zero) has
+// its ramp anchored at a γ'-dependent phase, and its end (Eq. 8) is non-decreasing in γ'; where
+// it passes a kink of w or a point with w' = β (two stick phases merge), the chord from the
+// onset to that point has slope β. Each such crossing is the unique root of a monotone
+// function of γ' on its interval, found at the working precision.
+template <class Real>
+std::vector<Real> gamma_breakpoints(detail::SpringRow<Real>& row, const Real& lo, const Real& hi) {
+  using detail::short_str;
+  const Waveform<Real>& w = row.wave();
+  const Real& beta = row.beta();
+  const std::size_t pieces = w.piece_count();
+  std::vector<Real> cand, tangent;
+  for (std::size_t i = 0; i < pieces; ++i) {
+    cand.push_back(-w.begin_value(i));
+    cand.push_back(-w.end_value(i));
+    const Real s0 = w.begin_slope(i) - beta, s1 = w.end_slope(i) - beta;
+    if ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0)) {
+      const auto exact = w.solve_slope(i, beta);
+      const Real t = exact ? *exact
+                           : detail::bracketed_root<Real>([&](const Real& x) -> Real { return w.slope(i, x) - beta; },
+                                                          w.piece_begin(i), w.piece_end(i), s0, s1, "w' = beta", row.stats());
+      tangent.push_back(t);
+      cand.push_back(-w.value(i, t));
+    }
+  }
+  auto inside = [&](const Real& g) { return g > lo && g < hi; };
+  std::vector<Real> nodes{lo};
+  for (const Real& g : cand)
+    if (inside(g)) nodes.push_back(g);
+  nodes.push_back(hi);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+
+  // Kinks of w and tangency points, as targets a stick end can pass (with the one-sided values
+  // at jumps).
+  struct Target {
+    Real phase, value;
+  };
+  std::vector<Target> targets;
+  for (std::size_t i = 0; i < pieces; ++i) {
+    targets.push_back({w.piece_begin(i), w.begin_value(i)});
+    if (w.jump_at(i)) targets.push_back({w.piece_begin(i), w.end_value((i + pieces - 1) % pieces)});
+  }
+  for (const Real& t : tangent) targets.push_back({t, w(t)});
+
+  std::vector<Real> out(nodes.begin() + 1, nodes.end() - 1);
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const Real &a = nodes[k], &b = nodes[k + 1];
+    if (!(b > a)) continue;
+    const Real m = (a + b) / 2;
+    const Result<Real> rm = row.result(m);
+    for (const auto& st : rm.stick_phases) {
+      if (st.level != 0) continue;  // anchored on n: its events do not move with γ'
+      // Onset: an upward jump out of zero (fixed phase q), or first contact on a rising piece.
+      std::optional<std::size_t> piece;
+      bool at_jump = false;
+      for (std::size_t i = 0; i < pieces; ++i)
+        if (w.jump_at(i) && w.piece_begin(i) == st.begin && !(m + w.end_value((i + pieces - 1) % pieces) > 0)) at_jump = true;
+      if (!at_jump) piece = detail::rising_piece_at(w, st.begin);
+      auto onset = [&](const Real& g) -> Real {
+        if (at_jump) return st.begin;
+        const std::size_t i = *piece;
+        return w.solve_value_root(i, Real(-g), w.piece_begin(i), w.piece_end(i), Real(w.begin_value(i) + g),
+                                  Real(w.end_value(i) + g), row.stats());
+      };
+      // How far the end reaches on [a, b]: it is largest at b.
+      const Real ob = onset(b);
+      Real reach = st.end;
+      const Result<Real> rb = row.result(b);
+      for (const auto& sb : rb.stick_phases) {
+        Real d = sb.begin - ob;
+        if (d < 0) d = -d;
+        if (d < Real(1) / (4 * pieces) && sb.end > reach) reach = sb.end;
+      }
+      for (const Target& tg : targets) {
+        for (int shift = 0; shift <= 2; ++shift) {
+          const Real t = tg.phase + shift;
+          if (!(t > ob) || t > reach) continue;
+          // On the onset's own piece the ramp cannot end (n − ramp rises from the onset, or is
+          // concave and ends beyond the piece): its interior points are no targets, and the
+          // chord to them has only the double root at the onset itself.
+          if (piece && shift == 0 && t > w.piece_begin(*piece) && t < w.piece_end(*piece)) continue;
+          auto F = [&](const Real& g) -> Real { return g + tg.value - beta * (t - onset(g)); };
+          if (at_jump) {
+            const Real g = beta * (t - st.begin) - tg.value;
+            if (inside(g) && g > a && g < b) out.push_back(g);
+            continue;
+          }
+          const Real fa = F(a), fb = F(b);
+          if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0))
+            out.push_back(detail::bracketed_root<Real>(F, a, b, fa, fb, "stick end passes a kink (Eq. 8)", row.stats()));
+        }
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// μ̄/μ0 of a curved contact (model.md MDR), with the integrals and diagnostics. Preconditions
+// as solve(): β > 0 finite, γ finite with γ + max w > 0, and the contact (σ = γ + max w) within
+// the profile (a measured profile ends at its last sample: DomainError beyond). Throws
+// SolverError if a spring, a breakpoint or a quadrature segment fails to converge.
+template <class Real>
+CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& profile, const Real& beta,
+                                const Real& gamma, const Options& opt = {}, Real target = 0) {
+  using detail::short_str;
+  using std::abs;
+  using std::isfinite;
+  detail::check_beta(w, beta);
+  if (!isfinite(gamma)) throw InputError("gamma = " + short_str(gamma) + ": expected a finite number");
+  if (!(gamma + w.maximum() > 0))
+    throw DomainError("gamma = " + short_str(gamma) + " gives no contact for wave " + w.name() +
+                      ": expected gamma > " + short_str(Real(-w.maximum())));
+  const Real sigma_max = gamma + w.maximum();
+  if (sigma_max > profile.sigma_limit())
+    throw DomainError("gamma = " + short_str(gamma) + " for profile " + profile.name() + ": the contact reaches beyond its last sample (sigma = " +
+                      short_str(profile.sigma_limit()) + "): expected gamma <= " + short_str(Real(profile.sigma_limit() - w.maximum())));
+  const std::string where = detail::context(w, beta, &gamma) + ", profile " + profile.name();
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  if (!(target > 0)) target = 64 * eps;
+  // tanh-sinh stops when two levels differ by tol·L1; rounding keeps that difference above a
+  // few eps, so the tolerance is the target but never below 32 eps.
+  const Real tol = opt.quadrature_tolerance > 0 ? Real(opt.quadrature_tolerance) : std::max(target, Real(32 * eps));
+
+  detail::SpringRow<Real> row(w, beta, opt);
+  CurvedResult<Real> r;
+  r.center_jumps = gamma + w.minimum() < 0;
+  r.contact_radius = profile.x_at_sigma(sigma_max);
+  try {
+    const Result<Real> center = row.result(gamma);
+    r.beta_c = center.beta_c;
+    r.gamma_breaks = gamma_breakpoints(row, Real(-w.maximum()), gamma);
+
+    // Breakpoints in t: the γ' breakpoints and the profile's own kinks.
+    const Real t0 = profile.t_at_sigma(Real(0)), t1 = profile.t_at_sigma(sigma_max);
+    std::vector<Real> ts{t0};
+    for (const Real& g : r.gamma_breaks) ts.push_back(profile.t_at_sigma(Real(gamma - g)));
+    for (const Real& t : profile.t_breaks())
+      if (t > t0 && t < t1) ts.push_back(t);
+    ts.push_back(t1);
+    std::sort(ts.begin(), ts.end());
+    ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+
+    Real F = profile.flat_length() * center.retained_area, N = profile.flat_length() * center.normal_area;
+    // Rounding: the springs' bounds, integrated as their largest value times the segment length.
+    Real rounding = profile.flat_length() * center.area_error, lF = abs(F), lN = abs(N), qerr = 0;
+    auto& quad = detail::integrator<Real>(opt.max_quadrature_levels);
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      const Real &a = ts[k], &b = ts[k + 1];
+      if (!(b > a)) continue;
+      std::map<Real, detail::SpringValue<Real>> memo;
+      Real worst = 0;
+      auto spring = [&](const Real& t) -> const detail::SpringValue<Real>& {
+        auto it = memo.find(t);
+        if (it != memo.end()) return it->second;
+        auto v = row.at(Real(gamma - profile.sigma_at_t(t)));
+        const Real wgt = profile.dx_dt(t);
+        v.phi *= wgt;
+        v.n *= wgt;
+        v.err *= abs(wgt);
+        if (v.err > worst) worst = v.err;
+        return memo.emplace(t, v).first->second;
+      };
+      for (int which = 0; which < 2; ++which) {
+        Real err = 0, l1 = 0;
+        std::size_t levels = 0;
+        Real value;
+        try {
+          value = quad.integrate([&](const Real& t) -> Real { return which ? spring(t).n : spring(t).phi; }, a, b, tol,
+                                 &err, &l1, &levels);
+        } catch (const SolverError&) {
+          throw;
+        } catch (const std::exception& e) {
+          throw SolverError(std::string("tanh-sinh quadrature failed: ") + e.what());
+        }
+        // Boost stops early where two levels stop agreeing better (the integrand's rounding):
+        // accepted if half the digits were reached, the estimate then entering the error.
+        using std::sqrt;
+        const bool stalled = levels < opt.max_quadrature_levels && err <= sqrt(eps) * l1;
+        if (!(err <= tol * l1) && !stalled && l1 > 0)
+          throw SolverError(std::string("spring integral of ") + (which ? "N" : "Phi") + " did not converge on t in [" +
+                            short_str(a) + ", " + short_str(b) + "]: error estimate " + short_str(err) + " after " +
+                            std::to_string(levels) + " levels");
+        qerr += err;
+        (which ? N : F) += value;
+        (which ? lN : lF) += l1;
+      }
+      rounding += (b - a) * worst;
+      ++r.segments;
+    }
+    r.friction_integral = F;
+    r.normal_integral = N;
+    r.quadrature_error = qerr;
+    r.springs = row.solves;
+    if (!(beta < r.beta_c)) {
+      r.mu = 1;  // no spring sticks (β_c(γ') ≤ β_c(γ)): Eq. 6 exactly
+      r.relative_error = 0;
+      return r;
+    }
+    r.mu = F / N;
+    if (r.mu > 1) r.mu = 1;  // s ≤ n for every spring: above 1 is rounding
+    const Real unknown = std::numeric_limits<Real>::infinity();
+    r.relative_error = (F > 0 && N > 0) ? Real((qerr + rounding + 4 * eps * lF) / F + (qerr + rounding + 4 * eps * lN) / N)
+                                        : unknown;
+  } catch (const PrecisionError&) {
+    throw;
+  } catch (const SolverError& e) {
+    throw SolverError(where + ": " + e.what());
+  }
+  return r;
+}
+
+}  // namespace vibrofric
