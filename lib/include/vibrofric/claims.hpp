@@ -1,6 +1,8 @@
 // The claims catalogue: one entry per claim of model.md ("The paper's claims that the suite
-// verifies": Eqs. 6, 13, 17, 18, 19, 20–21, 22, 23, 24, Sec. 3, Fig. 3, Fig. 4), plus the
-// statements of model.md itself that the suite found to need correction (β_c table). Each entry
+// verifies": Eqs. 6, 13, 17, 18, 19, 20–21, 22, 23, 24, Sec. 3, Fig. 3, Fig. 4, the abstract's
+// scope statement for curved contacts), the statements of model.md itself that the suite found to
+// need correction (β_c table), and Eq. 6, Sec. 3 and the flat-punch limit carried over to curved
+// contacts by the MDR (model.md, "Curved contacts (MDR)"). Each entry
 // says how the claim is checked; its check runs the high-precision solver and returns the measured
 // deviation and the verdict. A claim is never adjusted to fit: the verdict is what is measured.
 #pragma once
@@ -51,7 +53,8 @@ struct ClaimEntry {
 // The catalogue, in the order of model.md.
 const std::vector<ClaimEntry>& claims_catalogue();
 
-// One claim by key ("eq6", …, "fig4-scaling"); throws InputError for an unknown key.
+// One claim by key ("eq6", …, "fig4-scaling", "beta-c", "scope-wearflat", "scope-numerics",
+// "curved-eq6-sec3", "curved-power-flat"); throws InputError for an unknown key.
 ClaimCheck check_claim(const std::string& key, int digits);
 
 // Every claim at `digits` significant digits (10 to 1000).

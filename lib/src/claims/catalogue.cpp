@@ -18,6 +18,7 @@ namespace {
 const char* const kHighPrecision = "high-precision comparison";
 const char* const kProofAndHP = "symbolic proof + high-precision comparison";
 const char* const kDerivationAndHP = "written derivation + high-precision comparison";
+const char* const kTiming = "high-precision comparison + CPU timing";
 }  // namespace
 
 const std::vector<ClaimEntry>& claims_catalogue() {
@@ -58,6 +59,22 @@ const std::vector<ClaimEntry>& claims_catalogue() {
        "", fig4_scaling},
       {"beta-c", "beta_c", "model.md", "beta_c = 2 pi (sine), 4 (triangle), 2 (str), 4p (power:p), infinite (stl, square)",
        kDerivationAndHP, "proofs/beta_c_sine.md", beta_c_table},
+      // Curved contacts (model.md, "Curved contacts (MDR)"); derivations in lib/src/claims/curved.cpp.
+      {"scope-wearflat", "Abstract, scope (wear flat)", "paper",
+       "the exact solutions hold for a flat-ended cylinder or a curved shape with a wear flat (sphere with a wear flat: "
+       "mu = the flat punch's mu)",
+       kDerivationAndHP, "", scope_wearflat},
+      {"scope-numerics", "Abstract, scope (numerics)", "paper",
+       "the adopted methodology also enables efficient numerical solution in more general cases (curved contacts by "
+       "MDR: a sphere under harmonic oscillation to the requested digits in milliseconds to seconds)",
+       kTiming, "", scope_numerics},
+      {"curved-eq6-sec3", "Eq. 6 + Sec. 3, curved", "model.md",
+       "curved contacts (MDR): beta >= beta_c(gamma) of the central spring => mu = mu0, stick below; static "
+       "coefficient mu_s = int (gamma - 1 - sigma)_+ dx / int N dx: zero iff the central spring jumps (gamma <= 1)",
+       kDerivationAndHP, "", curved_eq6_sec3},
+      {"curved-power-flat", "power:N -> flat", "model.md",
+       "power-law profiles sigma = x^N tend to the flat punch as N -> infinity", kDerivationAndHP, "",
+       curved_power_flat},
   };
   return list;
 }

@@ -169,7 +169,7 @@ inline std::vector<Real> gammas_figure() {
   return reals({"1", "0.8", "0.6", "0.4", "0.2", "0", "-0.2", "-0.4", "-0.6", "-0.8", "-0.999"});
 }
 
-// Check functions, one per catalogue entry (exact.cpp, power.cpp, harmonic.cpp, static.cpp).
+// Check functions, one per catalogue entry (exact.cpp, power.cpp, harmonic.cpp, static.cpp, curved.cpp).
 ClaimCheck eq6(int digits);
 ClaimCheck eq13(int digits);
 ClaimCheck eq17(int digits);
@@ -185,6 +185,11 @@ ClaimCheck fig4_bunching(int digits);
 ClaimCheck fig4_minimum(int digits);
 ClaimCheck fig4_scaling(int digits);
 ClaimCheck beta_c_table(int digits);
+// Curved contacts (curved.cpp).
+ClaimCheck scope_wearflat(int digits);
+ClaimCheck scope_numerics(int digits);
+ClaimCheck curved_eq6_sec3(int digits);
+ClaimCheck curved_power_flat(int digits);
 
 const ClaimEntry& entry(const std::string& key);
 
