@@ -5,6 +5,7 @@ benchmark JSON. Every number in the report comes from a program run here; nothin
 usage: generate.py --tool PATH [--bench-json PATH] [--out DIR] [--digits D]
 """
 import argparse
+import concurrent.futures
 import datetime
 import json
 import math
@@ -33,9 +34,16 @@ class Report:
         os.makedirs(self.data, exist_ok=True)
 
     def sweep(self, wave, beta, gammas, extra=()):
+        """(beta, gamma, mu) rows of `vibrofric sweep`, by the CSV header (with --profile the tool adds a
+        profile column)."""
         text = run([self.tool, "sweep", "--wave", wave, "--beta", beta, "--gamma", ",".join(gammas)] + list(extra))
-        rows = [line.split(",") for line in text.strip().splitlines()[1:]]
-        return [(r[1], r[2], r[3]) for r in rows]
+        lines = text.strip().splitlines()
+        head = lines[0].split(",")
+        ib, ig, im = head.index("beta"), head.index("gamma"), head.index("mu_over_mu0")
+        return [(r[ib], r[ig], r[im]) for r in (line.split(",") for line in lines[1:])]
+
+    def mu(self, wave, beta, gamma, extra=()):
+        return run([self.tool, "mu", "--wave", wave, "--beta", beta, "--gamma=" + gamma] + list(extra)).strip()
 
     def write_data(self, name, blocks, header):
         """blocks: list of (title, rows); gnuplot data blocks separated by two blank lines."""
@@ -169,6 +177,82 @@ unset multiplot
 """ % (plot(2), plot(3)))
 
 
+# ---------------------------------------------------------------------------------------------- curved contacts
+
+def fig4_ball(r):
+    """Fig. 4 for a sphere (MDR, model.md): the harmonic wave for the paper's 11 values of gamma, beside the
+    flat punch (the data of fig4_harmonic, written first)."""
+    rows = by_gamma(r.sweep("sine", "0.02:7:100", GAMMAS_FIG, ["--profile", "sphere", "--digits", "12"]))
+    r.write_data("fig4_ball.dat", [("gamma = " + g, rows[g]) for g in GAMMAS_FIG], "beta mu/mu0 (sine, sphere, MDR)")
+    return r.gnuplot("fig4_ball", """
+set multiplot layout 1,2 title 'Harmonic wave, 11 values of γ: flat punch (left, Fig. 4) and sphere (right, MDR)'
+set xlabel 'β = k_x v_0 / (μ_0 k_z A f)'
+set ylabel 'μ̄ / μ_0'
+set xrange [0:7]
+set yrange [0:1.02]
+set key right bottom font ',11' spacing 0.9
+set title 'flat-ended cylinder'
+plot %s
+set title 'sphere (σ = x²)'
+plot %s
+unset multiplot
+""" % (palette_plot("fig4_harmonic.dat", GAMMAS_FIG), palette_plot("fig4_ball.dat", GAMMAS_FIG)))
+
+
+WEARFLAT_CASES = [("sine", "1.5"), ("sine", "0.5"), ("sine", "-0.5"), ("square", "1.5"), ("square", "-0.5"),
+                  ("triangle", "1.5")]
+
+
+def fig_wearflat(r):
+    """|mu(wearflat:lambda) - mu(flat)| against lambda = b^2/(R A), log-log, beta = 1, at 20 digits
+    (the smallest difference plotted is ~1e-11: 20 digits leave 9 in it)."""
+    lambdas = ["%.6g" % (10 ** (k / 4)) for k in range(17)]
+    jobs = []
+    for wave, g in WEARFLAT_CASES:
+        jobs.append((wave, g, None))
+        jobs += [(wave, g, lam) for lam in lambdas]
+    def one(job):
+        wave, g, lam = job
+        extra = ["--digits", "20"] + (["--profile", "wearflat:" + lam] if lam else [])
+        return r.mu(wave, "1", g, extra)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        values = dict(zip(jobs, pool.map(one, jobs)))
+    blocks = []
+    for wave, g in WEARFLAT_CASES:
+        flat = Fraction(values[(wave, g, None)])
+        blocks.append(("%s, gamma = %s" % (wave, g),
+                       [(lam, "%.6e" % float(abs(Fraction(values[(wave, g, lam)]) - flat))) for lam in lambdas]))
+    r.write_data("wearflat.dat", blocks, "lambda |mu_wearflat - mu_flat| (beta = 1, units of mu0)")
+    cols = ["#1f77b4", "#2ca02c", "#9467bd", "#d62728", "#ff7f0e", "#8c564b"]
+    plots = ", \\\n     ".join("'%s' index %d using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '%s' title '%s, γ = %s'" %
+                               ("wearflat.dat" if i == 0 else "", i, cols[i], w, g)
+                               for i, (w, g) in enumerate(WEARFLAT_CASES))
+    return r.gnuplot("wearflat", """
+set title 'Sphere with a wear flat against the flat punch, β = 1 (the triangle with γ ≤ 1 is exact at every λ)'
+set xlabel 'λ = b² / (R A)   (b: flat radius, R: sphere radius, A: amplitude)'
+set ylabel '|μ̄_{wear flat} − μ̄_{flat}| / μ_0'
+set logscale xy
+set format x '10^{%%L}'
+set format y '10^{%%L}'
+set key left bottom
+plot %s, \\
+     [1:1e4] 0.05/x**2 with lines dt 2 lw 1.5 lc rgb 'black' title '∝ λ^{−2}'
+""" % plots)
+
+
+def closed_form_rows(claims):
+    """The closed forms of curved contacts (curved_closed_forms.hpp) against the solver, from the measured
+    fields "closed form: WAVE, PROFILE, beta = B, gamma = G" -> "closed / solver / relative difference"."""
+    rows = []
+    for c in claims:
+        for name, value in c["measured"]:
+            if name.startswith("closed form: "):
+                wave, prof, b, g = [t.strip() for t in name[len("closed form: "):].split(",")]
+                closed, solver, dev = [t.strip() for t in value.split("/")]
+                rows.append((wave, prof, b.split("=")[1].strip(), g.split("=")[1].strip(), closed, solver, dev))
+    return rows
+
+
 def ulp_error(value_text, ref_text, bits):
     """|value − ref| in units of the last place of ref in a binary type with `bits` mantissa bits."""
     v, ref = Fraction(value_text), Fraction(ref_text)
@@ -289,6 +373,7 @@ def main():
 
     claims = json.loads(run([r.tool, "verify", "--digits", str(a.digits), "--format", "json"]))["claims"]
     figs = {"fig2": fig2_trace(r), "fig3": fig3_square(r), "fig4": fig4_harmonic(r), "power": fig_power_collapse(r)}
+    figs["ball"], figs["wearflat"] = fig4_ball(r), fig_wearflat(r)
     figs["ulp"], ulp_summary = fig_ulp(r)
     cross = crosscheck(r)
     v = versions(r.tool)
@@ -324,7 +409,8 @@ def main():
     w("## Claims")
     w("")
     w("Deviation: the largest relative deviation over the cases checked, except where the criterion says "
-      "otherwise (absolute in units of μ0 for Eq. 23 and Fig. 4; |γ_min − 0.6| for Fig. 4b). Test: the ctest "
+      "otherwise (absolute in units of μ0 for Eq. 23, Fig. 4, the wear flat and power:N → flat; |γ_min − 0.6| for "
+      "Fig. 4b). Test: the ctest "
       "name is `Catalogue/Claim.VerdictIsTheEstablishedOne/KEY` in [`tests/unit/test_claims.cpp`]"
       "(../tests/unit/test_claims.cpp).")
     w("")
@@ -379,11 +465,15 @@ def main():
         w("- **Largest deviation:** %.3g at %s" % (c["deviation"], c["worst"]))
         if c["scope"]:
             w("- **Holds over:** %s" % c["scope"])
-        if c["measured"]:
+        if c["corrected"]:
+            w("- **What holds:** %s" % c["corrected"])
+        # The closed forms of curved contacts have their own table (section "Curved contacts").
+        rows = [(n, v) for n, v in c["measured"] if not n.startswith("closed form: ")]
+        if rows:
             w("")
             w("| measured | value |")
             w("|---|---|")
-            for name, value in c["measured"]:
+            for name, value in rows:
                 w("| %s | %s |" % (md_escape(name), md_escape(value)))
         w("")
     w("## Exact claims: how each was checked")
@@ -432,6 +522,7 @@ def main():
     for wave, g, name, mx, rms, wb in ulp_summary:
         w("| %s | %s | %s | %.3g | %.3g | %s |" % (wave, g, name, mx, rms, wb))
     w("")
+    curved_section(w, claims, figs, a.bench_json)
     bench_section(w, a.bench_json, r)
     w("## Reproduce")
     w("")
@@ -442,6 +533,135 @@ def main():
     w("```")
     with open(os.path.join(a.out, "VERIFICATION.md"), "w") as f:
         f.write("\n".join(L) + "\n")
+
+
+def claim(claims, key):
+    for c in claims:
+        if c["key"] == key:
+            return c
+    return None
+
+
+def measured_dict(c):
+    return dict(c["measured"]) if c else {}
+
+
+def curved_section(w, claims, figs, bench_json):
+    """Curved contacts (model.md, "Curved contacts (MDR)"): Fig. 4 for the ball, the wear flat's approach to
+    the flat punch, the closed forms, the static coefficient and the cost, from the tool and `verify`."""
+    w("## Curved contacts")
+    w("")
+    w("By the method of dimensionality reduction (`model.md`, \"Curved contacts (MDR)\") a curved indenter is a "
+      "row of flat-punch springs at the shifted mean indentations γ' = γ − σ(x), and μ̄/μ0 = ∫Φ dx / ∫N dx "
+      "(`curved.hpp`, `vibrofric mu|sweep --profile`). The claims about curved contacts are in the table above: "
+      "the abstract's scope statement in its two halves (`scope-wearflat`, `scope-numerics`), Eq. 6 and Sec. 3 for "
+      "a row of springs (`curved-eq6-sec3`) and the flat-punch limit of the power-law profiles "
+      "(`curved-power-flat`); their derivations head [`lib/src/claims/curved.cpp`](../lib/src/claims/curved.cpp).")
+    w("")
+    cap = ("Fig. 4 for a ball: harmonic wave, the paper's 11 values of γ (−1 drawn at −0.999), flat punch (left) and "
+           "sphere (right), `vibrofric sweep --wave sine --profile sphere --beta 0.02:7:100 --gamma … --digits 12`.")
+    w("![%s](%s)" % (cap, figs["ball"]))
+    w("")
+    w("*%s*" % cap)
+    w("")
+    wf = claim(claims, "scope-wearflat")
+    cap = ("A sphere with a wear flat of radius b against the flat punch, β = 1, over λ = b²/(R A) (`vibrofric mu "
+           "--profile wearflat:λ --digits 20`); the dashed line has slope −2.")
+    w("![%s](%s)" % (cap, figs["wearflat"]))
+    w("")
+    w("*%s*" % cap)
+    w("")
+    if wf:
+        w("**Abstract, scope (wear flat): %s.** %s. %s" % (wf["verdict"], wf["scope"][:1].upper() + wf["scope"][1:],
+                                                           "What holds: " + wf["corrected"] + "." if wf["corrected"] else ""))
+        w("")
+        rows = [(n, v) for n, v in wf["measured"] if n.split(":")[0].count(",") == 1 and "D(lambda)" in n]
+        if rows:
+            w("| wave, γ | D(1) | D(10) | D(100) | D(10³) | D(10⁴) | order | C(β) = lim λ²(μ_wf − μ_flat) |")
+            w("|---|---|---|---|---|---|---|---|")
+            for name, value in rows:
+                ds, order, cs = [t.strip() for t in value.split(";")]
+                betas = name.split("C for beta = ")[1]
+                w("| %s | %s | %s | %s |" % (name.split(":")[0], " | ".join(d.strip() for d in ds.split(",")), order,
+                                             "%s (β = %s)" % (cs, betas)))
+            w("")
+            w("D(λ): the largest |μ_wf − μ_flat| over β, in units of μ0; C from the derived first moments "
+              "(`curved.cpp`). %s" % "; ".join("%s: %s" % (n, v) for n, v in wf["measured"]
+                                               if n.startswith("largest relative |lambda^2") or n.startswith("triangle, gamma <= 1")))
+            w("")
+    w("### Closed forms for curved contacts")
+    w("")
+    rows = closed_form_rows(claims)
+    if rows:
+        w("The closed forms of [`curved_closed_forms.hpp`](../lib/include/vibrofric/curved_closed_forms.hpp) (triangle and "
+          "square; power-law profiles σ = xⁿ and the wear-flat sphere) against the curved solver, at the report's "
+          "digits (`verify`, claim `scope-wearflat`):")
+        w("")
+        w("| wave | profile | β | γ | closed form | solver | relative difference |")
+        w("|---|---|---|---|---|---|---|")
+        for row in rows:
+            w("| %s |" % " | ".join(row))
+        w("")
+    else:
+        w("> **Placeholder.** No closed forms in this build: `lib/include/vibrofric/curved_closed_forms.hpp` was not "
+          "present when `vibrofric` was built, so `verify` measured none. When it is, this table lists them against "
+          "the solver (measured fields `closed form: …` of the claim `scope-wearflat`).")
+        w("")
+    st = claim(claims, "curved-eq6-sec3")
+    if st:
+        w("### Static coefficient of a curved contact")
+        w("")
+        w("**%s: %s.** %s." % (st["id"], st["verdict"], st["scope"][:1].upper() + st["scope"][1:]))
+        w("")
+        w("| case | static coefficient μ_s (derived) / μ̄(β) |")
+        w("|---|---|")
+        for name, value in st["measured"]:
+            if "static coefficient mu_s" in name:
+                w("| %s | %s |" % (md_escape(name.split(": static")[0]), md_escape(value)))
+        w("")
+    nu = claim(claims, "scope-numerics")
+    if nu:
+        w("### Cost")
+        w("")
+        w("**%s: %s** — %s." % (nu["id"], nu["verdict"], nu["scope"]))
+        for name, value in nu["measured"]:
+            if name.startswith("CPU time") or name.startswith("slowest") or name.startswith("largest relative error"):
+                w("- %s: %s" % (name, value))
+        w("")
+        curved_bench_table(w, bench_json)
+
+
+def curved_bench_table(w, path):
+    """The curved-contact benchmarks of bench/results (speed/<wave>+<profile>/<path>), if the run has them."""
+    if not os.path.exists(path):
+        return
+    doc = json.load(open(path))
+    curved = doc.get("vibrofric", {}).get("summary", {}).get("curved", {})
+    if not curved:
+        return
+    w("From the benchmark run (`bench/run`, CPU time per evaluation, median; see the benchmark section below):")
+    w("")
+    w("| case | path | CPU time | relative error | note |")
+    w("|---|---|---|---|---|")
+    for case, paths in sorted(curved.items()):
+        for name, e in paths.items():
+            t = e.get("cpu_ns")
+            err = e.get("rel_error")
+            w("| %s | %s | %s | %s | %s |" % (case, name, fmt_time(t), "-" if err is None else "%.1e" % err,
+                                              md_escape(e.get("note", ""))))
+    w("")
+
+
+def fmt_time(ns):
+    if ns is None:
+        return "-"
+    if ns >= 1e9:
+        return "%.3g s" % (ns / 1e9)
+    if ns >= 1e6:
+        return "%.3g ms" % (ns / 1e6)
+    if ns >= 1e3:
+        return "%.3g µs" % (ns / 1e3)
+    return "%.3g ns" % ns
 
 
 def readme_command(marker):
