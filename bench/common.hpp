@@ -104,5 +104,6 @@ void register_speed_long_double();
 void register_speed_mpfr();
 void register_speed_bin50();
 void register_accuracy();
+void register_curved();
 
 }  // namespace vibrofric::bench

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   register_speed_long_double();
   register_speed_bin50();
   register_speed_mpfr();
+  register_curved();
 
   benchmark::Initialize(&rest_argc, rest.data());
   if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 2;
