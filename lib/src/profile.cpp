@@ -92,6 +92,17 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
       if (compare_decimal(tok[1], s.f.back()) < 0)
         throw InputError(where + ": f = " + as_typed(tok[1]) + " is below the previous " + s.f.back() +
                          ": expected a non-decreasing profile (MDR needs f' >= 0)");
+      // A slope that drops (a concave corner at r_j) makes g' → −∞ just beyond r_j: g is then
+      // not monotone and no contact radius exists. (f2 − f1)(r1 − r0) ≥ (f1 − f0)(r2 − r1), exactly.
+      if (s.r.size() >= 2) {
+        PrecisionScope scope(400);
+        const std::size_t k = s.r.size();
+        const mpfr r0(s.r[k - 2]), r1(s.r[k - 1]), r2(tok[0]), f0(s.f[k - 2]), f1(s.f[k - 1]), f2(tok[1]);
+        if ((f2 - f1) * (r1 - r0) < (f1 - f0) * (r2 - r1))
+          throw InputError(where + ": the slope drops at r = " + s.r[k - 1] +
+                           " (a concave corner): expected a convex profile, slopes non-decreasing in r, as the MDR "
+                           "transform g(x) is monotone only then (smooth or convexify the measurement)");
+      }
     }
     if (s.r.size() == max_samples)
       throw InputError("profile file " + as_typed(path) + " has more than " + std::to_string(max_samples) + " samples");

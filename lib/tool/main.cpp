@@ -17,9 +17,11 @@
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/claims.hpp"
+#include "vibrofric/curved.hpp"
 #include "vibrofric/detail/evaluate_impl.hpp"
 #include "vibrofric/evaluate.hpp"
 #include "vibrofric/physical.hpp"
+#include "vibrofric/profile.hpp"
 
 namespace {
 
@@ -32,9 +34,9 @@ const char* const kUsage =
     "coefficient of friction mu/mu0 = g_w(beta, gamma) and the reduction function Psi_w(beta).\n"
     "\n"
     "commands:\n"
-    "  mu        mu/mu0 at one point:        --wave W --beta B --gamma G\n"
+    "  mu        mu/mu0 at one point:        --wave W --beta B --gamma G [--profile P]\n"
     "  psi       Psi_w(beta), non-jumping:   --wave W --beta B\n"
-    "  sweep     CSV over beta and gamma:    --wave W --beta FROM:TO:N --gamma G1,G2,...\n"
+    "  sweep     CSV over beta and gamma:    --wave W --beta FROM:TO:N --gamma G1,G2,... [--profile P]\n"
     "  physical  from physical inputs (SI):  see 'vibrofric physical --help'\n"
     "  verify    decide every claim of the paper (Eqs. 6-24, Sec. 3, Figs. 3-4) and model.md's beta_c\n"
     "            table at --digits D (10 to 1000, default 50); --claim KEY for one (e.g. eq24);\n"
@@ -48,6 +50,11 @@ const char* const kUsage =
     "  --type T     double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr\n"
     "  --no-escalate=1  fixed types: print the value computed in the type even where its\n"
     "               rounding bound exceeds the type's epsilon (default: recompute with mpfr)\n"
+    "\n"
+    "profiles P (mu, sweep; model.md MDR): flat (default: the flat punch), sphere, cone, power:N\n"
+    "  (N >= 1, sigma = x^N), wearflat:LAMBDA (sphere with a wear flat, LAMBDA = b^2/(R A) > 0),\n"
+    "  profile:FILE (lines 'r f', f(0) = 0, f non-decreasing, heights in units of the amplitude A).\n"
+    "  psi is flat-punch only: the outer springs of a curved contact always jump.\n"
     "\n"
     "waves W: sine (harmonic), triangle (tri), sawtooth-right (str), sawtooth-left (stl),\n"
     "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
@@ -67,13 +74,21 @@ const char* const kUsage =
 
 const char* const kPhysicalUsage =
     "usage: vibrofric physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA]\n"
-    "                          --radius M --v0 M/S --f HZ --A M --u-mean M --mu0 MU\n"
+    "                          --v0 M/S --f HZ --A M --u-mean M --mu0 MU [--shape S GEOMETRY]\n"
     "                          [--digits D | --type T]\n"
     "\n"
-    "Flat-ended cylinder of radius a (Eq. 1): k_z = 2 E* a, k_x = 2 G* a, with\n"
-    "1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2);\n"
-    "G defaults to E/(2(1 + nu)). Then beta = k_x v0/(mu0 k_z A f) (Eq. 5), gamma = u_mean/A\n"
-    "(Eq. 14). Prints E*, G*, k_z, k_x, beta, gamma, mu/mu0 and mu, one 'name = value' a line.\n";
+    "1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) (Eq. 1);\n"
+    "G defaults to E/(2(1 + nu)). beta = G* v0/(mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14);\n"
+    "A is the zero-to-peak amplitude, u_mean the mean indentation of the indenter's tip.\n"
+    "shapes S and their GEOMETRY (metres, degrees):\n"
+    "  flat (default) --radius a          flat-ended cylinder: k_z = 2 E* a, k_x = 2 G* a (Eq. 1)\n"
+    "  sphere --R R                       MDR (model.md), sigma = x^2/(R A)\n"
+    "  cone --half-angle THETA            angle between axis and flank, in degrees\n"
+    "  wearflat --R R --flat-radius b     sphere with a wear flat, lambda = b^2/(R A)\n"
+    "  profile:FILE                       measured profile, lines 'r f' in metres, f(0) = 0\n"
+    "Prints one 'name = value' a line: shape, E*, G*, k_z and k_x (flat) or the largest contact\n"
+    "radius (curved), lambda (wearflat), beta, gamma, mu/mu0, mu, and the mean normal and friction\n"
+    "forces <F_N>, <F_x> in newtons.\n";
 
 struct Args {
   std::string command;
@@ -210,12 +225,21 @@ Options parse_solver_options(const Args& a) {
   return o;
 }
 
+ProfileSpec parse_profile_flag(const Args& a) {
+  return a.flags.count("profile") ? parse_profile(a.flags.at("profile")) : ProfileSpec{};
+}
+
 int run_mu_psi(const Args& a, Quantity q) {
   const WaveSpec wave = parse_wave(need(a, "wave"));
   Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
   check_decimal(p.beta, "--beta");
   if (q == Quantity::mu) check_decimal(p.gamma, "--gamma");
   BatchOptions opt;
+  opt.profile = parse_profile_flag(a);
+  if (q == Quantity::psi && opt.profile.kind != ProfileKind::flat)
+    throw InputError("psi --profile " + a.flags.at("profile") +
+                     ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
+                     "so Eq. 13's separation does not exist (use mu)");
   opt.escalate = !a.flags.count("no-escalate");
   opt.solver = parse_solver_options(a);
   std::cout << evaluate(wave, q, {p}, parse_precision(a), opt).front() << '\n';
@@ -232,6 +256,7 @@ int run_sweep(const Args& a) {
   for (const auto& g : gammas)
     for (const auto& b : betas) points.push_back({b, g});
   BatchOptions opt;
+  opt.profile = parse_profile_flag(a);
   opt.escalate = !a.flags.count("no-escalate");
   opt.solver = parse_solver_options(a);
   opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
@@ -243,9 +268,15 @@ int run_sweep(const Args& a) {
       if (done == points.size()) std::fprintf(stderr, "\n");
     };
   const auto values = evaluate(wave, Quantity::mu, points, prec, opt);
-  std::cout << "wave,beta,gamma,mu_over_mu0\n";
-  for (std::size_t i = 0; i < points.size(); ++i)
-    std::cout << wave.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
+  if (opt.profile.kind == ProfileKind::flat) {
+    std::cout << "wave,beta,gamma,mu_over_mu0\n";
+    for (std::size_t i = 0; i < points.size(); ++i)
+      std::cout << wave.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
+  } else {
+    std::cout << "wave,profile,beta,gamma,mu_over_mu0\n";
+    for (std::size_t i = 0; i < points.size(); ++i)
+      std::cout << wave.name << ',' << opt.profile.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
+  }
   return 0;
 }
 
@@ -258,30 +289,85 @@ int run_physical(const Args& a) {
   auto opt = [&](const char* name) {
     return a.flags.count(name) ? parse_real<mpfr>(a.flags.at(name), std::string("--") + name) : mpfr(0);
   };
+  auto positive = [&](const char* name) {
+    const mpfr v = get(name);
+    if (!(v > 0)) throw InputError(std::string("--") + name + " = " + a.flags.at(name) + ": expected a value > 0");
+    return v;
+  };
+  // The indenter (model.md MDR): which geometry flags it takes, its profile and length unit L.
+  const std::string shape = a.flags.count("shape") ? a.flags.at("shape") : "flat";
+  const std::map<std::string, std::set<std::string>> geometry{
+      {"flat", {"radius"}}, {"sphere", {"R"}}, {"cone", {"half-angle"}}, {"wearflat", {"R", "flat-radius"}}, {"profile", {}}};
+  const std::string kind = shape.rfind("profile:", 0) == 0 ? "profile" : shape;
+  if (!geometry.count(kind))
+    throw InputError("--shape '" + shape + "': expected flat, sphere, cone, wearflat or profile:FILE");
+  for (const char* g : {"radius", "R", "half-angle", "flat-radius"})
+    if (a.flags.count(g) && !geometry.at(kind).count(g))
+      throw InputError(std::string("--") + g + " does not apply to --shape " + shape);
+  const mpfr A = positive("A");
   PhysicalInput<mpfr> in{get("E1"), get("nu1"), get("E2"), get("nu2"), opt("G1"), opt("G2"),
-                         get("radius"), get("v0"), get("f"), get("A"), get("u-mean"), get("mu0")};
+                         kind == "flat" ? positive("radius") : mpfr(0), get("v0"), get("f"), A, get("u-mean"), get("mu0")};
   if (a.flags.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + a.flags.at("G1") + ": expected a value > 0");
   if (a.flags.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + a.flags.at("G2") + ": expected a value > 0");
   const auto g = physical_groups(in);
+  BatchOptions options;
+  mpfr length = 1;
+  std::string lambda;
+  if (kind == "sphere") {
+    options.profile = parse_profile("sphere");
+    length = sphere_length(positive("R"), A);
+  } else if (kind == "cone") {
+    const mpfr theta = positive("half-angle");
+    if (!(theta < 90)) throw InputError("--half-angle = " + a.flags.at("half-angle") + ": expected degrees in (0, 90)");
+    options.profile = parse_profile("cone");
+    length = cone_length(theta, A);
+  } else if (kind == "wearflat") {
+    const mpfr R = positive("R"), b = positive("flat-radius");
+    lambda = format_significant(mpfr(b * b / (R * A)), digits + 15);
+    options.profile = parse_profile("wearflat:" + lambda);
+    length = b;
+  } else if (kind == "profile") {
+    options.profile = parse_profile(shape);
+    options.profile.height_unit = a.flags.at("A");  // heights in metres, the library's in units of A
+  }
   const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
   // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  BatchOptions options;
   options.escalate = !a.flags.count("no-escalate");
   options.solver = parse_solver_options(a);
   const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
   const mpfr mu = mpfr(ratio_fine) * in.mu0;
+  // ⟨F_N⟩ = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope.
+  const auto w = make_waveform<mpfr>(wave);
+  mpfr normal, edge;
+  if (kind == "flat") {
+    normal = solve(*w, mpfr(beta), mpfr(gamma), options.solver).normal_area;
+  } else {
+    const auto p = make_profile<mpfr>(options.profile);
+    const auto r = solve_curved(*w, *p, mpfr(beta), mpfr(gamma), options.solver, mpfr(pow(mpfr(10), -digits - 5)));
+    normal = r.normal_integral;
+    edge = r.contact_radius;
+  }
+  const mpfr force = kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
   auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
+  std::cout << "shape = " << (kind == "profile" ? shape : kind) << '\n';
   line("E_star_Pa", g.E_star);
   line("G_star_Pa", g.G_star);
-  line("k_z_N_per_m", g.k_z);
-  line("k_x_N_per_m", g.k_x);
+  if (kind == "flat") {
+    line("k_z_N_per_m", g.k_z);
+    line("k_x_N_per_m", g.k_x);
+  } else {
+    line("contact_radius_max_m", mpfr(length * edge));
+  }
+  if (!lambda.empty()) line("lambda", mpfr(lambda));
   line("beta", g.beta);
   line("gamma", g.gamma);
   std::cout << "mu_over_mu0 = " << mu_ratio << '\n';
   line("mu", mu);
+  line("F_N_mean_N", force);
+  line("F_x_mean_N", mpfr(mu * force));
   return 0;
 }
 
@@ -411,10 +497,11 @@ int main(int argc, char** argv) {
     return s;
   };
   const std::map<std::string, std::set<std::string>> allowed{
-      {"mu", with({"wave", "beta", "gamma"})},
-      {"psi", with({"wave", "beta"})},
-      {"sweep", with({"wave", "beta", "gamma", "threads"})},
-      {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "mu0"})},
+      {"mu", with({"wave", "beta", "gamma", "profile"})},
+      {"psi", with({"wave", "beta", "profile"})},
+      {"sweep", with({"wave", "beta", "gamma", "threads", "profile"})},
+      {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "mu0", "shape",
+                         "R", "flat-radius", "half-angle"})},
       {"verify", {"digits", "claim", "format"}},
       {"trace", {"wave", "beta", "gamma", "points", "digits"}},
       {"version", {}},

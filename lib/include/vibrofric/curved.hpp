@@ -7,9 +7,10 @@
 // tanh-sinh between breakpoints. Φ_w(β, ·) and N_w(·) are analytic in γ' between the values
 // where the flat-punch event structure changes; those are found from the structure itself
 // (gamma_breakpoints below), never from a grid, and each is a breakpoint of the x-integral,
-// as are the profile's own kinks. Endpoint singularities (the contact edge, the profile's
-// square-root onsets) are left to tanh-sinh, which converges doubly exponentially through them;
-// the wear-flat sphere is integrated in σ, where x(σ) is analytic.
+// as are the profile's own kinks. At a breakpoint the integrand behaves like a power of the
+// square root of the distance (contact edge, stick appearing, σ beyond a profile's kink):
+// each segment is mapped by t = a + (b − a) u²(3 − 2u), which makes that analytic in u. The
+// wear-flat sphere is integrated in σ, where x(σ) is analytic.
 //
 // Not for: Ψ (Eq. 12). The outer springs of a curved contact always jump, so Eq. 13's
 // separation of α and β does not exist there.
@@ -234,33 +235,54 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
 
+    // β ≥ β_c(γ) ≥ β_c(γ') for every spring (β_c grows with γ'): no stick anywhere, Φ = N (Eq. 6).
+    const bool sticks = beta < center.beta_c;
     Real F = profile.flat_length() * center.retained_area, N = profile.flat_length() * center.normal_area;
     // Rounding: the springs' bounds, integrated as their largest value times the segment length.
     Real rounding = profile.flat_length() * center.area_error, lF = abs(F), lN = abs(N), qerr = 0;
+    std::vector<std::map<Real, detail::SpringValue<Real>>> memo(ts.size());
+    std::vector<Real> worst(ts.size(), Real(0));
+    auto spring = [&](std::size_t k, const Real& t) -> const detail::SpringValue<Real>& {
+      auto it = memo[k].find(t);
+      if (it != memo[k].end()) return it->second;
+      auto v = row.at(Real(gamma - profile.sigma_at_t(t)));
+      const Real wgt = profile.dx_dt(t);
+      v.phi *= wgt;
+      v.n *= wgt;
+      v.err *= abs(wgt);
+      if (v.err > worst[k]) worst[k] = v.err;
+      return memo[k].emplace(t, v).first->second;
+    };
+    // The accuracy asked of a segment is relative to the whole integral (N ≥ Φ ≥ 0), estimated
+    // by the midpoint rule first: a segment between two nearly equal breakpoints then needs only
+    // Boost's four levels, not digits it cannot reach relative to its own tiny size.
+    Real scale = N;
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k)
+      if (ts[k + 1] > ts[k]) scale += (ts[k + 1] - ts[k]) * spring(k, Real((ts[k] + ts[k + 1]) / 2)).n;
+    using std::sqrt;
     auto& quad = detail::integrator<Real>(opt.max_quadrature_levels);
     for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
       const Real &a = ts[k], &b = ts[k + 1];
       if (!(b > a)) continue;
-      std::map<Real, detail::SpringValue<Real>> memo;
-      Real worst = 0;
-      auto spring = [&](const Real& t) -> const detail::SpringValue<Real>& {
-        auto it = memo.find(t);
-        if (it != memo.end()) return it->second;
-        auto v = row.at(Real(gamma - profile.sigma_at_t(t)));
-        const Real wgt = profile.dx_dt(t);
-        v.phi *= wgt;
-        v.n *= wgt;
-        v.err *= abs(wgt);
-        if (v.err > worst) worst = v.err;
-        return memo.emplace(t, v).first->second;
+      const Real size = (b - a) * spring(k, Real((a + b) / 2)).n;
+      const Real seg_tol = size > tol * scale ? std::min(Real(tol * scale / size), Real(sqrt(eps))) : Real(sqrt(eps));
+      // t = a + (b − a) u²(3 − 2u): dt/du vanishes at both ends, so the square-root behaviour
+      // there (σ beyond a profile's kink, Φ and N where contact or stick begins) becomes analytic in u.
+      const Real width = b - a;
+      auto at_u = [&](const Real& u, bool n) -> Real {
+        const Real t = u < Real(1) / 2 ? Real(a + width * u * u * (3 - 2 * u))
+                                       : Real(b - width * (1 - u) * (1 - u) * (1 + 2 * u));
+        if (!(t > a) || !(t < b)) return Real(0);  // dt/du = 0 at the ends
+        const auto& v = spring(k, t);
+        return (n ? v.n : v.phi) * 6 * width * u * (1 - u);
       };
-      for (int which = 0; which < 2; ++which) {
+      for (int which = sticks ? 0 : 1; which < 2; ++which) {
         Real err = 0, l1 = 0;
         std::size_t levels = 0;
         Real value;
         try {
-          value = quad.integrate([&](const Real& t) -> Real { return which ? spring(t).n : spring(t).phi; }, a, b, tol,
-                                 &err, &l1, &levels);
+          value = quad.integrate([&](const Real& u) -> Real { return at_u(u, which == 1); }, Real(0), Real(1), seg_tol, &err,
+                                 &l1, &levels);
         } catch (const SolverError&) {
           throw;
         } catch (const std::exception& e) {
@@ -268,25 +290,28 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
         }
         // Boost stops early where two levels stop agreeing better (the integrand's rounding):
         // accepted if half the digits were reached, the estimate then entering the error.
-        using std::sqrt;
         const bool stalled = levels < opt.max_quadrature_levels && err <= sqrt(eps) * l1;
-        if (!(err <= tol * l1) && !stalled && l1 > 0)
+        if (!(err <= seg_tol * l1) && !(err <= tol * scale) && !stalled && l1 > 0)
           throw SolverError(std::string("spring integral of ") + (which ? "N" : "Phi") + " did not converge on t in [" +
                             short_str(a) + ", " + short_str(b) + "]: error estimate " + short_str(err) + " after " +
                             std::to_string(levels) + " levels");
         qerr += err;
         (which ? N : F) += value;
         (which ? lN : lF) += l1;
+        if (!sticks) {
+          F += value;
+          lF += l1;
+        }
       }
-      rounding += (b - a) * worst;
+      rounding += (b - a) * worst[k];
       ++r.segments;
     }
     r.friction_integral = F;
     r.normal_integral = N;
     r.quadrature_error = qerr;
     r.springs = row.solves;
-    if (!(beta < r.beta_c)) {
-      r.mu = 1;  // no spring sticks (β_c(γ') ≤ β_c(γ)): Eq. 6 exactly
+    if (!sticks) {
+      r.mu = 1;  // Eq. 6 exactly
       r.relative_error = 0;
       return r;
     }

@@ -1,5 +1,6 @@
 // Evaluation at a requested precision, from decimal strings to decimal strings: the layer under
-// the `vibrofric` tool. μ̄/μ0 (Eq. 15) or Ψ_w(β) (Eq. 12) for a batch of points, in parallel.
+// the `vibrofric` tool. μ̄/μ0 (Eq. 15; curved profiles by MDR, model.md) or Ψ_w(β) (Eq. 12) for a
+// batch of points, in parallel.
 //
 // For mpfr the working precision is the requested digits plus guard digits, raised
 // automatically while the solver's error estimate says the requested digits are not reached.
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "vibrofric/catalogue.hpp"
+#include "vibrofric/profile.hpp"
 #include "vibrofric/solver.hpp"
 
 namespace vibrofric {
@@ -41,6 +43,9 @@ struct Point {
 
 struct BatchOptions {
   Options solver;
+  // The indenter (model.md, MDR): flat (the paper's flat punch) or a curved profile, whose μ̄
+  // integrates flat-punch springs (curved.hpp). Ψ exists for the flat punch only.
+  ProfileSpec profile;
   // Hardware and fixed types: where the solver's rounding bound exceeds the type's epsilon
   // (β → 0, γ → −min w), recompute with mpfr and round to the type (like Boost.Math's
   // promote_double). Off: the value computed in the type, whatever its error.

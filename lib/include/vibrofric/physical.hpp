@@ -1,6 +1,12 @@
 // Physical inputs to the dimensionless groups: Eq. 1 (stiffness of a flat-ended cylinder),
-// Eq. 5 (α, β), Eq. 14 (γ = 1/α). SI units throughout.
+// Eq. 5 (α, β), Eq. 14 (γ = 1/α), and for curved indenters the MDR scales of model.md ("Curved
+// contacts"): each spring of the row has stiffnesses E* dx and G* dx, so β = G* v0/(μ0 E* A f) as
+// for the punch, and ⟨F_N⟩ = 2 E* A L ∫N dx over the half-row in the profile's units, x = L·x'.
+// SI units throughout.
 #pragma once
+#include <boost/math/constants/constants.hpp>
+
+#include <cmath>
 #include <string>
 
 #include "vibrofric/detail/roots.hpp"
@@ -45,7 +51,7 @@ PhysicalGroups<Real> physical_groups(const PhysicalInput<Real>& in) {
   poisson(in.nu2, "nu2");
   if (in.G1 < 0) positive(in.G1, "G1");
   if (in.G2 < 0) positive(in.G2, "G2");
-  positive(in.radius, "radius");
+  if (in.radius != 0) positive(in.radius, "radius");  // 0: a curved indenter, no punch stiffness
   positive(in.v0, "v0");
   positive(in.f, "f");
   positive(in.A, "A");
@@ -57,9 +63,25 @@ PhysicalGroups<Real> physical_groups(const PhysicalInput<Real>& in) {
   g.G_star = 1 / ((2 - in.nu1) / (4 * G1) + (2 - in.nu2) / (4 * G2));
   g.k_z = 2 * g.E_star * in.radius;
   g.k_x = 2 * g.G_star * in.radius;
-  g.beta = g.k_x * in.v0 / (in.mu0 * g.k_z * in.A * in.f);
+  g.beta = g.G_star * in.v0 / (in.mu0 * g.E_star * in.A * in.f);  // = k_x v0/(μ0 k_z A f): the radius cancels
   g.gamma = in.u_mean / in.A;
   return g;
+}
+
+// The MDR length unit L of a curved indenter (x = L·x', x' the profile's coordinate of
+// profile.hpp), for amplitude A: sphere of radius R (σ = x²/(R A), L = √(R A)); cone of half-angle
+// θ between axis and flank (f = r cot θ, g = (π/2) cot θ |x|, L = 2 A tan θ/π); wear-flat sphere
+// (x in units of the flat radius b: L = b, λ = b²/(R A)); measured profile in metres (L = 1).
+template <class Real>
+Real sphere_length(const Real& R, const Real& A) {
+  using std::sqrt;
+  return sqrt(R * A);
+}
+template <class Real>
+Real cone_length(const Real& half_angle_degrees, const Real& A) {
+  using std::tan;
+  const Real pi = boost::math::constants::pi<Real>();
+  return 2 * A * tan(half_angle_degrees * pi / 180) / pi;
 }
 
 }  // namespace vibrofric

@@ -7,7 +7,8 @@
 //   σ = λ x √(x² − 1) beyond.
 // - profile:FILE: measured f(r) as samples 'r f', piecewise linear, f(0) = 0, f non-decreasing,
 //   heights in units of the amplitude A (the tool's physical command reads metres and divides);
-//   r in any unit. g is exact per segment: ∫ dr/√(x² − r²) = asin(r/x).
+//   r in any unit; f convex (slopes non-decreasing), else g is not monotone. g is exact per
+//   segment: ∫ dr/√(x² − r²) = asin(r/x).
 // The spring integral runs over a variable t of the profile's choice: x for power laws and
 // measured profiles, σ itself beyond the flat for the wear-flat sphere (x(σ) is smooth there,
 // while σ(x) has a square-root onset at x = 1).
@@ -32,6 +33,7 @@ struct ProfileSpec {
   std::string name;       // canonical: "flat", "power:2", "wearflat:0.5", "profile:FILE"
   std::string parameter;  // N of power:N, λ of wearflat:λ, as written
   std::vector<std::string> r, f;  // profile:FILE samples, as written
+  std::string height_unit = "1";   // profile:FILE heights are divided by this (physical: A in metres)
 };
 
 // Accepts flat, power:N (N ≥ 1), sphere, cone, wearflat:LAMBDA (λ > 0), profile:FILE.
@@ -40,7 +42,7 @@ ProfileSpec parse_profile(const std::string& text);
 
 // Reads a measured profile: lines 'r f' ('#' comments, blank lines ignored; comma, semicolon or
 // whitespace between the two fields), r strictly increasing from r = 0, f(0) = 0, f
-// non-decreasing, at least two samples, at most 100000.
+// non-decreasing and convex (slopes non-decreasing), at least two samples, at most 100000.
 ProfileSpec parse_profile_file(const std::string& path, const std::string& text);
 
 template <class Real>
@@ -143,7 +145,13 @@ class MeasuredProfile final : public Profile<Real> {
  public:
   MeasuredProfile(std::vector<Real> r, std::vector<Real> f, std::string name)
       : Profile<Real>(std::move(name), ProfileKind::measured), r_(std::move(r)), f_(std::move(f)) {
-    for (std::size_t j = 0; j + 1 < r_.size(); ++j) m_.push_back((f_[j + 1] - f_[j]) / (r_[j + 1] - r_[j]));
+    // Slopes non-decreasing (parse_profile_file checked it exactly): rounding in this type must
+    // not make one drop, or g would dip.
+    for (std::size_t j = 0; j + 1 < r_.size(); ++j) {
+      Real m = (f_[j + 1] - f_[j]) / (r_[j + 1] - r_[j]);
+      if (j > 0 && m < m_.back()) m = m_.back();
+      m_.push_back(m);
+    }
     flat_ = 0;
     for (std::size_t j = 0; j < m_.size() && m_[j] == 0; ++j) flat_ = j + 1;
     if (flat_ == m_.size())
@@ -177,16 +185,17 @@ class MeasuredProfile final : public Profile<Real> {
   const std::vector<Real>& heights() const { return f_; }
 
  private:
+  // Summed by parts: g(x) = x Σ_{r_j < x} (m_j − m_{j−1}) acos(r_j/x), every term ≥ 0 (convex f), and
+  // acos(r/x) = atan2(√((x − r)(x + r)), r) keeps its relative accuracy as x → r_j.
   Real g(const Real& x) const {
-    using std::asin;
-    using std::min;
+    using std::atan2;
+    using std::sqrt;
     if (!(x > 0)) return Real(0);
-    const Real half_pi = boost::math::constants::half_pi<Real>();
     Real sum = 0;
     for (std::size_t j = 0; j < m_.size() && r_[j] < x; ++j) {
-      if (m_[j] == 0) continue;
-      const Real upper = r_[j + 1] >= x ? half_pi : Real(asin(Real(r_[j + 1] / x)));
-      sum += m_[j] * (upper - asin(Real(r_[j] / x)));
+      const Real dm = j == 0 ? m_[0] : Real(m_[j] - m_[j - 1]);
+      if (dm == 0) continue;
+      sum += dm * atan2(sqrt(Real((x - r_[j]) * (x + r_[j]))), r_[j]);
     }
     return x * sum;
   }
@@ -208,9 +217,10 @@ std::unique_ptr<Profile<Real>> make_profile(const ProfileSpec& spec) {
     case ProfileKind::wearflat: return std::make_unique<WearFlatProfile<Real>>(number(spec.parameter), spec.name);
     case ProfileKind::measured: {
       std::vector<Real> r, f;
+      const Real unit = number(spec.height_unit);
       for (std::size_t j = 0; j < spec.r.size(); ++j) {
         r.push_back(number(spec.r[j]));
-        f.push_back(number(spec.f[j]));
+        f.push_back(spec.height_unit == "1" ? number(spec.f[j]) : Real(number(spec.f[j]) / unit));
       }
       return std::make_unique<MeasuredProfile<Real>>(std::move(r), std::move(f), spec.name);
     }

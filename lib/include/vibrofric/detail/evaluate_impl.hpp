@@ -8,6 +8,7 @@
 #include <optional>
 #include <thread>
 
+#include "vibrofric/curved.hpp"
 #include "vibrofric/evaluate.hpp"
 
 namespace vibrofric::detail {
@@ -29,11 +30,18 @@ template <class Real>
 class WaveCache {
  public:
   using real_type = Real;
-  explicit WaveCache(const WaveSpec& spec) : spec_(spec) {}
+  explicit WaveCache(const WaveSpec& spec, const ProfileSpec& profile = {}) : spec_(spec), profile_spec_(profile) {}
   const Waveform<Real>& get() {
     auto& slot = by_digits_[working_digits10<Real>()];
     if (!slot) slot = make_waveform<Real>(spec_);
     return *slot;
+  }
+  // The curved profile at this precision; nullptr for the flat punch.
+  const Profile<Real>* profile() {
+    if (profile_spec_.kind == ProfileKind::flat) return nullptr;
+    auto& slot = profiles_[working_digits10<Real>()];
+    if (!slot) slot = make_profile<Real>(profile_spec_);
+    return slot.get();
   }
   // γ as written; "" for Ψ (γ = −min w, n touching zero).
   const Contact<Real>& contact(const std::string& gamma_text, const Options& opt) {
@@ -51,18 +59,30 @@ class WaveCache {
 
  private:
   const WaveSpec& spec_;
+  const ProfileSpec& profile_spec_;
   std::map<int, std::unique_ptr<Waveform<Real>>> by_digits_;
+  std::map<int, std::unique_ptr<Profile<Real>>> profiles_;
   std::unique_ptr<Contact<Real>> contact_;
   int digits_ = -1;
   std::string text_;
 };
 
+// `target`: the relative accuracy asked of a curved contact's spring integral (0: the type's).
 template <class Real>
-PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt) {
+PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt,
+                               const Real& target = Real(0)) {
   const Real beta = parse_real<Real>(p.beta, "beta");
   // A positive β below the type's smallest number reads as 0: name what was written.
   if (beta == 0 && p.beta[0] != '-' && p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
     throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: --digits)");
+  if (const Profile<Real>* profile = waves.profile()) {
+    if (q == Quantity::psi)
+      throw InputError("psi with profile " + profile->name() +
+                       ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always "
+                       "jump, so Eq. 13's separation of alpha and beta does not exist (use mu)");
+    const auto r = solve_curved(waves.get(), *profile, beta, parse_real<Real>(p.gamma, "gamma"), opt, target);
+    return {r.mu, r.relative_error};
+  }
   const auto r = solve(waves.contact(q == Quantity::psi ? std::string() : p.gamma, opt), beta, opt);
   if (q == Quantity::psi) return {r.lost_area, r.lost_relative_error};
   return {r.mu, r.relative_error};
@@ -79,7 +99,7 @@ std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantit
       PrecisionScope scope(static_cast<unsigned>(work));
       PointValue<Real> v;
       try {
-        v = compute_point(waves, q, p, opt);
+        v = compute_point(waves, q, p, opt, Real(pow(Real(10), -digits) / 8));
       } catch (const PrecisionError&) {
         if (attempt == 7 || 2 * work > 4 * max_digits) throw;
         work *= 2;  // the waveform needs more digits than these (power:P with P ~ 10^work)
@@ -162,9 +182,9 @@ std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const 
   std::vector<std::exception_ptr> errors(points.size());
   std::atomic<std::size_t> next{0}, done{0};
   auto worker = [&] {
-    WaveCache<Real> waves(spec);
-    WaveCache<long double> wider(spec);
-    WaveCache<mpfr> fallback(spec);
+    WaveCache<Real> waves(spec, options.profile);
+    WaveCache<long double> wider(spec, options.profile);
+    WaveCache<mpfr> fallback(spec, options.profile);
     for (std::size_t i; (i = next++) < points.size();) {
       try {
         if constexpr (is_runtime_precision_v<Real>)

@@ -1,0 +1,334 @@
+// Curved contacts (model.md, "Curved contacts (MDR)"; curved.hpp, profile.hpp): every quantity
+// solve_curved returns, against closed forms (Eq. 19 carried to every profile, Hertz and Sneddon
+// mean loads), independent quadratures (the MDR transform, the phase average of the load) and the
+// same algorithm at twice the precision. Tolerances are in digits of the working precision.
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "vibrofric/catalogue.hpp"
+#include "vibrofric/closed_forms.hpp"
+#include "vibrofric/curved.hpp"
+#include "vibrofric/evaluate.hpp"
+
+namespace {
+
+using namespace vibrofric;
+
+mpfr M(const char* s) { return mpfr(s); }
+
+template <class Real>
+CurvedResult<Real> curved(const std::string& wave, const std::string& profile, const Real& beta, const Real& gamma) {
+  const auto w = make_waveform<Real>(parse_wave(wave));
+  const auto p = make_profile<Real>(parse_profile(profile));
+  return solve_curved(*w, *p, beta, gamma);
+}
+
+std::string write_profile(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const std::vector<std::string> kProfiles{"sphere", "cone", "power:3", "power:2.5", "wearflat:0.3", "wearflat:7"};
+
+// Eq. 19 for every profile: in the jumping range every spring has the triangular waves' ratio,
+// so the row has it too (the invariance under clipping carries over). At 50 digits.
+TEST(CurvedClosedForm, TriangularWavesKeepEq19OnEveryProfileAt50Digits) {
+  PrecisionScope scope(50);
+  const mpfr eps = std::numeric_limits<mpfr>::epsilon();
+  for (const auto& profile : kProfiles)
+    for (const char* beta : {"0.25", "1", "3.5"})
+      for (const char* gamma : {"1", "0.5", "-0.3", "-0.95"}) {
+        const mpfr b = M(beta), g = M(gamma);
+        const struct {
+          const char* wave;
+          mpfr mu;
+        } cases[] = {{"triangle", closed_form::mu_triangle_jumping(b)},
+                     {"sawtooth-right", closed_form::mu_sawtooth_right_jumping(b)},
+                     {"sawtooth-left", closed_form::mu_sawtooth_left_jumping(b)}};
+        for (const auto& c : cases) {
+          const auto r = curved<mpfr>(c.wave, profile, b, g);
+          const mpfr err = abs(r.mu - c.mu);
+          SCOPED_TRACE(std::string(c.wave) + " " + profile + " beta " + beta + " gamma " + gamma);
+          EXPECT_LE(err, r.relative_error * c.mu) << "the error estimate must cover the error";
+          EXPECT_LE(err, 1e5 * eps) << "45 of 50 digits";
+          EXPECT_LE(r.relative_error, 1e6 * eps);
+        }
+      }
+}
+
+// ⟨F_N⟩ closed forms: a power-law punch pressed to depth d carries ∫₀^{d^{1/N}} (d − x^N) dx =
+// d^{1+1/N} N/(N+1) on the half-row (Hertz for N = 2, Sneddon for N = 1), the wear-flat sphere
+// d + d(ξ − 1) − (λ/3)(ξ² − 1)^{3/2} with λξ√(ξ² − 1) = d. The phase average of that over
+// d = max(γ + w, 0) is an independent tanh-sinh quadrature in φ, split at the contact boundaries.
+mpfr mean_load(const std::string& wave, const std::string& profile, const mpfr& gamma) {
+  const auto spec = parse_profile(profile);
+  const mpfr n = spec.kind == ProfileKind::power ? mpfr(spec.parameter) : mpfr(0);
+  const mpfr lambda = spec.kind == ProfileKind::wearflat ? mpfr(spec.parameter) : mpfr(0);
+  auto load = [&](const mpfr& d) -> mpfr {
+    if (!(d > 0)) return mpfr(0);
+    if (spec.kind == ProfileKind::power) return pow(d, 1 + 1 / n) * n / (n + 1);
+    const mpfr q = d / lambda;
+    const mpfr xi = sqrt((1 + sqrt(1 + 4 * q * q)) / 2);
+    return d * xi - lambda / 3 * pow(xi * xi - 1, mpfr(3) / 2);
+  };
+  const auto w = make_waveform<mpfr>(parse_wave(wave));
+  // Breakpoints: the pieces of w and where γ + w = 0 on them.
+  std::vector<mpfr> xs;
+  detail::RootStats stats;
+  for (std::size_t i = 0; i < w->piece_count(); ++i) {
+    xs.push_back(w->piece_begin(i));
+    mpfr c0, c1;
+    if (w->contact_part(i, gamma, c0, c1, stats)) {
+      xs.push_back(c0);
+      xs.push_back(c1);
+    }
+  }
+  xs.push_back(mpfr(1));
+  std::sort(xs.begin(), xs.end());
+  boost::math::quadrature::tanh_sinh<mpfr> q(20);
+  mpfr sum = 0;
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+    if (!(xs[k + 1] > xs[k])) continue;
+    const mpfr mid = (xs[k] + xs[k + 1]) / 2;
+    const std::size_t piece = [&] {
+      std::size_t i = 0;
+      while (i + 1 < w->piece_count() && w->piece_begin(i + 1) <= mid) ++i;
+      return i;
+    }();
+    sum += q.integrate([&](const mpfr& phi) -> mpfr { return load(gamma + w->value(piece, phi)); }, xs[k], xs[k + 1]);
+  }
+  return sum;
+}
+
+TEST(CurvedClosedForm, NormalIntegralIsTheMeanHertzSneddonAndWearFlatLoadAt40Digits) {
+  PrecisionScope scope(40);
+  const mpfr eps = std::numeric_limits<mpfr>::epsilon();
+  for (const char* wave : {"sine", "triangle", "square", "power:3"})
+    for (const char* profile : {"sphere", "cone", "power:3", "wearflat:0.5", "wearflat:20"})
+      for (const char* gamma : {"2", "0.5", "-0.6"}) {
+        const auto r = curved<mpfr>(wave, profile, M("0.7"), M(gamma));
+        const mpfr ref = mean_load(wave, profile, M(gamma));
+        SCOPED_TRACE(std::string(wave) + " " + profile + " gamma " + gamma);
+        EXPECT_LE(abs(r.normal_integral - ref), 1e4 * eps * ref);
+        // The contact edge: σ(X) = γ + max w; for the wear flat as the backward error of
+        // X²(X² − 1) = (σ/λ)² (σ(x) is ill-conditioned next to the flat's edge).
+        const auto spec = parse_profile(profile);
+        const mpfr X = r.contact_radius, s = M(gamma) + 1;
+        if (spec.kind == ProfileKind::power)
+          EXPECT_LE(abs(pow(X, mpfr(spec.parameter)) - s), 16 * eps * s);
+        else
+          EXPECT_LE(abs(X * X * (X * X - 1) - pow(s / mpfr(spec.parameter), 2)), 16 * eps * pow(X, 4));
+      }
+}
+
+// The same algorithm at twice the digits: μ̄, both integrals, and that the error estimate at 30
+// digits covers the difference.
+TEST(CurvedPrecision, ThirtyDigitsAgreeWithSixtyWithinTheirEstimate) {
+  int k = 0;
+  for (const char* wave : {"sine", "square", "power:3", "sawtooth-left"})
+    for (const char* profile : {"sphere", "cone", "wearflat:1", "power:3.5"})
+      for (const char* gamma : {"2.5", "0.5", "-0.3", "-0.9"}) {
+          const char* beta = ++k % 2 ? "0.3" : "2";
+          CurvedResult<mpfr> lo, hi;
+          {
+            PrecisionScope scope(25);
+            lo = curved<mpfr>(wave, profile, M(beta), M(gamma));
+          }
+          PrecisionScope scope(50);
+          hi = curved<mpfr>(wave, profile, M(beta), M(gamma));
+          SCOPED_TRACE(std::string(wave) + " " + profile + " beta " + beta + " gamma " + gamma);
+          const mpfr eps30 = pow(mpfr(10), -24);
+          EXPECT_LE(abs(lo.mu - hi.mu), lo.relative_error * hi.mu);
+          // The estimate is Boost's difference of the last two tanh-sinh levels, which stalls at
+          // 1e3–1e5 eps where the integrand's rounding dominates (measured): it may exceed the
+          // actual error by that much, never fall below it (line above).
+          EXPECT_LE(lo.relative_error, 1e6 * eps30);
+          EXPECT_LE(abs(lo.friction_integral - hi.friction_integral), 1e4 * eps30 * hi.friction_integral);
+          EXPECT_LE(abs(lo.normal_integral - hi.normal_integral), 1e4 * eps30 * hi.normal_integral);
+          EXPECT_LE(abs(lo.contact_radius - hi.contact_radius), 10 * eps30 * hi.contact_radius);
+          EXPECT_EQ(lo.gamma_breaks.size(), hi.gamma_breaks.size());
+          EXPECT_EQ(lo.center_jumps, M(gamma) < 1);
+        }
+}
+
+// Eq. 6 for a curved contact: β_c(γ') grows with γ', so the central spring's β_c decides.
+TEST(CurvedEq6, NoStickAtOrAboveTheCentralBetaC) {
+  PrecisionScope scope(30);
+  for (const char* profile : {"sphere", "wearflat:2"})
+    for (const char* gamma : {"0.5", "-0.5"}) {
+      const mpfr g = M(gamma);
+      const mpfr bc = 2 * boost::math::constants::pi<mpfr>() * (g >= 0 ? mpfr(1) : sqrt(1 - g * g));
+      auto at = curved<mpfr>("sine", profile, bc, g);
+      EXPECT_EQ(at.mu, 1);
+      EXPECT_LE(abs(at.beta_c - bc), 1e-28);
+      EXPECT_EQ(at.friction_integral, at.normal_integral);
+      auto below = curved<mpfr>("sine", profile, mpfr(bc * (1 - mpfr(1e-6))), g);
+      EXPECT_LT(below.mu, 1);
+    }
+}
+
+// The γ' breakpoints that closed forms give: the sine's tangency points ±√(1 − (β/2π)²) (onset
+// kind, β = β_c(γ')), its piece ends 0 and the square wave's kink γ' = β/2 − 1 (Eq. 22).
+TEST(CurvedBreakpoints, ContainTheClosedFormKinks) {
+  PrecisionScope scope(40);
+  const mpfr eps = std::numeric_limits<mpfr>::epsilon();
+  auto contains = [&](const std::vector<mpfr>& v, const mpfr& x) {
+    for (const auto& y : v)
+      if (abs(y - x) <= 16 * eps) return true;
+    return false;
+  };
+  const mpfr beta = M("2");
+  const mpfr c = sqrt(1 - pow(beta / (2 * boost::math::constants::pi<mpfr>()), 2));
+  const auto s = curved<mpfr>("sine", "sphere", beta, M("1.5"));
+  EXPECT_TRUE(contains(s.gamma_breaks, c));
+  EXPECT_TRUE(contains(s.gamma_breaks, mpfr(-c)));
+  EXPECT_TRUE(contains(s.gamma_breaks, mpfr(0)));
+  EXPECT_TRUE(contains(s.gamma_breaks, mpfr(1)));
+  const auto q = curved<mpfr>("square", "sphere", M("1"), M("0.5"));
+  EXPECT_TRUE(contains(q.gamma_breaks, M("-0.5")));
+  for (const auto& g : q.gamma_breaks) EXPECT_TRUE(g > -1 && g < M("0.5"));
+}
+
+// The measured profile's MDR transform, g(x) = x ∫₀^x f'(r)/√(x² − r²) dr, against tanh-sinh of
+// that integral per segment (r = x sin θ removes the endpoint singularity), random profiles.
+TEST(MeasuredProfile, TransformAgreesWithQuadratureOfTheMdrIntegral) {
+  PrecisionScope scope(30);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.05, 1);
+  boost::math::quadrature::tanh_sinh<mpfr> q(20);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::string text;
+    mpfr r = 0, f = 0;
+    std::vector<mpfr> rs{mpfr(0)}, fs{mpfr(0)};
+    text += "0 0\n";
+    mpfr slope = 0;
+    for (int j = 0; j < 5; ++j) {
+      const mpfr dr = mpfr(u(rng));
+      r += dr;
+      if (!(j == 0 && trial % 2)) slope += mpfr(u(rng));  // convex; odd trials start with a flat
+      f += slope * dr;
+      rs.push_back(r);
+      fs.push_back(f);
+      text += detail::short_str(r) + " " + detail::short_str(f) + "\n";
+    }
+    const auto path = write_profile("mdr_" + std::to_string(trial) + ".txt", text);
+    const auto p = make_profile<mpfr>(parse_profile("profile:" + path));
+    for (const double frac : {0.13, 0.5, 0.77, 1.0}) {
+      const mpfr x = rs.back() * mpfr(frac);
+      mpfr g = 0;
+      for (std::size_t j = 0; j + 1 < rs.size() && rs[j] < x; ++j) {
+        const mpfr m = (fs[j + 1] - fs[j]) / (rs[j + 1] - rs[j]);
+        const mpfr hi = rs[j + 1] < x ? rs[j + 1] : x;
+        // ∫ dr/√(x² − r²) by tanh-sinh (the closed form is what is under test); on the segment
+        // that reaches r = x, r = x − v² removes the singularity: ∫ 2 dv/√(2x − v²).
+        if (hi < x)
+          g += m * q.integrate([&](const mpfr& rr) -> mpfr { return 1 / sqrt((x - rr) * (x + rr)); }, rs[j], hi, mpfr(1e-28));
+        else
+          g += m * q.integrate([&](const mpfr& v) -> mpfr { return 2 / sqrt(2 * x - v * v); }, mpfr(0), mpfr(sqrt(x - rs[j])),
+                               mpfr(1e-28));
+      }
+      g *= x;
+      EXPECT_LE(abs(p->sigma_at_x(x) - g), 1e-25 * (1 + g)) << text << " x = " << x;
+      if (g > 0) {
+        EXPECT_LE(abs(p->x_at_sigma(g) - x), 1e-25);
+      }
+    }
+  }
+}
+
+// A two-sample profile is a cone: μ̄ is scale-free, so it equals the cone's.
+TEST(MeasuredProfile, TwoSampleProfileIsTheCone) {
+  PrecisionScope scope(40);
+  const auto path = write_profile("cone.txt", "# r f\n0 0\n2, 3\n");
+  for (const char* gamma : {"2", "0.3", "-0.7"}) {
+    const auto a = curved<mpfr>("sine", "profile:" + path, M("1.3"), M(gamma));
+    const auto b = curved<mpfr>("sine", "cone", M("1.3"), M(gamma));
+    EXPECT_LE(abs(a.mu - b.mu), 1e-36);
+  }
+  // Beyond the last sample the profile is not known: the contact must stay inside it.
+  EXPECT_THROW(curved<mpfr>("sine", "profile:" + path, M("1"), M("20")), DomainError);
+}
+
+// The sphere sampled finely converges to the sphere, at second order in the spacing.
+TEST(MeasuredProfile, SampledParaboloidConvergesToTheSphere) {
+  PrecisionScope scope(30);
+  const auto exact = curved<mpfr>("sine", "sphere", M("1"), M("0.4"));
+  double prev = 0;
+  for (int n : {10, 20, 40}) {
+    std::string text;
+    for (int j = 0; j <= n; ++j) {
+      const mpfr r = mpfr(2) * j / n;  // g = x² needs f = r²/2 (κ₂ = 2): contact edge x = √1.4
+      text += detail::short_str(r) + " " + detail::short_str(mpfr(r * r / 2)) + "\n";
+    }
+    const auto path = write_profile("para_" + std::to_string(n) + ".txt", text);
+    const auto r = curved<mpfr>("sine", "profile:" + path, M("1"), M("0.4"));
+    const double err = static_cast<double>(abs(r.mu - exact.mu));
+    EXPECT_LT(err, 0.05 / (n * n)) << n;
+    if (prev > 0) {
+      EXPECT_GT(prev / err, 3.0) << "second order: halving the spacing divides the error by ~4";
+    }
+    prev = err;
+  }
+}
+
+// The tool's layer: correctly rounded double through the precision ladder, against 40 digits.
+TEST(CurvedEvaluate, GuaranteedDoubleIsCorrectlyRounded) {
+  BatchOptions opt;
+  opt.profile = parse_profile("sphere");
+  const std::vector<Point> points{{"1", "0.5"}, {"0.05", "-0.9"}, {"3", "2"}, {"6", "-0.2"}};
+  const auto d = evaluate(parse_wave("sine"), Quantity::mu, points, {NumberType::float64, 17}, opt);
+  const auto ref = evaluate(parse_wave("sine"), Quantity::mu, points, {NumberType::mpfr, 40}, opt);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    PrecisionScope scope(50);
+    EXPECT_EQ(std::strtod(d[i].c_str(), nullptr), mpfr_get_d(mpfr(ref[i]).backend().data(), MPFR_RNDN)) << points[i].beta;
+  }
+  // Ψ does not exist for a curved contact.
+  EXPECT_THROW(evaluate(parse_wave("sine"), Quantity::psi, {{"1", ""}}, {NumberType::float64, 17}, opt), InputError);
+}
+
+// Bad profiles: one-line InputError naming the value, in every number type alike.
+TEST(CurvedBadInput, ProfilesAndFilesAreRejected) {
+  for (const char* text : {"power:0.5", "power:nan", "wearflat:0", "wearflat:-1", "wearflat:", "ball", "power:", "profile:"})
+    EXPECT_THROW(parse_profile(text), InputError) << text;
+  const std::pair<const char*, const char*> files[] = {
+      {"nan.txt", "0 0\n1 nan\n"},           {"decreasing.txt", "0 0\n1 2\n2 1\n"}, {"f0.txt", "0 0.1\n1 2\n"},
+      {"r0.txt", "0.5 0\n1 2\n"},           {"one.txt", "0 0\n"},                  {"repeat.txt", "0 0\n1 1\n1 2\n"},
+      {"three.txt", "0 0 0\n1 1 1\n"},      {"flat.txt", "0 0\n1 0\n"},            {"empty.txt", "# nothing\n"},
+      {"concave.txt", "0 0\n1 2\n2 3\n"}};
+  for (const auto& [name, text] : files) {
+    const auto path = write_profile(name, text);
+    EXPECT_THROW(parse_profile("profile:" + path), InputError) << name;
+  }
+  EXPECT_THROW(parse_profile("profile:" + ::testing::TempDir()), InputError);
+  EXPECT_THROW(parse_profile("profile:/nonexistent/file"), InputError);
+  // Valid: comma, semicolon, tab separators, CRLF, comments.
+  const auto ok = write_profile("ok.txt", "# r f\r\n0;0\r\n0.5,\t0.25\r\n1 1 # tip region\r\n");
+  EXPECT_NO_THROW(parse_profile("profile:" + ok));
+  // No contact, or β out of range: the flat punch's decisions, for every type.
+  EXPECT_THROW(curved<double>("sine", "sphere", 1.0, -1.0), DomainError);
+  EXPECT_THROW(curved<long double>("sine", "sphere", 1.0L, -1.0L), DomainError);
+  EXPECT_THROW(curved<double>("sine", "sphere", 0.0, 0.5), InputError);
+  EXPECT_THROW(curved<bin50>("sine", "sphere", bin50(-1), bin50(0.5)), InputError);
+}
+
+// A root-finder budget of 1 is an error with a message, never a value.
+TEST(CurvedFailure, ExhaustedBudgetsAreErrors) {
+  const auto w = make_waveform<double>(parse_wave("sine"));
+  const auto p = make_profile<double>(parse_profile("sphere"));
+  Options opt;
+  opt.max_root_iterations = 1;
+  EXPECT_THROW(solve_curved(*w, *p, 1.0, 0.5, opt), SolverError);
+  Options levels;
+  levels.max_quadrature_levels = 4;
+  levels.quadrature_tolerance = 1e-300;
+  EXPECT_THROW(solve_curved(*w, *p, 1.0, 0.5, levels), SolverError);
+}
+
+}  // namespace
