@@ -647,8 +647,9 @@ def curved_bench_table(w, path):
         for name, e in paths.items():
             t = e.get("cpu_ns")
             err = e.get("rel_error")
+            note = e.get("how") or ("M = %d, N = %d" % (e["springs"], e["steps"]) if "springs" in e else "")
             w("| %s | %s | %s | %s | %s |" % (case, name, fmt_time(t), "-" if err is None else "%.1e" % err,
-                                              md_escape(e.get("note", ""))))
+                                              md_escape(note)))
     w("")
 
 
