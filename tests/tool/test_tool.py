@@ -191,6 +191,20 @@ def write(name, text):
 
 def bad_input_tests():
     mu = ["mu", "--wave", "sine"]
+    # curved contacts (model.md MDR): profiles, files, psi, physical shapes
+    pmu = mu + ["--beta", "1", "--gamma", "0.5", "--profile"]
+    for v in ("power:0.5", "wearflat:0", "wearflat:-1", "power:nan", "ball", "wearflat:"):
+        bad("profile " + v, pmu + [v], values=[v.split(":")[-1] or v], words=["profile" if ":" not in v else ""])
+    bad("psi --profile sphere", ["psi", "--wave", "sine", "--beta", "1", "--profile", "sphere"], words=["flat punch"])
+    for name, text, word in (("nan", "0 0\n1 nan\n", "nan"), ("decreasing", "0 0\n1 2\n2 1\n", "non-decreasing"),
+                             ("f0", "0 0.1\n1 2\n", "f(0)"), ("one", "0 0\n", "1 sample"),
+                             ("concave", "0 0\n1 2\n2 3\n", "concave")):
+        path = write("profile_%s.txt" % name, text)
+        bad("profile file " + name, pmu + ["profile:" + path], words=[word])
+    bad("profile file is a directory", pmu + ["profile:" + TMP], words=["directory"])
+    path = write("profile_cone.txt", "0 0\n1 1\n")
+    bad("contact beyond the profile's last sample", mu + ["--beta", "1", "--gamma", "5", "--profile", "profile:" + path],
+        values=["5"], words=["last sample"])
 
     def mu_beta(v): return mu + ["--beta", v, "--gamma", "0.5"]
 
@@ -816,10 +830,14 @@ def physical_tests():
         return d
 
     def check_groups(a, got, exact, digits):
-        keys = ["E_star_Pa", "G_star_Pa", "k_z_N_per_m", "k_x_N_per_m", "beta", "gamma",
-                "mu_over_mu0", "mu"]
+        keys = ["shape", "E_star_Pa", "G_star_Pa", "k_z_N_per_m", "k_x_N_per_m", "beta", "gamma",
+                "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N"]
+        if "F_N_mean_N" in exact:   # <F_x> = mu <F_N>
+            exact["F_x_mean_N"] = exact["F_N_mean_N"] * exact["mu"]
         if list(got) != keys:
             raise Fail("%s printed the fields %s, expected %s" % (cmd(a), list(got), keys))
+        if got["shape"] != "flat":
+            raise Fail("%s: shape = %s, expected flat" % (cmd(a), got["shape"]))
         for k, v in exact.items():
             expect_digits(got[k], v, digits, "%s: %s" % (cmd(a), k))
 
@@ -859,6 +877,8 @@ def physical_tests():
         assert b < 4
         exact["mu_over_mu0"] = 2 * b / (4 + b)
         exact["mu"] = mu0 * 2 * b / (4 + b)
+        # <F_N> = k_z A N_tri(gamma), N_tri = (1 + gamma)^2/4 in the jumping range
+        exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(alu["A"]) * (1 + exact["gamma"]) ** 2 / 4
         check_groups(a, got, exact, 40)
     test("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
 
@@ -871,6 +891,7 @@ def physical_tests():
         assert exact["beta"] > 7
         exact["mu_over_mu0"] = Fraction(1)
         exact["mu"] = mu0
+        exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(ex["A"]) * exact["gamma"]  # N = gamma, no jumping
         check_groups(a, got, exact, 50)
     test("physical steel on steel above beta_c: mu = mu0 exactly", fast_fn)
 
@@ -885,6 +906,45 @@ def physical_tests():
                 raise Fail("%s: %s = %s, expected %s (17 digits, within 4 ulp)"
                            % (cmd(a), k, s, dec(exact[k], 17)))
     test("physical --type double: 17 digits, groups within 4 ulp", double_fn)
+
+    # 5. curved indenters (model.md MDR). Triangle wave, jumping: w is uniform on [-1, 1], so
+    # <d^k> over d = A max(gamma + w, 0) is A^k (1 + gamma)^(k+1)/(2(k+1)). Hertz: F = (4/3) E* R^(1/2)
+    # d^(3/2); Sneddon (cone of half-angle theta): F = 2 E* tan(theta) d^2/pi.
+    decimal.getcontext().prec = 60
+    tri = [("--wave", "triangle")] + STEEL[1:]
+
+    def curved_fn(shape_args, load):
+        def fn():
+            a = physical_args(tri, **{"--digits": "30", "--radius": None}) + shape_args
+            got = parse(ok_run(a))
+            exact, mu0 = groups(**steel)   # E*, G*, beta, gamma as the punch (the radius cancels in beta)
+            b = exact["beta"]
+            g = Decimal(exact["gamma"].numerator) / Decimal(exact["gamma"].denominator)
+            want = ["shape", "E_star_Pa", "G_star_Pa", "contact_radius_max_m", "beta", "gamma",
+                    "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N"]
+            if list(got) != want:
+                raise Fail("%s printed %s, expected %s" % (cmd(a), list(got), want))
+            for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma"):
+                expect_digits(got[k], exact[k], 30, "%s: %s" % (cmd(a), k))
+            m = 2 * b / (4 + b)                # Eq. 19 holds on every profile for gamma <= 1
+            expect_digits(got["mu_over_mu0"], m, 30, "%s: mu_over_mu0 (Eq. 19)" % cmd(a))
+            E = Decimal(exact["E_star_Pa"].numerator) / Decimal(exact["E_star_Pa"].denominator)
+            fn_exact = load(E, Decimal(steel["A"]), g)
+            expect_digits(got["F_N_mean_N"], Fraction(fn_exact), 30, "%s: <F_N>" % cmd(a))
+            expect_digits(got["F_x_mean_N"], Fraction(fn_exact) * mu0 * m, 30, "%s: <F_x> = mu <F_N>" % cmd(a))
+        return fn
+
+    def hertz(E, A, g):
+        return Decimal(4) / 3 * E * Decimal("0.01").sqrt() * A ** Decimal("1.5") * (1 + g) ** Decimal("2.5") / 5
+
+    def sneddon(E, A, g):
+        tan = Decimal(1)                   # half-angle 45 degrees
+        pi = Decimal("3.14159265358979323846264338327950288419716939937510582097494459")
+        return 2 * E * tan / pi * A ** 2 * (1 + g) ** 3 / 6
+    test("physical --shape sphere (triangle): Eq. 19 and the Hertz mean load",
+         curved_fn(["--shape", "sphere", "--R", "0.01"], hertz))
+    test("physical --shape cone (triangle): Eq. 19 and the Sneddon mean load",
+         curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon))
 
 
 # --------------------------------------------------------------------------------------------
