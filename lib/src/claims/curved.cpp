@@ -82,7 +82,9 @@ CurvedResult<Real> curved(const std::string& wave, const ProfileFactory& profile
     const auto p = profile();
     CurvedResult<Real> r;
     try {
-      r = solve_curved(*w, *p, Real(beta), Real(gamma), Options{}, Real(target));
+      // Asked for an eighth of the target (as evaluate.hpp does): its estimate may exceed what it
+      // was asked for by a small factor, which would cost a recomputation at more digits.
+      r = solve_curved(*w, *p, Real(beta), Real(gamma), Options{}, Real(target / 8));
     } catch (const PrecisionError&) {
       work *= 2;
       continue;
