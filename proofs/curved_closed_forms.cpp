@@ -337,6 +337,9 @@ int main() {
                     << "\n       (X = (1+gamma)^(1/2), x1 = (gamma-1)^(1/2), xk = (1+gamma-beta/2)^(1/2))\n";
         if (!s.square && i == 0)
           ck.zero(normal(Fr / Nr) - s.m, "N = " + std::to_string(N) + ", " + s.w + ", gamma < 1: mu = m_w (clipping invariance)");
+        if (!s.square && i == 1 && N == 1)
+          ck.zero(normal(Fr / Nr) - (s.m + 3 * s.psi * pow(gam - 1, 2) / (3 * gam * gam + 1)),
+                  "cone (N = 1), " + s.w + ", gamma > 1: mu = m_w + 3 Psi_w (gamma-1)^2/(3 gamma^2 + 1)");
         if (!s.square && i == 1) {
           ck.zero(Fr - s.m * Nr - s.psi * reduce(power_anti(c, 1, x1s, c, N), N),
                   "N = " + std::to_string(N) + ", " + s.w + ", gamma > 1: int Phi = m_w int N + Psi_w int_0^x1 (gamma - 1 - x^N) dx");
@@ -357,6 +360,27 @@ int main() {
     ck.zero(Hg * Xs / Ns * E1(c / Hg, x1s / Xs) - mom(Hg, 1, "x1", "X"), "shell: int_x1^X (H - x^N) dx = (H X/N) E_1(2/H), symbolic N");
     ck.zero(Hg * Hg * Xs / Ns * E2(c / Hg, x1s / Xs) - mom(Hg, 2, "x1", "X"), "shell: int_x1^X (H - x^N)^2 dx = (H^2 X/N) E_2(2/H), symbolic N");
     ck.zero(Hg * Hg * Xs / Ns * Fk(K / Hg, xks / Xs) - mom(K, 2, "xk", "X"), "kink: int_xk^X (x^N - K)^2 dx = (H^2 X/N) F(beta/(2H)), symbolic N");
+    {  // m_w < mu < 1 - Psi_w/gamma for gamma > 1: (gamma-1) int N - gamma C = int_0^x1 sigma dx + (gamma-1) shell > 0
+      const ex C = mom(c, 1, "0", "x1"), IN = mom(c, 1, "0", "x1") + mom(0, 0, "0", "x1") + mom(Hg, 2, "x1", "X") / 4;
+      ck.zero((gam - 1) * IN - gam * C - (x1s * c / (Ns + 1) + (gam - 1) * mom(Hg, 2, "x1", "X") / 4),
+              "tri family, gamma > 1: (gamma-1) int N dx - gamma int_0^x1 (gamma-1-x^N) dx = int_0^x1 x^N dx + (gamma-1) int_x1^X N dx "
+              "(so mu < 1 - Psi/gamma), symbolic N");
+    }
+    {  // factored forms of int N dx for gamma > 1 (X^N = 1 + gamma, x1^N = gamma - 1), symbolic N
+      const ex kN = Ns * Ns / (2 * (Ns + 1) * (2 * Ns + 1));
+      ck.zero(closedN["tri"][1].second - kN * (Hg * Hg * Xs - c * c * x1s),
+              "tri family, gamma > 1: int N dx = N^2/(2(N+1)(2N+1)) [(1+gamma)^(2+1/N) - (gamma-1)^(2+1/N)], symbolic N");
+      ck.zero(closedN["tri"][0].second - kN * Hg * Hg * Xs, "tri family, gamma <= 1: int N dx = N^2/(2(N+1)(2N+1)) (1+gamma)^(2+1/N)");
+      ck.zero(closedN["sqr"][2].second - Ns / (2 * (Ns + 1)) * (Hg * Xs + c * x1s),
+              "sqr, gamma > 1: int N dx = N/(2(N+1)) [(1+gamma)^(1+1/N) + (gamma-1)^(1+1/N)], symbolic N");
+      ck.zero(closedN["sqr"][0].second - Ns / (2 * (Ns + 1)) * Hg * Xs, "sqr, gamma <= 1: int N dx = N/(2(N+1)) (1+gamma)^(1+1/N)");
+      for (int k = 0; k < 3; ++k) {
+        const Spring& sp = springs[k];
+        ck.zero(closedN[sp.w][1].first / closedN[sp.w][1].second -
+                    (sp.m + sp.psi * 2 * (2 * Ns + 1) * c * x1s / (Ns * (Hg * Hg * Xs - c * c * x1s))),
+                sp.w + ", gamma > 1: mu = m_w + Psi_w 2(2N+1)(gamma-1)^(1+1/N) / (N [(1+gamma)^(2+1/N) - (gamma-1)^(2+1/N)]), symbolic N");
+      }
+    }
     ck.zero(mom(Hg, 1, "0", "X") - Hg * Xs * Ns / (Ns + 1), "full range: int_0^X (H - x^N) dx = H X N/(N+1)");
     ck.zero(mom(Hg, 2, "0", "X") - 2 * Hg * Hg * Xs * Ns * Ns / ((Ns + 1) * (2 * Ns + 1)), "full range: int_0^X (H - x^N)^2 dx = 2 H^2 X N^2/((N+1)(2N+1))");
     // the series used for tau <= 1/2: Taylor coefficients in tau, symbolic p

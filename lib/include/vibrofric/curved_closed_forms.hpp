@@ -20,9 +20,10 @@
 // larger than the integral it contributes to: the x-integrals over the outer shell and over the
 // square wave's kink region are written as τ-integrals (power law) whose series have positive
 // terms where they are thin, and the wear-flat kink integral as a positive Taylor series in the
-// hyperbolic angle where it is thin (see the proof file, "Evaluation"). Cost: a series of at most
-// about 3.3·digits terms; accuracy a few ulp of Real over the whole domain (measured at 50 digits
-// against tanh-sinh in the proof's notes).
+// hyperbolic angle where it is thin (proofs/curved_closed_forms.md, §7, where every rearrangement is
+// checked). Cost: at most one series of about 3.3·digits terms (O(terms²) for the wear-flat kink).
+// Accuracy: a few ulp of Real (measured at 50 and 100 digits against tanh-sinh of the piecewise
+// integrand, worst 6.5 ε over β = 1e-9…1e6, γ = −1 + 1e-11…1e4; figures in §7).
 #pragma once
 #include <cmath>
 #include <limits>
@@ -290,13 +291,13 @@ CurvedIntegrals<Real> power_profile_integrals(CatalogueWave w, const Real& n, co
       else
         r.friction_integral = beta * X / 8 - kink() / (2 * beta);
     } else {
-      const Real shell1 = H * X / n * E(1, p, tau1, u1);  // ∫_x₁^X (H − xⁿ) dx
-      r.normal_integral = x1 * (n * gamma + 1) / (n + 1) + shell1 / 2;
+      // N/(2(N+1)) [(1+γ)^(1+1/n) + (γ−1)^(1+1/n)]: core + shell, both terms positive
+      r.normal_integral = n * (H * X + c * x1) / (2 * (n + 1));
       if (beta <= 4)
         r.friction_integral = A1(c, x1) + beta * X / 8 - kink() / (2 * beta);
       else
-        r.friction_integral =
-            A1(c, x1) + (1 - 2 / beta) * x1 + shell1 / 2 - H * H * X / n * E(2, p, tau1, u1) / (2 * beta);
+        r.friction_integral = A1(c, x1) + (1 - 2 / beta) * x1 + H * X / n * E(1, p, tau1, u1) / 2 -
+                              H * H * X / n * E(2, p, tau1, u1) / (2 * beta);
     }
   }
   r.mu = r.friction_integral / r.normal_integral;
