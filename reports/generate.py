@@ -370,13 +370,14 @@ def main():
     ap.add_argument("--digits", type=int, default=50)
     a = ap.parse_args()
     r = Report(os.path.abspath(a.tool), a.out, a.digits)
+    # The tree's state before this run writes its figures (tracked files): the commit it reports.
+    v = versions(r.tool)
 
     claims = json.loads(run([r.tool, "verify", "--digits", str(a.digits), "--format", "json"]))["claims"]
     figs = {"fig2": fig2_trace(r), "fig3": fig3_square(r), "fig4": fig4_harmonic(r), "power": fig_power_collapse(r)}
     figs["ball"], figs["wearflat"] = fig4_ball(r), fig_wearflat(r)
     figs["ulp"], ulp_summary = fig_ulp(r)
     cross = crosscheck(r)
-    v = versions(r.tool)
 
     L = []
     w = L.append
