@@ -63,7 +63,7 @@ const std::vector<ClaimEntry>& claims_catalogue() {
       {"scope-wearflat", "Abstract, scope (wear flat)", "paper",
        "the exact solutions hold for a flat-ended cylinder or a curved shape with a wear flat (sphere with a wear flat: "
        "mu = the flat punch's mu)",
-       kDerivationAndHP, "", scope_wearflat},
+       kDerivationAndHP, "proofs/curved_closed_forms.md", scope_wearflat},
       {"scope-numerics", "Abstract, scope (numerics)", "paper",
        "the adopted methodology also enables efficient numerical solution in more general cases (curved contacts by "
        "MDR: a sphere under harmonic oscillation to the requested digits in milliseconds to seconds)",
@@ -73,8 +73,8 @@ const std::vector<ClaimEntry>& claims_catalogue() {
        "coefficient mu_s = int (gamma - 1 - sigma)_+ dx / int N dx: zero iff the central spring jumps (gamma <= 1)",
        kDerivationAndHP, "", curved_eq6_sec3},
       {"curved-power-flat", "power:N -> flat", "model.md",
-       "power-law profiles sigma = x^N tend to the flat punch as N -> infinity", kDerivationAndHP, "",
-       curved_power_flat},
+       "power-law profiles sigma = x^N tend to the flat punch as N -> infinity", kDerivationAndHP,
+       "proofs/curved_closed_forms.md", curved_power_flat},
   };
   return list;
 }
