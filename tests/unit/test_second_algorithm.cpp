@@ -11,6 +11,8 @@
 // averaged over 8 grid positions (phase shifts, which leave μ̄ unchanged: model.md), in a band.
 #include <gtest/gtest.h>
 
+#include "fitted_order.hpp"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -50,21 +52,6 @@ std::function<double(double)> shifted(const W& w, double shift) {
     const double x = phi + shift;
     return w(x - std::floor(x));
   };
-}
-
-// −(least-squares slope of log e against log N): the observed order p in e ≈ C·N^−p.
-double fitted_order(const std::vector<double>& n, const std::vector<double>& e) {
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    mx += std::log(n[i]) / n.size();
-    my += std::log(e[i]) / n.size();
-  }
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    sxy += (std::log(n[i]) - mx) * (std::log(e[i]) - my);
-    sxx += (std::log(n[i]) - mx) * (std::log(n[i]) - mx);
-  }
-  return -sxy / sxx;
 }
 
 // Mean |μ_N − exact| over 8 grid positions (shift 0 and 7 fixed random ones), N = 2^8 … 2^14.

@@ -30,6 +30,8 @@
 // every spring has the same Φ/N (triangle, γ ≤ 1).
 #include <gtest/gtest.h>
 
+#include "fitted_order.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -112,21 +114,6 @@ double kink_slope(const Waveform<double>& w) {
 double row_bound(const SpringRowResult<double>& r, double beta, double k_w) {
   const double h = 1.0 / r.steps;
   return h * (beta + k_w) * r.stick_integral / r.normal_integral + h * h;
-}
-
-// −(least-squares slope of log e against log N): the observed order p in e ≈ C·N^−p.
-double fitted_order(const std::vector<double>& n, const std::vector<double>& e) {
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    mx += std::log(n[i]) / n.size();
-    my += std::log(e[i]) / n.size();
-  }
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    sxy += (std::log(n[i]) - mx) * (std::log(e[i]) - my);
-    sxx += (std::log(n[i]) - mx) * (std::log(n[i]) - mx);
-  }
-  return -sxy / sxx;
 }
 
 // μ̄/μ0 by solve_curved at `digits` decimal digits, as a double.
