@@ -463,11 +463,11 @@ int run_verify(const Args& a) {
     print_claims_json(checks, digits);
     return 0;
   }
-  std::printf("%-24s %-8s %-20s %-9s %s\n", "claim", "cases", "verdict", "deviation", "statement");
+  std::printf("%-28s %-8s %-20s %-9s %s\n", "claim", "cases", "verdict", "deviation", "statement");
   for (const auto& c : checks) {
     char dev[32];
     std::snprintf(dev, sizeof dev, "%.2e", c.deviation);
-    std::printf("%-24s %-8zu %-20s %-9s %s\n", c.id.c_str(), c.cases, verdict_name(c.verdict).c_str(), dev,
+    std::printf("%-28s %-8zu %-20s %-9s %s\n", c.id.c_str(), c.cases, verdict_name(c.verdict).c_str(), dev,
                 c.statement.c_str());
   }
   std::printf("\nrequested precision: %d digits\n", digits);
