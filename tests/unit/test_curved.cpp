@@ -228,6 +228,24 @@ TEST(CurvedBreakpoints, ContainTheClosedFormKinks) {
   for (const auto& g : q.gamma_breaks) EXPECT_TRUE(g > -1 && g < M("0.5"));
 }
 
+// The flat punch's area_error (the springs' rounding bound the spring integral adds up) bounds
+// the actual error of retained_area and normal_area in double, against 40-digit mpfr.
+TEST(CurvedPrecision, SpringAreaErrorBoundsTheAreasInDouble) {
+  for (const char* wave : {"sine", "triangle", "square", "power:3", "sawtooth-left"})
+    for (const char* gamma : {"2", "0.5", "-0.3", "-0.99"})
+      for (const char* beta : {"0.01", "1", "4"}) {
+        const auto wd = make_waveform<double>(parse_wave(wave));
+        const auto rd = solve(*wd, std::strtod(beta, nullptr), std::strtod(gamma, nullptr));
+        PrecisionScope scope(40);
+        const auto wm = make_waveform<mpfr>(parse_wave(wave));
+        const auto rm = solve(*wm, mpfr(std::strtod(beta, nullptr)), mpfr(std::strtod(gamma, nullptr)));
+        SCOPED_TRACE(std::string(wave) + " beta " + beta + " gamma " + gamma);
+        EXPECT_LE(abs(mpfr(rd.retained_area) - rm.retained_area), mpfr(rd.area_error));
+        EXPECT_LE(abs(mpfr(rd.normal_area) - rm.normal_area), mpfr(rd.area_error));
+        EXPECT_LE(rd.area_error, 1e-12);
+      }
+}
+
 // The measured profile's MDR transform, g(x) = x ∫₀^x f'(r)/√(x² − r²) dr, against tanh-sinh of
 // that integral per segment (r = x sin θ removes the endpoint singularity), random profiles.
 TEST(MeasuredProfile, TransformAgreesWithQuadratureOfTheMdrIntegral) {
