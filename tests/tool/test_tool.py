@@ -281,6 +281,7 @@ def bad_input_tests():
     bad("sweep missing --gamma", ["sweep", "--wave", "sine", "--beta", "1:2:3"], ["--gamma"],
         ["missing"])
     bad("verify digits=5", ["verify", "--digits", "5"], ["5"], ["digits"])
+    bad("verify digits=301 (above the documented 10 to 300)", ["verify", "--digits", "301"], ["301"], ["digits"])
     bad("verify unknown flag --wave", ["verify", "--wave", "sine"], ["--wave"])
     bad("verify unknown claim", ["verify", "--claim", "eq99"], ["eq99", "eq24"])
     bad("verify unknown format", ["verify", "--format", "xml"], ["xml"], ["--format"])
@@ -545,11 +546,13 @@ def format_tests():
         out = ok_run(["verify", "--digits", "20"])
         rows = {}
         for line in out.splitlines():
-            m = re.match(r"(Eq\. [\d-]+|Sec\. 3|Fig\. \d[a-c]?|beta_c)\s+(\d+)\s+(holds approximately|holds|fails)\s", line)
+            m = re.match(r"(\S.*?)\s{2,}(\d+)\s+(holds approximately|holds|fails)\s", line)
             if m:
                 rows.setdefault(m.group(1), []).append((int(m.group(2)), m.group(3)))
         want = ["Eq. 6", "Eq. 13", "Eq. 17", "Eq. 18", "Eq. 19", "Eq. 20-21", "Eq. 22", "Eq. 23", "Eq. 24",
-                "Sec. 3", "Fig. 3", "Fig. 4a", "Fig. 4b", "Fig. 4c", "beta_c"]
+                "Sec. 3", "Fig. 3", "Fig. 4a", "Fig. 4b", "Fig. 4c", "Eqs. 7-13", "Eq. 6, jumping range",
+                "Sec. 3, entanglement", "Sec. 3.1, continuity", "Sec. 3.1, uniqueness", "Sec. 3.2, convexity",
+                "Sec. 3.2, Eq. 23 range", "Fig. 2", "beta_c"]
         missing = [e for e in want if e not in rows]
         if missing:
             raise Fail("vibrofric verify has no row for %s; output:\n%s" % (", ".join(missing), out))
@@ -562,8 +565,17 @@ def format_tests():
         doc = json.loads(ok_run(["verify", "--digits", "20", "--claim", "eq24", "--format", "json"]))
         c = doc["claims"][0]
         if doc["digits"] != 20 or c["key"] != "eq24" or c["verdict"] != "fails" or not c["corrected"] \
-                or not (0 <= c["corrected_deviation"] <= 1e-20) or not c["measured"]:
+                or not (0 <= float(c["corrected_deviation"]) <= 1e-20) or not c["measured"] \
+                or not c["deviation_unit"]:
             raise Fail("vibrofric verify --format json: unexpected %r" % c)
+        # Deviations at the working precision, as decimal strings; null where nothing was corrected.
+        doc = json.loads(ok_run(["verify", "--digits", "300", "--claim", "eq17", "--format", "json"]))
+        c = doc["claims"][0]
+        dev = decimal.Decimal(c["deviation"])
+        if c["corrected_deviation"] is not None or not (0 <= dev <= decimal.Decimal("1e-300")) \
+                or (dev != 0 and dev.adjusted() < -360):
+            raise Fail("vibrofric verify --digits 300 --format json: deviation %r, corrected %r" % (
+                c["deviation"], c["corrected_deviation"]))
     test("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
 
     def trace():

@@ -57,7 +57,34 @@ const std::vector<ClaimEntry>& claims_catalogue() {
       {"fig4-scaling", "Fig. 4c", "paper",
        "harmonic: from about gamma = -0.3 on, mu is roughly parabolic and follows Eq. 23 (black dots)", kHighPrecision,
        "", fig4_scaling},
-      {"beta-c", "beta_c", "model.md", "beta_c = 2 pi (sine), 4 (triangle), 2 (str), 4p (power:p), infinite (stl, square)",
+      // model.md's claims table, the remaining statements of the paper (statements.cpp).
+      {"eqs7-13", "Eqs. 7-13", "paper",
+       "'after expanding and rearranging', Eqs. 7-10 give Delta F_x = mu0 k_z A Psi_w(beta) (Eqs. 11-12) and mu = mu0 (1 - "
+       "alpha Psi_w(beta)) (Eq. 13)",
+       kProofAndHP, "proofs/eqs7_13_reduction.md", eqs7_13},
+      {"eq6-jumping", "Eq. 6, jumping range", "paper",
+       "read with the unclipped w of Eq. 2 (beta_c = max w'): for beta < beta_c friction 'is reduced by some amount', also "
+       "in the jumping range",
+       kHighPrecision, "proofs/beta_c_sine.md", eq6_jumping},
+      {"entanglement", "Sec. 3, entanglement", "paper",
+       "in the jumping range the simplicity of Eq. 13 can no longer be maintained: mu != mu0 (1 - alpha Psi_w(beta)), alpha "
+       "and beta become entangled (Conclusions)",
+       kHighPrecision, "", entanglement},
+      {"continuity", "Sec. 3.1, continuity", "paper",
+       "the area ratio (mu) changes continuously as the waveform is clipped from below by increasingly large amplitudes",
+       kDerivationAndHP, "proofs/sec3_continuity.md", continuity},
+      {"uniqueness", "Sec. 3.1, uniqueness", "paper",
+       "the triangular waves have the unique property that clipping the waveform does not affect the coefficient of friction",
+       kProofAndHP, "proofs/sec3_uniqueness_convexity.md", uniqueness},
+      {"convexity", "Sec. 3.2, convexity", "paper",
+       "for a self-similar waveform, convexity ensures that stick is precipitated in the point of first contact",
+       kDerivationAndHP, "proofs/sec3_uniqueness_convexity.md", convexity},
+      {"eq23-range", "Sec. 3.2, Eq. 23 range", "paper",
+       "the harmonic scaling (Eq. 23) will not be valid for values of gamma close to 1", kHighPrecision, "", eq23_range},
+      {"fig2", "Fig. 2", "paper",
+       "F_x <= F_slip = mu0 F_z everywhere; the stick phases are straight segments, the slip phases follow mu0 F_z",
+       kHighPrecision, "", fig2},
+      {"beta-c", "beta_c", "model.md (correction)", "beta_c = 2 pi (sine), 4 (triangle), 2 (str), 4p (power:p), infinite (stl, square)",
        kDerivationAndHP, "proofs/beta_c_sine.md", beta_c_table},
       // Curved contacts (model.md, "Curved contacts (MDR)"); derivations in lib/src/claims/curved.cpp.
       {"scope-wearflat", "Abstract, scope (wear flat)", "paper",
@@ -66,13 +93,13 @@ const std::vector<ClaimEntry>& claims_catalogue() {
        kDerivationAndHP, "proofs/curved_closed_forms.md", scope_wearflat},
       {"scope-numerics", "Abstract, scope (numerics)", "paper",
        "the adopted methodology also enables efficient numerical solution in more general cases (curved contacts by "
-       "MDR: a sphere under harmonic oscillation to the requested digits in milliseconds to seconds)",
+       "MDR: a sphere under harmonic oscillation to the requested digits; the CPU time is measured, not judged)",
        kTiming, "", scope_numerics},
-      {"curved-eq6-sec3", "Eq. 6 + Sec. 3, curved", "model.md",
+      {"curved-eq6-sec3", "Eq. 6 + Sec. 3, curved", "model.md (extension)",
        "curved contacts (MDR): beta >= beta_c(gamma) of the central spring => mu = mu0, stick below; static "
        "coefficient mu_s = int (gamma - 1 - sigma)_+ dx / int N dx: zero iff the central spring jumps (gamma <= 1)",
        kDerivationAndHP, "", curved_eq6_sec3},
-      {"curved-power-flat", "power:N -> flat", "model.md",
+      {"curved-power-flat", "power:N -> flat", "model.md (extension)",
        "power-law profiles sigma = x^N tend to the flat punch as N -> infinity", kDerivationAndHP,
        "proofs/curved_closed_forms.md", curved_power_flat},
   };

@@ -162,6 +162,7 @@ void closed_forms(Check& c, int digits) {
 
 ClaimCheck scope_wearflat(int digits) {
   Check c(entry("scope-wearflat"), digits);
+  c.unit("absolute |mu_wearflat - mu_flat|, in mu0");
   const int retries0 = solver_retries();
   c.out().how =
       "wearflat:lambda (sphere with a wear flat, lambda = b^2/(R A); x in units of b) for lambda = 1, 10, 100, 1000, "
@@ -259,14 +260,16 @@ ClaimCheck scope_wearflat(int digits) {
   c.out().scope = "exact only where every spring of the row has the flat punch's mu (triangular waves with gamma <= 1, Eq. "
                   "18): there mu_wf = mu_flat to 1e-" + std::to_string(digits) + " at every lambda; otherwise mu_wf - "
                   "mu_flat = C/lambda^2 + O(lambda^-4) (measured order " + fix(order_lo, 3) + "-" + fix(order_hi, 3) +
-                  "), largest " + sci(c.out().deviation) + " mu0 at lambda = 1, " + sci(worst_at_100) +
+                  "), largest " + sci(static_cast<double>(c.largest())) + " mu0 at lambda = 1, " + sci(worst_at_100) +
                   " at lambda = 100, " + sci(worst_at_1e4) + " at lambda = 1e4";
+  c.out().fails_where = "every wave but the triangular ones with gamma <= 1, at every finite lambda (largest " +
+                        sci(static_cast<double>(c.largest())) + " mu0 at lambda = 1)";
   c.out().corrected = "a sphere with a wear flat (lambda = b^2/(R A)) obeys the flat punch's closed forms only up to "
                       "C/lambda^2, C = (int_0^(1+gamma) sigma (Phi - mu_flat N)(gamma - sigma) dsigma)/N(gamma); "
                       "exactly for the triangular waves with gamma <= 1";
   const bool approx = order_lo > 1.95 && order_hi < 2.05 && coeff_worst < 1e-4;
   report_retries(c, retries0);
-  if (c.out().deviation <= std::pow(10.0, -digits)) return c.finish(Verdict::holds, c.out().criterion);
+  if (c.within_digits()) return c.finish(Verdict::holds, c.out().criterion);
   return c.finish(approx ? Verdict::holds_approximately : Verdict::fails, c.out().criterion);
 }
 
@@ -276,19 +279,18 @@ ClaimCheck scope_wearflat(int digits) {
 ClaimCheck scope_numerics(int digits) {
   Check c(entry("scope-numerics"), digits);
   const int retries0 = solver_retries();
-  constexpr double kBudgetSeconds = 2.0;
   const std::vector<std::pair<const char*, const char*>> points{{"1", "-0.3"}, {"2", "0.5"}, {"0.5", "1.5"}};
   c.out().how = "sphere (power:2) + sine at (beta, gamma) = (1, -0.3), (2, 0.5), (0.5, 1.5): the curved solver in double "
                 "(raw), at 30 and at " + std::to_string(digits) + " digits (plus guard digits, raised until its bound "
                 "is met), each timed in thread CPU time after one untimed run per precision, and checked against the solver at " + std::to_string(digits + 30) +
                 " digits";
+  // The verdict rests on the values alone: a CPU-time threshold would make it depend on the machine
+  // and on the requested digits; the times are reported, and bench/curved.cpp measures them.
   c.out().criterion = "holds if every " + std::to_string(digits) + "-digit value agrees with the reference to 1e-" +
-                      std::to_string(digits) + " and costs at most " + fix(kBudgetSeconds, 1) +
-                      " s of CPU per evaluation (the budget: milliseconds to seconds on this machine); fails otherwise. "
-                      "Deviation: largest relative difference to the reference";
+                      std::to_string(digits) + " (the solution is obtained); the CPU times are measured and reported, "
+                      "not judged (bench/ has the benchmark). Deviation: largest relative difference to the reference";
   double worst_time = 0, worst_double = 0, t_double = 0, t_30 = 0, t_d = 0;
   std::size_t springs = 0;
-  bool in_budget = true;
   // Untimed first runs: the tanh-sinh tables of each precision are built once per thread.
   for (int d : {30, digits}) {
     PrecisionScope scope(static_cast<unsigned>(d + detail::guard_digits(d)));
@@ -320,7 +322,6 @@ ClaimCheck scope_numerics(int digits) {
     (void)dt30;
     springs += rd.springs;
     worst_time = std::max(worst_time, dtd);
-    in_budget = in_budget && dtd <= kBudgetSeconds;
     PrecisionScope ref_scope(static_cast<unsigned>(digits + 30 + detail::guard_digits(digits + 30)));
     const auto ref = curved("sine", named("sphere"), beta, gamma, digits + 30);
     c.compare(rd.mu, ref.mu, "sphere, " + at("sine", beta, &gamma) + " (" + std::to_string(digits) + " digits)");
@@ -341,9 +342,9 @@ ClaimCheck scope_numerics(int digits) {
   c.out().scope = std::to_string(digits) + " digits in " + fix(1e3 * t_d / n, 0) + " ms per evaluation (slowest " +
                   fix(1e3 * worst_time, 0) + " ms), double in " + fix(1e3 * t_double / n, 2) +
                   " ms, on this machine; bench/ has the benchmark (bench/README.md)";
-  const bool exact = c.out().deviation <= std::pow(10.0, -digits);
+  const bool exact = c.within_digits();
   report_retries(c, retries0);
-  return c.finish(exact && in_budget ? Verdict::holds : Verdict::fails, c.out().criterion);
+  return c.finish(exact ? Verdict::holds : Verdict::fails, c.out().criterion);
 }
 
 // --------------------------------------------------------------------------------------------
@@ -392,11 +393,12 @@ Real row_integral(const Profile<Real>& p, const Real& gamma, const std::function
 
 ClaimCheck curved_eq6_sec3(int digits) {
   Check c(entry("curved-eq6-sec3"), digits);
+  c.unit("relative (beta_c, integrals); 1 per violated property");
   const int retries0 = solver_retries();
   c.out().how =
       "Eq. 6: sine, triangle, square x sphere, wearflat:10 x gamma = 1.5, 0.5, -0.5: the curved solver's beta_c against "
       "the flat punch's beta_c(gamma); at beta = beta_c and 1.5 beta_c mu = 1 and, independently of the curved solver, "
-      "no stick in the flat punch at 16 springs across the row; at beta_c (1 - 1e-8) (beta = 100, 1000 for the "
+      "no stick in the flat punch at 16 springs across the row; at " + below_text(digits) + " (beta = 100, 1000 for the "
       "square) mu < 1 resolved beyond the error bound; beta_c(gamma') non-decreasing over 60 gamma' in (-1, 3]. Sec. 3: "
       "sphere, cone, wearflat:10 x gamma = 1.5, 1, 0.5, -0.5, triangle and square at beta = 1e-6, sine (sphere) at beta = "
       "1e-3: mu(beta) inside [mu_s, mu_s + beta X / int N dx] (proved bound; mu_s = int (gamma - 1 - sigma)_+ dx / "
@@ -441,7 +443,7 @@ ClaimCheck curved_eq6_sec3(int digits) {
             c.record(none ? 0.0 : 1.0, where + ", beta = " + f + " beta_c: a spring of the row sticks (flat punch at 16 x)");
           }
         }
-        for (const Real& beta : isfinite(bc) ? std::vector<Real>{bc * (1 - num("1e-8"))} : reals({"100", "1000"})) {
+        for (const Real& beta : isfinite(bc) ? std::vector<Real>{bc * (1 - below_step(digits))} : reals({"100", "1000"})) {
           const auto r = curved(wave, named(prof), beta, gamma, digits);
           const Real gap = 1 - r.mu;
           const bool resolved = gap > 10 * r.relative_error;
@@ -452,7 +454,7 @@ ClaimCheck curved_eq6_sec3(int digits) {
       }
     }
   }
-  c.measure("smallest 1 - mu at beta = beta_c (1 - 1e-8) (stick below beta_c, resolved)", sci(below_min));
+  c.measure("smallest 1 - mu at beta = " + below_text(digits) + " (stick below beta_c, resolved)", sci(below_min));
 
   // Sec. 3: the static coefficient.
   struct StaticCase {
@@ -513,6 +515,7 @@ ClaimCheck curved_eq6_sec3(int digits) {
 
 ClaimCheck curved_power_flat(int digits) {
   Check c(entry("curved-power-flat"), digits);
+  c.unit("absolute |mu_N - mu_flat|, in mu0");
   const int retries0 = solver_retries();
   const std::vector<const char*> ns{"2", "4", "8", "16", "64", "256"};
   c.out().how = "power:N (sigma = x^N) for N = 2, 4, 8, 16, 64, 256 against the flat punch, sine and square, gamma = 1.5, "
@@ -559,8 +562,9 @@ ClaimCheck curved_power_flat(int digits) {
                 row + "; " + nd + "; " + fix(order));
     }
   }
-  c.out().deviation = worst_last;
+  c.set_deviation(Real(worst_last));
   c.measure("order of D in 1/N (N = 64 -> 256)", fix(order_lo, 3) + " to " + fix(order_hi, 3));
+  c.out().fails_where = "at every finite N: " + sci(worst_last) + " mu0 at N = 256";
   c.out().scope = "mu_N - mu_flat = O(1/N) (measured order " + fix(order_lo, 3) + "-" + fix(order_hi, 3) +
                   "); largest D at N = 256: " + sci(worst_last) + " mu0";
   const bool approx = decreasing && order_lo > 0.9;

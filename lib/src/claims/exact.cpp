@@ -13,8 +13,9 @@ const char* const kWaves[] = {"sine", "triangle", "sawtooth-right", "sawtooth-le
 
 ClaimCheck eq6(int digits) {
   Check c(entry("eq6"), digits);
+  c.unit("relative |mu - mu0|/mu0 at and above beta_c; 1 per case without stick below it");
   c.out().how = "7 waves x gamma in {3, 1, 0.5, 0, -0.5, -0.9}: mu at beta_c, 1.5 beta_c, 10 beta_c must be exactly 1; "
-                "at beta_c (1 - 1e-8) (or beta = 100, 1000 where beta_c is infinite) a stick phase and mu < 1 (deviation 1 if not)";
+                "at " + below_text(digits) + " (or beta = 100, 1000 where beta_c is infinite) a stick phase and mu < 1 (deviation 1 if not)";
   for (const char* name : kWaves) {
     Solver s(name, digits);
     for (const Real& gamma : reals({"3", "1", "0.5", "0", "-0.5", "-0.9"})) {
@@ -26,7 +27,7 @@ ClaimCheck eq6(int digits) {
           c.compare(s.mu(beta, gamma), Real(1), at(name, beta, &gamma));
         }
       }
-      for (const Real& beta : isfinite(bc) ? std::vector<Real>{bc * (1 - num("1e-8"))} : reals({"100", "1000"})) {
+      for (const Real& beta : isfinite(bc) ? std::vector<Real>{bc * (1 - below_step(digits))} : reals({"100", "1000"})) {
         const auto r = s.result(beta, gamma);
         c.record(!r.stick_phases.empty() && r.mu < 1 ? 0.0 : 1.0,
                  at(name, beta, &gamma) + ": stick below beta_c (mu = " + str(r.mu, 20) + ")");
@@ -142,8 +143,9 @@ ClaimCheck fig3(int digits) {
 
 ClaimCheck beta_c_table(int digits) {
   Check c(entry("beta-c"), digits);
+  c.unit("relative |beta_c(table) - beta_c(dynamics)|/beta_c");
   c.out().how = "sine and power:p (p = 1.5, 2, 3, 8), gamma from 3 to -0.99: the tabulated beta_c against the beta_c that "
-                "the dynamics shows (mu = mu0 exactly at beta_c (1 + 10^-digits), a stick phase at beta_c (1 - 1e-8)); tri, str, stl, square likewise";
+                "the dynamics shows (mu = mu0 exactly at beta_c (1 + 10^-digits), a stick phase at " + below_text(digits) + "); tri, str, stl, square likewise";
   c.out().scope = "the table holds for gamma >= 0 (and for tri, str, stl, square at every gamma > -1)";
   c.out().corrected = "beta_c(gamma) = 2 pi sqrt(1 - gamma^2) (sine) and 4p (1+gamma)^((p-1)/p) (power:p) for -1 < gamma < 0: "
                       "the steepest rise of n is then at first contact";
@@ -171,7 +173,7 @@ ClaimCheck beta_c_table(int digits) {
         // The dynamics decide: μ = μ0 from β_c on, a stick phase just below it. (β_c itself is
         // rounded, and either side of it by an ulp is a legitimate answer: step 10^-digits up.)
         const auto above = s.result(corrected * (1 + pow(Real(10), -digits)), gamma);
-        const auto below = s.result(corrected * (1 - num("1e-8")), gamma);
+        const auto below = s.result(corrected * (1 - below_step(digits)), gamma);
         const bool ok = above.mu == 1 && above.stick_phases.empty() && !below.stick_phases.empty() && below.mu < 1;
         c.compare_corrected(Real(ok ? 0 : 1), Real(0));
         c.compare_corrected(s.beta_c(gamma), corrected);

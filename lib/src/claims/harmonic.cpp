@@ -81,6 +81,7 @@ std::string ranges(const std::vector<Real>& betas, const std::vector<bool>& ok) 
 
 ClaimCheck eq23(int digits) {
   Check c(entry("eq23"), digits);
+  c.unit("absolute, in mu0");
   c.out().how = "sine: for gamma0 = -0.3 and 5 gamma below it (gamma0 - f(1+gamma0), f = 0.2..0.99) x 100 beta up to "
                 "1.1 beta_c(gamma): the largest |mu(beta, gamma) - mu(xi_2, gamma0)| (absolute, units of mu0); the same "
                 "for gamma0 = -0.6, -0.9, -0.99, -0.999 for the rate";
@@ -109,6 +110,8 @@ ClaimCheck eq23(int digits) {
   const bool shrinking = rate[0].second > rate[1].second && rate[1].second > rate[2].second && rate[2].second > rate[3].second &&
                          rate[3].second > rate[4].second;
   c.out().scope = "asymptotically, gamma0 -> -1; at gamma0 = -0.3 the deviation is " + sci(ref.value) + " mu0";
+  c.out().fails_where = "exact for no gamma0: the deviation is nonzero at every gamma0 of the grid (" + sci(rate.front().second) +
+                        " mu0 at gamma0 = -0.3 down to " + sci(rate.back().second) + " at -0.999)";
   const Verdict v = ref.value <= std::pow(10.0, -digits) ? Verdict::holds
                     : shrinking && order > 0           ? Verdict::holds_approximately
                                                        : Verdict::fails;
@@ -117,6 +120,7 @@ ClaimCheck eq23(int digits) {
 
 ClaimCheck fig4_bunching(int digits) {
   Check c(entry("fig4-bunching"), digits);
+  c.unit("spread of mu over gamma in [-0.2, 1], in mu0");
   c.out().how = "sine, beta = 0.25, 0.5, ..., 6: spread S = max - min of mu over gamma = 1, 0.95, ..., -0.2, against the "
                 "spread of the figure's 11 curves (gamma = 1 ... -0.999) at the same beta";
   c.out().criterion = "read 'bunch closely' as S at most a quarter of the spread of all 11 curves; the verdict holds "
@@ -150,14 +154,18 @@ ClaimCheck fig4_bunching(int digits) {
       c.out().worst = "beta = " + str(beta, 4) + ": " + m;
     }
   }
-  c.out().deviation = worst;
+  c.set_deviation(Real(worst));
   c.out().scope = ranges(betas, ok);
+  std::vector<bool> not_ok(ok.size());
+  for (std::size_t i = 0; i < ok.size(); ++i) not_ok[i] = !ok[i];
+  c.out().fails_where = ranges(betas, not_ok);
   const bool any = std::find(ok.begin(), ok.end(), true) != ok.end();
   return c.finish(any ? Verdict::holds_approximately : Verdict::fails, c.out().criterion);
 }
 
 ClaimCheck fig4_minimum(int digits) {
   Check c(entry("fig4-minimum"), digits);
+  c.unit("|gamma_min - 0.6|");
   c.out().how = "sine, beta = 0.25, 0.5, ..., 6: mu on gamma = 1, 0.95, ..., -0.95 must fall then rise (one minimum), and "
                 "gamma_min, the minimiser over (-1, 1), by Brent's method to 1e-12";
   c.out().criterion = "holds approximately at a beta where mu is unimodal in gamma and |gamma_min - 0.6| <= 0.1 ('approx. "
@@ -189,14 +197,18 @@ ClaimCheck fig4_minimum(int digits) {
       c.out().worst = "beta = " + str(beta, 4) + ": " + t;
     }
   }
-  c.out().deviation = worst;
+  c.set_deviation(Real(worst));
   c.out().scope = ranges(betas, ok);
+  std::vector<bool> not_ok(ok.size());
+  for (std::size_t i = 0; i < ok.size(); ++i) not_ok[i] = !ok[i];
+  c.out().fails_where = ranges(betas, not_ok);
   const bool any = std::find(ok.begin(), ok.end(), true) != ok.end();
   return c.finish(any ? Verdict::holds_approximately : Verdict::fails, c.out().criterion);
 }
 
 ClaimCheck fig4_scaling(int digits) {
   Check c(entry("fig4-scaling"), digits);
+  c.unit("absolute, in mu0 (Eq. 23 deviation at gamma0 = -0.3)");
   c.out().how = "sine: the Eq. 23 deviation D(gamma0) (as in the Eq. 23 check) for gamma0 = 0.6, 0.2, -0.1, -0.3, -0.5";
   c.out().criterion = "holds approximately if D decreases as gamma0 decreases (so 'from gamma0 on' has a meaning) and "
                       "D(-0.3) <= 0.05 mu0 (the black dots lie on the curves at the figure's scale); deviation = D(-0.3)";
@@ -208,12 +220,19 @@ ClaimCheck fig4_scaling(int digits) {
     d.push_back(dev.value);
     c.measure("D(gamma0 = " + std::string(g0) + ")", sci(dev.value) + " mu0 at " + dev.where);
     if (std::string(g0) == "-0.3") {
-      c.out().deviation = dev.value;
+      c.set_deviation(Real(dev.value));
       c.out().worst = dev.where;
     }
   }
   bool decreasing = true;
   for (std::size_t i = 1; i < d.size(); ++i) decreasing = decreasing && d[i] < d[i - 1];
+  {
+    const char* g0s[] = {"0.6", "0.2", "-0.1", "-0.3", "-0.5"};
+    std::string big;
+    for (std::size_t i = 0; i < d.size(); ++i)
+      if (d[i] > 0.05) big += (big.empty() ? "" : ", ") + std::string(g0s[i]) + " (" + sci(d[i]) + " mu0)";
+    c.out().fails_where = big.empty() ? "" : "the dots leave the curves (D > 0.05 mu0) for gamma0 = " + big;
+  }
   c.out().scope = decreasing ? "the deviation shrinks steadily from gamma0 = 0.6 down: -0.3 is a point on a continuum, not a threshold"
                              : "the deviation does not shrink steadily as gamma0 decreases";
   return c.finish(decreasing && d[3] <= 0.05 ? Verdict::holds_approximately : Verdict::fails, c.out().criterion);

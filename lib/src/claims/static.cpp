@@ -35,6 +35,7 @@ Real power_slope(const Real& gamma) {
 
 ClaimCheck sec3(int digits) {
   Check c(entry("sec3"), digits);
+  c.unit("relative, of mu/beta against the derived slope");
   const std::string tiny = "1e-" + std::to_string(2 * digits + 4);
   c.out().how = "sine, tri, str, stl, square (gamma = -0.9, -0.5, 0, 0.5, 0.9, 1) and power:2, power:3 (gamma = -0.9, "
                 "-0.5, 0): mu(beta)/beta at beta = " + tiny + " against the derived slope sum L_i^2/(2 int n) "

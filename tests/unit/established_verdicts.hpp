@@ -1,0 +1,64 @@
+// The verdicts the proofs (proofs/) and the measured behaviour establish for every entry of the
+// claims catalogue (claims.hpp), shared by test_claims.cpp (at 50 digits and at the smallest
+// precision) and test_claims_precision.cpp (at the largest).
+#pragma once
+#include <map>
+#include <string>
+
+#include "vibrofric/claims.hpp"
+
+namespace vibrofric::testing {
+
+using vibrofric::Verdict;
+
+struct Expected {
+  Verdict verdict;
+  const char* why;
+};
+
+// The established verdicts, each with its evidence.
+const std::map<std::string, Expected>& established() {
+  static const std::map<std::string, Expected> e{
+      {"eq6", {Verdict::holds, "proofs/eq6_beta_c.md"}},
+      {"eq13", {Verdict::holds, "proofs/eq13_gamma_independence.md"}},
+      {"eq17", {Verdict::holds, "proofs/eq17_triangular_psi.md"}},
+      {"eq18", {Verdict::holds, "proofs/eq18_19_clipping.md"}},
+      {"eq19", {Verdict::holds, "proofs/eq18_19_clipping.md"}},
+      {"eq20-21", {Verdict::holds, "proofs/eq21_22_square.md"}},
+      {"eq22", {Verdict::holds, "proofs/eq21_22_square.md"}},
+      // A sine cap is a parabola only to relative O(1 + γ): asymptotic, with a first-order rate.
+      {"eq23", {Verdict::holds_approximately, "sine cap = parabola + O((1+gamma)^2)"}},
+      // The scaling proof gives the exponent (p − 1)/p, which is 1/p only for p = 2.
+      {"eq24", {Verdict::fails, "proofs/eq24_power_remap.md"}},
+      {"sec3", {Verdict::holds, "proofs/sec3_static.md"}},
+      {"fig3", {Verdict::holds, "Eq. 22, proofs/eq21_22_square.md"}},
+      {"fig4-bunching", {Verdict::holds_approximately, "qualitative statement, measured"}},
+      {"fig4-minimum", {Verdict::holds_approximately, "qualitative statement, measured"}},
+      {"fig4-scaling", {Verdict::holds_approximately, "qualitative statement, measured"}},
+      // model.md's table is β_c for γ ≥ 0; below, the steepest rise is at first contact.
+      {"eqs7-13", {Verdict::holds, "proofs/eqs7_13_reduction.md"}},
+      // Printed reading beta_c = max w': sine at gamma = -0.5, beta = 6 has mu = mu0 (proofs/beta_c_sine.md).
+      {"eq6-jumping", {Verdict::fails, "proofs/beta_c_sine.md"}},
+      {"entanglement", {Verdict::holds, "measured: Eq. 13's deviation is nonzero for every wave"}},
+      {"continuity", {Verdict::holds, "proofs/sec3_continuity.md (s is 1-Lipschitz in n)"}},
+      // The two-tooth wave (-1, 1, -1, 0, 1) is invariant and not triangular.
+      {"uniqueness", {Verdict::fails, "proofs/sec3_uniqueness_convexity.md"}},
+      {"convexity", {Verdict::holds, "proofs/sec3_uniqueness_convexity.md"}},
+      {"eq23-range", {Verdict::holds, "measured: D(gamma = 1) > 0.05 mu0"}},
+      {"fig2", {Verdict::holds, "the dynamics' rules, model.md"}},
+      {"beta-c", {Verdict::fails, "proofs/beta_c_sine.md"}},
+      // Curved contacts (derivations in lib/src/claims/curved.cpp). The wear flat's ring beyond the
+      // flat is (1+γ)²/(2λ²) wide: μ_wf − μ_flat = C/λ² + O(λ⁻⁴), zero only where every spring has
+      // the flat punch's μ (triangular waves, γ ≤ 1).
+      {"scope-wearflat", {Verdict::holds_approximately, "x(sigma) = 1 + sigma^2/(2 lambda^2) + O(lambda^-4)"}},
+      // 50 digits checked against 80, in well under the stated CPU budget per evaluation.
+      {"scope-numerics", {Verdict::holds, "measured: 50-digit values and CPU time"}},
+      // 0 ≤ Φ(β, γ') − (γ' − 1)₊ ≤ β per spring, and β_c(γ') non-decreasing in γ'.
+      {"curved-eq6-sec3", {Verdict::holds, "per-spring bounds, lib/src/claims/curved.cpp"}},
+      // u = x^N: ∫ h(x^N) dx = h(0) + O(1/N).
+      {"curved-power-flat", {Verdict::holds_approximately, "limit N -> infinity, O(1/N)"}},
+  };
+  return e;
+}
+
+}  // namespace vibrofric::testing
