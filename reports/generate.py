@@ -102,15 +102,46 @@ def by_gamma(rows):
     return out
 
 
+# The paper's colours for GAMMAS_FIG (γ = 1 dark red, negative γ blue), as a dark diverging scale dark red ->
+# purple -> dark blue with no light middle: CIELAB L* 22 (γ = 1), 52 (γ = 0, purple) and 20 (γ = -0.999), hue and
+# chroma interpolated in LCh, so that every curve prints on white paper (grey levels 37/255 to 128/255).
+# In greyscale the two halves look alike: γ > 0 is drawn solid, γ = 0 dash-dot and γ < 0 dashed.
+GAMMA_COLOURS = ["#77000c", "#8b002e", "#991950", "#a13473", "#a24e94", "#9e67b3", "#805ba8", "#62509c", "#42458f",
+                 "#183b81", "#003072"]
+
+
+def gamma_style(g):
+    """lw/lc/dt of the curve of gamma g (one of GAMMAS_FIG) in Figs. 3, 4 and the ball figure."""
+    dt = "1" if float(g) > 0 else ("(12,5,2,5)" if float(g) == 0 else "(10,6)")
+    return "lw 2 lc rgb '%s' dt %s" % (GAMMA_COLOURS[GAMMAS_FIG.index(g)], dt)
+
+
 def palette_plot(datafile, gammas, using="1:2"):
-    cols = ["#67001f", "#b2182b", "#d6604d", "#f4a582", "#fddbc7", "#999999", "#d1e5f0", "#92c5de", "#4393c3",
-            "#2166ac", "#053061"]
-    return ", \\\n     ".join("'%s' index %d using %s with lines lw 2 lc rgb '%s' title 'γ = %s'" %
-                              (datafile if i == 0 else "", i, using, cols[i], g) for i, g in enumerate(gammas))
+    return ", \\\n     ".join("'%s' index %d using %s with lines %s title 'γ = %s'" %
+                              (datafile if i == 0 else "", i, using, gamma_style(g), g) for i, g in enumerate(gammas))
+
+
+def merged_grid(parts):
+    """rows (beta, gamma, mu) of several sweeps/points -> {gamma: [(beta, mu)] sorted by beta, one row per beta}."""
+    out = {}
+    for b, g, m in parts:
+        out.setdefault(g, {}).setdefault(Fraction(b), (b, m))
+    return {g: [v for _, v in sorted(d.items())] for g, d in out.items()}
 
 
 def fig3_square(r):
-    rows = by_gamma(r.sweep("square", "0.02:8:400", GAMMAS_FIG, ["--digits", "12"]))
+    # Eq. 22 is a straight line up to its kink at β = 2(1+γ) and 1 − (1+γ)/β after it; the kink of every curve is a
+    # grid point (exact decimals), γ = −0.999 (kink at β = 0.002) gets a fine grid from β = 1e-4, and the main grid
+    # (step 0.005, about half a pixel of the PNG) stays below one pixel per segment: pngcairo snaps segments that are
+    # exactly horizontal in its integer coordinates and longer than a pixel to the pixel grid, which made the
+    # γ = −0.999 curve, rising by a fraction of a pixel near μ̄ = 1, wobble at the old step of 0.02 (2 pixels).
+    from decimal import Decimal
+    digits = ["--digits", "12"]
+    rows = r.sweep("square", "0.0001:0.02:200", GAMMAS_FIG, digits) + r.sweep("square", "0.005:8:1600", GAMMAS_FIG, digits)
+    for g in GAMMAS_FIG:
+        kink = str(2 * (1 + Decimal(g)))
+        rows.append((kink, g, r.mu("square", kink, g, digits)))
+    rows = merged_grid(rows)
     r.write_data("fig3_square.dat", [("gamma = " + g, rows[g]) for g in GAMMAS_FIG], "beta mu/mu0 (square wave)")
     return r.gnuplot("fig3_square", """
 set title 'Square wave, 11 values of γ (Fig. 3; γ = −1 drawn at −0.999, where contact still exists)'
@@ -124,11 +155,13 @@ plot %s
 
 
 def fig4_harmonic(r):
-    rows = by_gamma(r.sweep("sine", "0.02:7:350", GAMMAS_FIG, ["--digits", "12"]))
+    # Step 0.005 (about half a pixel of the PNG; see fig3_square for the pixel snapping of longer flat segments).
+    rows = by_gamma(r.sweep("sine", "0.005:7:1400", GAMMAS_FIG, ["--digits", "12"]))
     r.write_data("fig4_harmonic.dat", [("gamma = " + g, rows[g]) for g in GAMMAS_FIG], "beta mu/mu0 (sine)")
     # Eq. 23 relative to γ0 = −0.3: μ̄(β, γ) ≈ μ̄(ξ, γ0), ξ = β √((1 + γ0)/(1 + γ)), for γ < γ0.
+    eq23 = ["-0.4", "-0.6", "-0.8", "-0.999"]
     dots = []
-    for g in ["-0.4", "-0.6", "-0.8", "-0.999"]:
+    for g in eq23:
         c = math.sqrt(0.7 / (1 + float(g)))
         lo, hi, n = 0.25, 7.0, 28
         xi = run([r.tool, "sweep", "--wave", "sine", "--beta", "%.15g:%.15g:%d" % (lo * c, hi * c, n), "--gamma", "-0.3",
@@ -136,16 +169,25 @@ def fig4_harmonic(r):
         dots.append(("Eq. 23 dots for gamma = " + g,
                      [(lo + (hi - lo) * i / (n - 1), line.split(",")[3]) for i, line in enumerate(xi)]))
     r.write_data("fig4_eq23.dat", dots, "beta mu(xi_2(beta, gamma), -0.3)")
+    # Each γ's markers: filled in the colour of its curve, one shape per γ (square, circle, triangle, diamond), with a
+    # black outline of the same shape drawn over it; the key names the γ of each shape.
+    shapes = [(5, 4), (7, 6), (9, 8), (13, 12)]
+    marks = []
+    for i, g in enumerate(eq23):
+        filled, outline = shapes[i]
+        marks.append("'fig4_eq23.dat' index %d using 1:2 with points pt %d ps 1.3 lc rgb '%s' title 'Eq. 23, γ = %s'" %
+                     (i, filled, GAMMA_COLOURS[GAMMAS_FIG.index(g)], g))
+        marks.append("'' index %d using 1:2 with points pt %d ps 1.3 lw 1 lc rgb 'black' notitle" % (i, outline))
     return r.gnuplot("fig4_harmonic", """
-set title 'Harmonic wave, 11 values of γ (Fig. 4); dots: Eq. 23 relative to γ_0 = −0.3'
+set title 'Harmonic wave, 11 values of γ (Fig. 4); markers: Eq. 23 relative to γ_0 = −0.3'
 set xlabel 'β = k_x v_0 / (μ_0 k_z A f)'
 set ylabel 'μ̄ / μ_0'
 set key outside right top
 set xrange [0:7]
 set yrange [0:1.02]
 plot %s, \\
-     'fig4_eq23.dat' index 0:3 using 1:2 with points pt 7 ps 0.6 lc rgb 'black' title 'Eq. 23'
-""" % palette_plot("fig4_harmonic.dat", GAMMAS_FIG))
+     %s
+""" % (palette_plot("fig4_harmonic.dat", GAMMAS_FIG), ", \\\n     ".join(marks)))
 
 
 def fig_power_collapse(r):
@@ -302,7 +344,13 @@ set ylabel 'error in ulp of the type (floored at 10^{−3})'
 set logscale xy
 set format y '10^{%%L}'
 set format x '10^{%%L}'
-set key left top
+# The key sits below the plot, clear of every point (inside, it hid the largest errors at small β); the y range
+# is the data's plus 4 %% of the plot height either way, so that neither the largest errors nor the floored ones lie
+# on the border.
+set key at screen 0.5, screen 0.01 center bottom vertical maxrows 3
+set bmargin 7.5
+set autoscale y noextend
+set offsets 0, 0, graph 0.04, graph 0.04
 plot %s
 """ % ", \\\n     ".join(plots))
     return fig, summary
@@ -372,6 +420,7 @@ def main():
     r = Report(os.path.abspath(a.tool), a.out, a.digits)
     # The tree's state before this run writes its figures (tracked files): the commit it reports.
     v = versions(r.tool)
+    r.commit = v["commit"]
 
     claims = json.loads(run([r.tool, "verify", "--digits", str(a.digits), "--format", "json"]))["claims"]
     figs = {"fig2": fig2_trace(r), "fig3": fig3_square(r), "fig4": fig4_harmonic(r), "power": fig_power_collapse(r)}
@@ -387,17 +436,20 @@ def main():
     w("")
     w("## Summary")
     w("")
+    paper = [c for c in claims if c["source"] == "paper"]
+    ours = [c for c in claims if c["source"] != "paper"]
     counts = {}
-    for c in claims:
+    for c in paper:
         counts[c["verdict"]] = counts.get(c["verdict"], 0) + 1
-    w("Every claim of M. Popov, *Friction under large-amplitude normal oscillations* (the list in `model.md`), "
+    w("Every statement of M. Popov, *Friction under large-amplitude normal oscillations*, that `model.md` lists, "
       "decided by the vibrofric solver at **%d significant digits** (the solver carries guard digits and raises "
-      "its precision until its own rounding bound meets the request). Where a claim is a closed form it is also "
-      "proved symbolically in [`proofs/`](../proofs/README.md) (GiNaC); the solver is cross-checked by an "
-      "independent mpmath implementation, an exact rational lower-envelope algorithm and a grid envelope "
-      "(`tests/`)." % a.digits)
+      "its precision until its own rounding bound meets the request). Where a claim is a closed form or a "
+      "derivation it is also proved symbolically in [`proofs/`](../proofs/README.md) (GiNaC); the solver is "
+      "cross-checked by an independent mpmath implementation, an exact rational lower-envelope algorithm and a "
+      "grid envelope (`tests/`)." % a.digits)
     w("")
-    w("**Verdicts:** %s." % ", ".join("%d %s" % (n, k) for k, n in sorted(counts.items())))
+    w("**The paper's %d claims:** %s. Corrections to our own documents and our extensions (curved contacts) "
+      "are listed apart and not counted here." % (len(paper), ", ".join("%d %s" % (n, k) for k, n in sorted(counts.items()))))
     w("")
     w("| | |")
     w("|---|---|")
@@ -407,44 +459,68 @@ def main():
     w("| machine | %s |" % v["machine"])
     w("| build stamp | %s |" % datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"))
     w("")
-    w("## Claims")
+
+    def claims_table(rows):
+        w("| claim | statement | method | cases | deviation (unit) | verdict | evidence |")
+        w("|---|---|---|---|---|---|---|")
+        for c in rows:
+            ev = []
+            if c["proof"]:
+                ev.append("[%s](../%s)" % (os.path.basename(c["proof"]), c["proof"]))
+            ev.append("test `%s`" % c["key"])
+            verdict = "**%s**" % c["verdict"]
+            if c["scope"]:
+                verdict += " — " + c["scope"]
+            if c["fails_where"]:
+                verdict += "; fails: " + c["fails_where"]
+            w("| %s | %s | %s | %d | %s (%s) | %s | %s |" % (
+                c["id"], md_escape(c["statement"]), c["method"], c["cases"], c["deviation"],
+                md_escape(c["deviation_unit"]), md_escape(verdict), ", ".join(ev)))
+        w("")
+
+    w("## The paper's claims")
     w("")
-    w("Deviation: the largest relative deviation over the cases checked, except where the criterion says "
-      "otherwise (absolute in units of μ0 for Eq. 23, Fig. 4, the wear flat and power:N → flat; |γ_min − 0.6| for "
-      "Fig. 4b). Test: the ctest "
+    w("Statements as the paper makes them, decided at %d digits. Each deviation is written with its unit; a "
+      "deviation is printed at the working precision (three significant digits, any exponent). Test: the ctest "
       "name is `Catalogue/Claim.VerdictIsTheEstablishedOne/KEY` in [`tests/unit/test_claims.cpp`]"
-      "(../tests/unit/test_claims.cpp).")
+      "(../tests/unit/test_claims.cpp)." % a.digits)
     w("")
-    w("| claim | statement (as the paper makes it) | method | digits | cases | deviation | verdict | evidence |")
-    w("|---|---|---|---|---|---|---|---|")
-    for c in claims:
-        ev = []
-        if c["proof"]:
-            ev.append("[%s](../%s)" % (os.path.basename(c["proof"]), c["proof"]))
-        ev.append("test `%s`" % c["key"])
-        verdict = "**%s**" % c["verdict"]
-        if c["scope"]:
-            verdict += " — " + c["scope"]
-        w("| %s%s | %s | %s | %d | %d | %.2e | %s | %s |" % (
-            c["id"], " (model.md)" if c["source"] == "model.md" else "", md_escape(c["statement"]), c["method"],
-            a.digits, c["cases"], c["deviation"], md_escape(verdict), ", ".join(ev)))
+    claims_table(paper)
+    w("## Errata: where the paper is wrong")
     w("")
-    w("## Errata")
-    w("")
-    for c in claims:
+    for c in paper:
         if c["verdict"] != "fails":
             continue
-        w("### %s (%s)" % (c["id"], c["source"]))
+        w("### %s" % c["id"])
         w("")
         w("- **As stated:** %s" % c["statement"])
-        w("- **Counterexample** (largest deviation %.2e): %s" % (c["deviation"], c["worst"]))
+        w("- **Counterexample** (deviation %s, %s): %s" % (c["deviation"], c["deviation_unit"], c["worst"]))
         if c["scope"]:
             w("- **Where it holds:** %s" % c["scope"])
-        w("- **Corrected:** %s — largest measured deviation %.2e at %d digits%s" % (
+        if c["fails_where"]:
+            w("- **Where it fails:** %s" % c["fails_where"])
+        w("- **Corrected:** %s — largest measured deviation %s at %d digits%s" % (
             c["corrected"], c["corrected_deviation"], a.digits,
             " ([proof](../%s))" % c["proof"] if c["proof"] else ""))
         for name, value in c["measured"]:
             w("- %s: %s" % (name, value))
+        w("")
+    w("## Corrections to our own documents and our extensions")
+    w("")
+    w("Not the paper's claims: statements of `model.md` that the suite checks, and where it found `model.md` "
+      "wrong (now corrected there).")
+    w("")
+    claims_table(ours)
+    for c in ours:
+        if c["verdict"] != "fails":
+            continue
+        w("### model.md: %s" % c["statement"])
+        w("")
+        w("- **Counterexample** (deviation %s, %s): %s" % (c["deviation"], c["deviation_unit"], c["worst"]))
+        if c["scope"]:
+            w("- **Where it holds:** %s" % c["scope"])
+        w("- **Corrected:** %s — largest measured deviation %s%s" % (
+            c["corrected"], c["corrected_deviation"], " ([proof](../%s))" % c["proof"] if c["proof"] else ""))
         w("")
     found = os.path.join(ROOT, "proofs", "foundations_envelope.md")
     if os.path.exists(found):
@@ -459,13 +535,14 @@ def main():
     for c in claims:
         if c["verdict"] != "holds approximately":
             continue
-        w("### %s — %s" % (c["id"], c["statement"]))
+        w("### %s — %s%s" % (c["id"], c["statement"], "" if c["source"] == "paper" else " (%s, not the paper)" % c["source"]))
         w("")
         w("- **Checked:** %s" % c["how"])
         w("- **Criterion:** %s" % c["criterion"])
-        w("- **Largest deviation:** %.3g at %s" % (c["deviation"], c["worst"]))
+        w("- **Largest deviation:** %s (%s) at %s" % (c["deviation"], c["deviation_unit"], c["worst"]))
         if c["scope"]:
             w("- **Holds over:** %s" % c["scope"])
+        w("- **Fails over:** %s" % (c["fails_where"] or "nowhere on the grid checked"))
         if c["corrected"]:
             w("- **What holds:** %s" % c["corrected"])
         # The closed forms of curved contacts have their own table (section "Curved contacts").
@@ -508,7 +585,7 @@ def main():
                                    "wave, β = 2, without and with jumping."),
                          ("fig3", "Fig. 3 — square wave, Eq. 22, for the paper's 11 values of γ."),
                          ("fig4", "Fig. 4 — harmonic wave for the paper's 11 values of γ, with Eq. 23 relative to "
-                                  "γ0 = −0.3 as dots."),
+                                  "γ0 = −0.3 as markers: one shape per γ, filled in its curve's colour (see the key)."),
                          ("power", "Power-law family p = 3: the curves for five γ collapse onto one under "
                                    "β(1+γ)^−(p−1)/p (the remapping that holds) and not under Eq. 24 as printed."),
                          ("ulp", "Error in ulps over β of the fixed-precision paths of `vibrofric mu`.")):
@@ -692,6 +769,13 @@ def bench_section(w, path, r):
           str(before.get("git_commit", "?"))[:12], " (dirty)" if before.get("git_dirty") else "",
           meta.get("mode", "?")))
     w("")
+    report_commit = r.commit if hasattr(r, "commit") else None
+    bench_commit = str(before.get("git_commit", "?"))
+    if report_commit and not bench_commit.startswith(report_commit[:12]) and not report_commit.startswith(bench_commit[:12]):
+        w("**These timings come from commit `%s`, not from the report's commit `%s`**: the benchmarks are re-run "
+          "on a quiet machine when the solver's code changes; the claims and figures above are from the report's "
+          "commit." % (bench_commit[:12], report_commit[:12]))
+        w("")
     md = os.path.splitext(path)[0] + ".md"
     if os.path.exists(md):
         for line in open(md).read().splitlines():
