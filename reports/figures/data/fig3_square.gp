@@ -8,14 +8,14 @@ set ylabel 'μ̄ / μ_0'
 set key outside right top
 set xrange [0:8]
 set yrange [0:1.02]
-plot 'fig3_square.dat' index 0 using 1:2 with lines lw 2 lc rgb '#67001f' title 'γ = 1', \
-     '' index 1 using 1:2 with lines lw 2 lc rgb '#b2182b' title 'γ = 0.8', \
-     '' index 2 using 1:2 with lines lw 2 lc rgb '#d6604d' title 'γ = 0.6', \
-     '' index 3 using 1:2 with lines lw 2 lc rgb '#f4a582' title 'γ = 0.4', \
-     '' index 4 using 1:2 with lines lw 2 lc rgb '#fddbc7' title 'γ = 0.2', \
-     '' index 5 using 1:2 with lines lw 2 lc rgb '#999999' title 'γ = 0', \
-     '' index 6 using 1:2 with lines lw 2 lc rgb '#d1e5f0' title 'γ = -0.2', \
-     '' index 7 using 1:2 with lines lw 2 lc rgb '#92c5de' title 'γ = -0.4', \
-     '' index 8 using 1:2 with lines lw 2 lc rgb '#4393c3' title 'γ = -0.6', \
-     '' index 9 using 1:2 with lines lw 2 lc rgb '#2166ac' title 'γ = -0.8', \
-     '' index 10 using 1:2 with lines lw 2 lc rgb '#053061' title 'γ = -0.999'
+plot 'fig3_square.dat' index 0 using 1:2 with lines lw 2 lc rgb '#77000c' dt 1 title 'γ = 1', \
+     '' index 1 using 1:2 with lines lw 2 lc rgb '#8b002e' dt 1 title 'γ = 0.8', \
+     '' index 2 using 1:2 with lines lw 2 lc rgb '#991950' dt 1 title 'γ = 0.6', \
+     '' index 3 using 1:2 with lines lw 2 lc rgb '#a13473' dt 1 title 'γ = 0.4', \
+     '' index 4 using 1:2 with lines lw 2 lc rgb '#a24e94' dt 1 title 'γ = 0.2', \
+     '' index 5 using 1:2 with lines lw 2 lc rgb '#9e67b3' dt (12,5,2,5) title 'γ = 0', \
+     '' index 6 using 1:2 with lines lw 2 lc rgb '#805ba8' dt (10,6) title 'γ = -0.2', \
+     '' index 7 using 1:2 with lines lw 2 lc rgb '#62509c' dt (10,6) title 'γ = -0.4', \
+     '' index 8 using 1:2 with lines lw 2 lc rgb '#42458f' dt (10,6) title 'γ = -0.6', \
+     '' index 9 using 1:2 with lines lw 2 lc rgb '#183b81' dt (10,6) title 'γ = -0.8', \
+     '' index 10 using 1:2 with lines lw 2 lc rgb '#003072' dt (10,6) title 'γ = -0.999'

@@ -2,21 +2,28 @@ set encoding utf8
 set key box opaque
 set grid
 
-set title 'Harmonic wave, 11 values of γ (Fig. 4); dots: Eq. 23 relative to γ_0 = −0.3'
+set title 'Harmonic wave, 11 values of γ (Fig. 4); markers: Eq. 23 relative to γ_0 = −0.3'
 set xlabel 'β = k_x v_0 / (μ_0 k_z A f)'
 set ylabel 'μ̄ / μ_0'
 set key outside right top
 set xrange [0:7]
 set yrange [0:1.02]
-plot 'fig4_harmonic.dat' index 0 using 1:2 with lines lw 2 lc rgb '#67001f' title 'γ = 1', \
-     '' index 1 using 1:2 with lines lw 2 lc rgb '#b2182b' title 'γ = 0.8', \
-     '' index 2 using 1:2 with lines lw 2 lc rgb '#d6604d' title 'γ = 0.6', \
-     '' index 3 using 1:2 with lines lw 2 lc rgb '#f4a582' title 'γ = 0.4', \
-     '' index 4 using 1:2 with lines lw 2 lc rgb '#fddbc7' title 'γ = 0.2', \
-     '' index 5 using 1:2 with lines lw 2 lc rgb '#999999' title 'γ = 0', \
-     '' index 6 using 1:2 with lines lw 2 lc rgb '#d1e5f0' title 'γ = -0.2', \
-     '' index 7 using 1:2 with lines lw 2 lc rgb '#92c5de' title 'γ = -0.4', \
-     '' index 8 using 1:2 with lines lw 2 lc rgb '#4393c3' title 'γ = -0.6', \
-     '' index 9 using 1:2 with lines lw 2 lc rgb '#2166ac' title 'γ = -0.8', \
-     '' index 10 using 1:2 with lines lw 2 lc rgb '#053061' title 'γ = -0.999', \
-     'fig4_eq23.dat' index 0:3 using 1:2 with points pt 7 ps 0.6 lc rgb 'black' title 'Eq. 23'
+plot 'fig4_harmonic.dat' index 0 using 1:2 with lines lw 2 lc rgb '#77000c' dt 1 title 'γ = 1', \
+     '' index 1 using 1:2 with lines lw 2 lc rgb '#8b002e' dt 1 title 'γ = 0.8', \
+     '' index 2 using 1:2 with lines lw 2 lc rgb '#991950' dt 1 title 'γ = 0.6', \
+     '' index 3 using 1:2 with lines lw 2 lc rgb '#a13473' dt 1 title 'γ = 0.4', \
+     '' index 4 using 1:2 with lines lw 2 lc rgb '#a24e94' dt 1 title 'γ = 0.2', \
+     '' index 5 using 1:2 with lines lw 2 lc rgb '#9e67b3' dt (12,5,2,5) title 'γ = 0', \
+     '' index 6 using 1:2 with lines lw 2 lc rgb '#805ba8' dt (10,6) title 'γ = -0.2', \
+     '' index 7 using 1:2 with lines lw 2 lc rgb '#62509c' dt (10,6) title 'γ = -0.4', \
+     '' index 8 using 1:2 with lines lw 2 lc rgb '#42458f' dt (10,6) title 'γ = -0.6', \
+     '' index 9 using 1:2 with lines lw 2 lc rgb '#183b81' dt (10,6) title 'γ = -0.8', \
+     '' index 10 using 1:2 with lines lw 2 lc rgb '#003072' dt (10,6) title 'γ = -0.999', \
+     'fig4_eq23.dat' index 0 using 1:2 with points pt 5 ps 1.3 lc rgb '#62509c' title 'Eq. 23, γ = -0.4', \
+     '' index 0 using 1:2 with points pt 4 ps 1.3 lw 1 lc rgb 'black' notitle, \
+     'fig4_eq23.dat' index 1 using 1:2 with points pt 7 ps 1.3 lc rgb '#42458f' title 'Eq. 23, γ = -0.6', \
+     '' index 1 using 1:2 with points pt 6 ps 1.3 lw 1 lc rgb 'black' notitle, \
+     'fig4_eq23.dat' index 2 using 1:2 with points pt 9 ps 1.3 lc rgb '#183b81' title 'Eq. 23, γ = -0.8', \
+     '' index 2 using 1:2 with points pt 8 ps 1.3 lw 1 lc rgb 'black' notitle, \
+     'fig4_eq23.dat' index 3 using 1:2 with points pt 13 ps 1.3 lc rgb '#003072' title 'Eq. 23, γ = -0.999', \
+     '' index 3 using 1:2 with points pt 12 ps 1.3 lw 1 lc rgb 'black' notitle
