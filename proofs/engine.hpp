@@ -120,7 +120,10 @@ inline bool linear_factor_sign(const ex& f, const Regime& R, int& out) {
   return false;
 }
 
-inline bool factored_sign(const ex& p, const Regime& R, int& out) {
+// The sign of p from its factorisation: numeric factors by value, every other factor (or the base
+// of a positive integer power) by factor_sign(base, fs); false if one cannot be decided.
+template <class FactorSign>
+bool sign_by_factors(const ex& p, FactorSign factor_sign, int& out) {
   ex f = factor(p);
   std::vector<ex> ops;
   if (is_a<mul>(f)) for (size_t i = 0; i < f.nops(); ++i) ops.push_back(f.op(i));
@@ -133,12 +136,16 @@ inline bool factored_sign(const ex& p, const Regime& R, int& out) {
       base = o.op(0); e = ex_to<numeric>(o.op(1)).to_long();
     }
     int fs;
-    if (!linear_factor_sign(base, R, fs)) return false;
+    if (!factor_sign(base, fs)) return false;
     if (fs == 0) { out = 0; return true; }
     if (e % 2 == 1) s *= fs;
   }
   out = s;
   return true;
+}
+
+inline bool factored_sign(const ex& p, const Regime& R, int& out) {
+  return sign_by_factors(p, [&](const ex& base, int& fs) { return linear_factor_sign(base, R, fs); }, out);
 }
 
 // Decide the sign of e on the regime. Exact if e normalises to a number; otherwise the sign

@@ -87,23 +87,8 @@ bool multilinear_factor_sign(const ex& f, const Box& bx, int& out) {
   return false;
 }
 bool box_sign(const ex& p, const Box& bx, int& out) {
-  ex f = factor(p);
-  std::vector<ex> ops;
-  if (is_a<mul>(f)) for (size_t i = 0; i < f.nops(); ++i) ops.push_back(f.op(i));
-  else ops.push_back(f);
-  int s = 1;
-  for (auto& o : ops) {
-    if (is_a<numeric>(o)) { s *= sgn(ex_to<numeric>(o)); continue; }
-    ex base = o; long e = 1;
-    if (is_a<power>(o) && is_a<numeric>(o.op(1)) && ex_to<numeric>(o.op(1)).is_pos_integer()) {
-      base = o.op(0); e = ex_to<numeric>(o.op(1)).to_long();
-    }
-    int fs = 0;
-    if (!multilinear_factor_sign(base, bx, fs) || fs == 0) return false;
-    if (e % 2 == 1) s *= fs;
-  }
-  out = s;
-  return true;
+  // A zero factor is not a decided sign here (the condition would not be strict).
+  return sign_by_factors(p, [&](const ex& base, int& fs) { return multilinear_factor_sign(base, bx, fs) && fs != 0; }, out);
 }
 
 // Run the engine on a box regime (gamma or beta fixed when the box is degenerate in it).
