@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -10,33 +11,130 @@
 
 namespace vibrofric {
 
+static bool is_decimal(const std::string& t);
+
 namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
-// Lines of a user waveform file with comments (#…) and blank lines removed, as token lists.
-std::vector<std::pair<int, std::vector<std::string>>> read_tokens(const std::string& path,
-                                                                 const std::string& wave) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot read file " + quoted(path) + " for wave " + quoted(wave));
-  std::vector<std::pair<int, std::vector<std::string>>> lines;
+// A text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').
+std::string visible(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u >= 0x20 && u < 0x7F) {
+      out += ch;
+    } else {
+      char b[8];
+      std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
+      out += b;
+    }
+  }
+  return out;
+}
+
+// A user waveform file as a table (README, "File formats"): a UTF-8 byte-order mark and CR line
+// ends are dropped, '#' starts a comment, blank lines are skipped; a line with ',' or ';' has its
+// fields between them (so a header may hold spaces: 'time [s], value'), any other line between
+// runs of whitespace. A first line without any number is the header.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::pair<int, std::vector<std::string>>> rows;  // line number, fields
+};
+
+Table read_table(const std::string& path, const std::string& wave) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)) + " is a directory: expected a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)));
+  Table t;
   std::string line;
   int number = 0;
   constexpr std::size_t max_lines = 10'000'000;
   while (std::getline(in, line)) {
     ++number;
     if (static_cast<std::size_t>(number) > max_lines)
-      throw InputError("file " + quoted(path) + " has more than " + std::to_string(max_lines) + " lines: expected fewer");
+      throw InputError("file " + quoted(visible(path)) + " has more than " + std::to_string(max_lines) + " lines: expected fewer");
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos)
+      throw InputError("file " + quoted(visible(path)) + " line " + std::to_string(number) + " holds a NUL byte: expected text");
     if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
-    std::istringstream ls(line);
-    std::vector<std::string> tokens;
-    for (std::string t; ls >> t;) {
-      if (t.back() == ',') t.pop_back();
-      if (!t.empty()) tokens.push_back(t);
+    // A line with ',' or ';' is split there (fields trimmed; an empty one is an error, except
+    // after a trailing separator); any other line at runs of whitespace.
+    std::vector<std::string> fields;
+    const auto space = [](char c) { return c == ' ' || c == '\t'; };
+    if (line.find_first_of(",;") != std::string::npos) {
+      std::size_t start = 0;
+      for (;;) {
+        const std::size_t end = line.find_first_of(",;", start);
+        std::string f = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        while (!f.empty() && space(f.back())) f.pop_back();
+        std::size_t lead = 0;
+        while (lead < f.size() && space(f[lead])) ++lead;
+        f.erase(0, lead);
+        if (end == std::string::npos) {
+          if (!f.empty()) fields.push_back(f);
+          break;
+        }
+        if (f.empty())
+          throw InputError(path + ":" + std::to_string(number) + ": empty field before " +
+                           quoted(std::string(1, line[end])) + ": expected a value between separators");
+        fields.push_back(f);
+        start = end + 1;
+      }
+    } else {
+      std::istringstream ls(line);
+      for (std::string f; ls >> f;) fields.push_back(f);
     }
-    if (!tokens.empty()) lines.emplace_back(number, std::move(tokens));
+    if (fields.empty()) continue;
+    bool names = true;  // a header holds no number at all
+    for (const auto& f : fields) names = names && !is_decimal(f);
+    if (names && t.rows.empty() && t.header.empty()) {
+      t.header = fields;
+      continue;
+    }
+    t.rows.emplace_back(number, std::move(fields));
   }
-  return lines;
+  return t;
+}
+
+// "time", "t", "Time [s]", "t (ms)": the name of a time column.
+bool is_time_name(const std::string& name) {
+  static const std::regex re(R"((t|time)\s*([\[(].*[\])])?)", std::regex::icase);
+  return std::regex_match(name, re);
+}
+
+// The value of a decimal at 60 significant digits: decimals of up to 60 digits compare exactly.
+mpfr exact_value(const std::string& text) {
+  PrecisionScope scope(60);
+  return mpfr(text);
+}
+
+// The smallest p dividing n with y_j = y_{j+p} for every j (n if none), and with a time column
+// also t_{j+p} − t_j the same for every j (the signal repeats, not only its values): doubles
+// filter the candidates, 60 digits confirm them.
+std::size_t smallest_period(const std::vector<std::string>& y, const std::vector<std::string>& t) {
+  const std::size_t n = y.size();
+  std::vector<double> v, tv;
+  v.reserve(n);
+  for (const auto& x : y) v.push_back(std::strtod(x.c_str(), nullptr));
+  for (const auto& x : t) tv.push_back(std::strtod(x.c_str(), nullptr));
+  for (std::size_t p = 1; p < n; ++p) {
+    if (n % p) continue;
+    bool same = true;
+    for (std::size_t j = 0; j + p < n && same; ++j) same = v[j] == v[j + p];
+    if (!same) continue;
+    PrecisionScope scope(60);
+    for (std::size_t j = 0; j + p < n && same; ++j) same = mpfr(y[j]) == mpfr(y[j + p]);
+    if (same && !t.empty()) {
+      const mpfr shift = mpfr(t[p]) - mpfr(t[0]);
+      for (std::size_t j = 0; j + p < n && same; ++j) same = mpfr(t[j + p]) - mpfr(t[j]) == shift;
+    }
+    if (same) return p;
+  }
+  return n;
 }
 
 }  // namespace
@@ -76,7 +174,7 @@ static bool is_decimal(const std::string& t) {
 void check_decimal(const std::string& text, const std::string& what) {
   if (text.empty()) throw InputError(what + " is empty: expected a decimal number");
   if (!is_decimal(text))
-    throw InputError(what + " = " + quoted(text) + ": expected a finite decimal number such as 0.5 or -3e-2 (exponent below 1e9)");
+    throw InputError(what + " = " + quoted(visible(text)) + ": expected a finite decimal number such as 0.5 or -3e-2 (exponent below 1e9)");
   errno = 0;
   const long double v = std::strtold(text.c_str(), nullptr);
   if (errno == ERANGE && std::fabs(v) > 1) 
@@ -108,12 +206,16 @@ WaveSpec parse_wave(const std::string& text) {
     if (arg.empty()) throw InputError("wave " + quoted(text) + ": expected fourier:FILE");
     s.kind = WaveKind::fourier;
     std::set<unsigned> seen;
-    for (const auto& [line, tok] : read_tokens(arg, text)) {
+    const Table table = read_table(arg, text);
+    if (!table.header.empty() && table.header.size() != 3)
+      throw InputError(arg + ": header " + quoted(visible(table.header[0])) + "… has " + std::to_string(table.header.size()) +
+                       " fields: expected three, such as 'k a_k b_k'");
+    for (const auto& [line, tok] : table.rows) {
       const std::string where = arg + ":" + std::to_string(line);
       if (tok.size() != 3)
         throw InputError(where + ": expected three fields 'k a_k b_k', got " + std::to_string(tok.size()));
       if (!std::regex_match(tok[0], std::regex("[0-9]{1,6}")))
-        throw InputError(where + ": harmonic k = " + quoted(tok[0]) + ": expected an integer 0 ≤ k ≤ 999999");
+        throw InputError(where + ": harmonic k = " + quoted(visible(tok[0])) + ": expected an integer 0 ≤ k ≤ 999999");
       const auto k = static_cast<unsigned>(std::stoul(tok[0]));
       if (k > 100000) throw InputError(where + ": harmonic k = " + tok[0] + ": expected k ≤ 100000");
       if (!seen.insert(k).second) throw InputError(where + ": harmonic k = " + tok[0] + " given twice");
@@ -121,20 +223,83 @@ WaveSpec parse_wave(const std::string& text) {
       check_decimal(tok[2], where + " b_" + tok[0]);
       s.harmonics.push_back({k, tok[1], tok[2]});
     }
-    if (s.harmonics.empty()) throw InputError("file " + quoted(arg) + " has no coefficients: expected lines 'k a_k b_k'");
+    if (s.harmonics.empty()) throw InputError("file " + quoted(visible(arg)) + " has no coefficients: expected lines 'k a_k b_k'");
     return s;
   }
   if (colon != std::string::npos && head == "samples") {
     if (arg.empty()) throw InputError("wave " + quoted(text) + ": expected samples:FILE");
     s.kind = WaveKind::samples;
-    for (const auto& [line, tok] : read_tokens(arg, text)) {
-      for (const auto& t : tok) {
-        check_decimal(t, arg + ":" + std::to_string(line) + " sample");
-        s.samples.push_back(t);
+    const Table table = read_table(arg, text);
+    const auto& rows = table.rows;
+    // A header of names and nothing numeric after it, or a non-numeric field further down.
+    for (const auto& [line, tok] : rows)
+      for (const auto& t : tok) check_decimal(t, arg + ":" + std::to_string(line) + " sample");
+    std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
+    if (rows.size() == 1 && table.header.empty()) {
+      s.samples = rows[0].second;  // one line of values: one period
+    } else {
+      for (const auto& [line, tok] : rows)
+        if (tok.size() != columns)
+          throw InputError(arg + ":" + std::to_string(line) + ": " + std::to_string(tok.size()) + " fields, line " +
+                           std::to_string(rows[0].first) + " has " + std::to_string(columns) +
+                           ": expected the same number on every line");
+      if (!table.header.empty() && !rows.empty() && table.header.size() != columns)
+        throw InputError(arg + ": the header names " + std::to_string(table.header.size()) + " columns, the data have " +
+                         std::to_string(columns) + ": expected one name per column");
+      if (columns == 2) {
+        const bool t0 = !table.header.empty() && is_time_name(table.header[0]);
+        const bool t1 = !table.header.empty() && is_time_name(table.header[1]);
+        if (table.header.empty() || t0 == t1)
+          throw InputError(arg + ": two columns" +
+                           (table.header.empty() ? std::string(" and no header")
+                                                 : " named " + quoted(visible(table.header[0])) + ", " + quoted(visible(table.header[1]))) +
+                           ": expected one column of values, or a header naming one column 'time' (or 't'), e.g. 'time,value'");
+        const std::size_t tc = t0 ? 0 : 1;
+        for (const auto& [line, tok] : rows) {
+          s.times.push_back(tok[tc]);
+          s.samples.push_back(tok[1 - tc]);
+        }
+      } else if (columns > 2) {
+        throw InputError(arg + ": " + std::to_string(columns) +
+                         " columns: expected one column of values, or two named 'time' and 'value'");
+      } else {
+        for (const auto& [line, tok] : rows) s.samples.push_back(tok[0]);
       }
     }
-    if (s.samples.size() < 2)
-      throw InputError("file " + quoted(arg) + " has " + std::to_string(s.samples.size()) + " sample(s): expected at least 2");
+    if (s.samples.size() < 2 + (s.times.empty() ? 0 : 1))
+      throw InputError("file " + quoted(visible(arg)) + " has " + std::to_string(s.samples.size()) + " sample(s): expected at least " +
+                       (s.times.empty() ? "2" : "3 (one period and its end point)"));
+    if (!s.times.empty()) {
+      // One period with its end point: the time column sets the period, the last value repeats the first.
+      PrecisionScope scope(60);
+      for (std::size_t j = 1; j < s.times.size(); ++j)
+        if (!(exact_value(s.times[j]) > exact_value(s.times[j - 1])))
+          throw InputError(arg + ": time " + quoted(visible(s.times[j])) + " after " + quoted(visible(s.times[j - 1])) +
+                           ": expected strictly increasing time stamps");
+      const mpfr period = exact_value(s.times.back()) - exact_value(s.times.front());
+      for (std::size_t j = 1; j < s.times.size(); ++j)
+        if (exact_value(s.times[j]) - exact_value(s.times[j - 1]) < period * mpfr("1e-12"))
+          throw InputError(arg + ": time stamps " + quoted(visible(s.times[j - 1])) + " and " + quoted(visible(s.times[j])) +
+                           " are closer than 1e-12 of the period: expected distinct phases");
+      if (exact_value(s.samples.back()) != exact_value(s.samples.front()))
+        throw InputError(arg + ": the last value " + quoted(visible(s.samples.back())) + " differs from the first " +
+                         quoted(visible(s.samples.front())) +
+                         ": with a time column the file holds one period and its end point; append the line at time t0 + "
+                         "period with the first value");
+      s.samples.pop_back();  // the end point: its time stays, as the period's end
+    }
+    const std::size_t period = smallest_period(s.samples, s.times);
+    if (period == 1)
+      throw InputError("sampled waveform " + quoted(visible(text)) + " is constant: expected a signal with non-zero amplitude");
+    if (s.times.empty() && s.samples.size() >= 3 && exact_value(s.samples.back()) == exact_value(s.samples.front())) {
+      throw InputError(arg + ": the last sample " + quoted(visible(s.samples.back())) +
+                       " repeats the first: a one-column file holds one period without its end point (y_j at phi = j/N); "
+                       "remove the last value, or add a time column (then the end point is expected)");
+    }
+    if (period < s.samples.size())
+      throw InputError(arg + ": the samples repeat every " + std::to_string(period) + " of " + std::to_string(s.samples.size()) +
+                       ": the file holds " + std::to_string(s.samples.size() / period) +
+                       " identical periods; expected one period (the frequency f is that of one period)");
     return s;
   }
   throw InputError("unknown wave " + quoted(text) +

@@ -50,7 +50,7 @@ const char* const kUsage =
     "precision (mu, psi, sweep, physical):\n"
     "  --digits D   significant digits, 1 to 10000 (default 50), mpfr with guard digits\n"
     "  --type T     double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr\n"
-    "  --no-escalate=1  fixed types: print the value computed in the type even where its\n"
+    "  --no-escalate    fixed types: print the value computed in the type even where its\n"
     "               rounding bound exceeds the type's epsilon (default: recompute with mpfr)\n"
     "\n"
     "profiles P (mu, sweep; model.md MDR): flat (default: the flat punch), sphere, cone, power:N\n"
@@ -61,8 +61,11 @@ const char* const kUsage =
     "waves W: sine (harmonic), triangle (tri), sawtooth-right (str), sawtooth-left (stl),\n"
     "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
     "  fourier FILE: lines 'k a_k b_k' for w = sum a_k cos(2 pi k phi) + b_k sin(2 pi k phi)\n"
-    "  samples FILE: one period of values y_j at phi = j/N, whitespace separated, linear between\n"
-    "  ('#' starts a comment in both). User waves are normalised to zero mean and max - min = 2.\n"
+    "  samples FILE: one period of values y_j at phi = j/N (one column, or one line), linear\n"
+    "  between; or two columns under a header naming one 'time' ('time,value'), the last line\n"
+    "  repeating the first value one period later. Fields: whitespace, or ',' / ';' where a\n"
+    "  line has them; '#' starts a comment (README, \"File formats\"). User waves are\n"
+    "  normalised to zero mean and max - min = 2.\n"
     "\n"
     "solver controls (mu, psi, sweep):\n"
     "  --area auto|exact|quadrature  areas from antiderivatives (auto: where the wave has one) or\n"
@@ -98,6 +101,19 @@ struct Args {
   bool help = false;
 };
 
+// Flags that take no value (--no-escalate), or a validated one (--no-escalate=false).
+bool is_switch(const std::string& name) { return name == "no-escalate"; }
+
+// A switch's state: absent is off; present alone, or =1/true/yes, on; =0/false/no, off; else bad input.
+bool switch_on(const Args& a, const std::string& name) {
+  const auto it = a.flags.find(name);
+  if (it == a.flags.end()) return false;
+  const std::string& v = it->second;
+  if (v == "1" || v == "true" || v == "yes") return true;
+  if (v == "0" || v == "false" || v == "no") return false;
+  throw InputError("--" + name + " = '" + v + "': expected no value, or one of true, false, yes, no, 1, 0");
+}
+
 // --name value, --name=value; values may start with '-' (negative numbers).
 Args parse_args(int argc, char** argv, const std::map<std::string, std::set<std::string>>& allowed) {
   Args a;
@@ -126,6 +142,10 @@ Args parse_args(int argc, char** argv, const std::map<std::string, std::set<std:
       has_value = true;
     }
     if (!it->second.count(name)) throw InputError("unknown flag --" + name + " for '" + a.command + "'");
+    if (!has_value && is_switch(name)) {
+      value = "true";  // a switch takes no value; --name=VALUE is checked by switch_on
+      has_value = true;
+    }
     if (!has_value) {
       if (i + 1 >= argc) throw InputError("flag --" + name + " needs a value");
       value = argv[++i];
@@ -242,7 +262,7 @@ int run_mu_psi(const Args& a, Quantity q) {
     throw InputError("psi --profile " + a.flags.at("profile") +
                      ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
                      "so Eq. 13's separation does not exist (use mu)");
-  opt.escalate = !a.flags.count("no-escalate");
+  opt.escalate = !switch_on(a, "no-escalate");
   opt.solver = parse_solver_options(a);
   std::cout << evaluate(wave, q, {p}, parse_precision(a), opt).front() << '\n';
   return 0;
@@ -259,7 +279,7 @@ int run_sweep(const Args& a) {
     for (const auto& b : betas) points.push_back({b, g});
   BatchOptions opt;
   opt.profile = parse_profile_flag(a);
-  opt.escalate = !a.flags.count("no-escalate");
+  opt.escalate = !switch_on(a, "no-escalate");
   opt.solver = parse_solver_options(a);
   opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
   std::mutex m;
@@ -336,7 +356,7 @@ int run_physical(const Args& a) {
   // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  options.escalate = !a.flags.count("no-escalate");
+  options.escalate = !switch_on(a, "no-escalate");
   options.solver = parse_solver_options(a);
   const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;

@@ -204,7 +204,15 @@ TEST(BadInput, DecimalGrammar) {
       const std::string m = e.what();
       EXPECT_NE(m.find("the value"), std::string::npos) << m;
       if (!text.empty() && text.find('\0') == std::string::npos) {
-        EXPECT_NE(m.find(text), std::string::npos) << m;
+        // As typed, with every byte outside printable ASCII escaped ('1\xC2\xA0', '2\t').
+        std::string shown;
+        for (const char ch : text) {
+          const auto u = static_cast<unsigned char>(ch);
+          char b[8];
+          std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
+          shown += u >= 0x20 && u < 0x7F ? std::string(1, ch) : std::string(b);
+        }
+        EXPECT_NE(m.find(shown), std::string::npos) << m;
       }
     }
     EXPECT_THROW(parse_real<double>(text, "x"), InputError) << text;
@@ -262,7 +270,11 @@ std::vector<BadFile> bad_files() {
       {"samples", "1 nan\n", "NaN sample"},
       {"samples", "1 inf\n", "infinite sample"},
       {"samples", "1 2 1e400\n", "overflowing sample"},
-      {"samples", "1,2\n", "comma inside a token"},
+      {"samples", "1,,2\n", "empty field"},
+      {"samples", "0 0\n1 1\n2 -1\n", "two columns without a time header"},
+      {"samples", "0\n1\n0\n-1\n0\n", "the end point repeated"},
+      {"samples", "0 1 -1 0 1 -1\n", "two periods"},
+      {"samples", "t,y\n0,0\n1,1\n2,-1\n", "time column without its end point"},
       {"samples", "1 2 three\n", "word"},
       {"samples", "\xff\xfe\x00\x01", "binary"},
   };
@@ -289,16 +301,19 @@ TEST(BadInput, WaveformFiles) {
   EXPECT_THROW(parse_wave("fourier:/"), InputError);
 }
 
-// Accepted corners of the file grammar: CRLF line ends, tabs, commas after values, comments.
+// Accepted corners of the file grammar: CRLF line ends, tabs, commas (a trailing one too),
+// comments, a header.
 TEST(BadInput, FileGrammarCornersAreAccepted) {
   PrecisionScope digits(30);
-  const ScratchFile crlf("1 0 1\r\n2\t0.5\t0 # comment\r\n");
+  const ScratchFile crlf("k a b\r\n1 0 1\r\n2\t0.5\t0 # comment\r\n");
   const auto f = make_waveform<mpfr>(parse_wave("fourier:" + crlf.path()));
   EXPECT_LT(abs(f->maximum() - f->minimum() - 2), mpfr("1e-25"));
-  const ScratchFile commas("0, 1, 3,\n2, -1 # end\n");
+  const ScratchFile commas("0, 1, 3, 2, -1, # end\n");
   const auto s = make_waveform<mpfr>(parse_wave("samples:" + commas.path()));
   EXPECT_LT(abs(s->maximum() - s->minimum() - 2), mpfr("1e-25"));
   EXPECT_EQ(s->piece_count(), 5u);
+  const ScratchFile two("1,2\n");
+  EXPECT_EQ(parse_wave("samples:" + two.path()).samples.size(), 2u);
 }
 
 TEST(BadInput, DomainAndArguments) {
@@ -462,9 +477,11 @@ TEST(Regression, IllConditionedSamplesAreCorrectlyRounded) {
   const std::string want_long_double = format_significant(8.0L / 9.0L, std::numeric_limits<long double>::max_digits10);
   const std::string want_bin50 = format_significant(bin50(8) / 9, 50);
   const std::string want_mpfr = "0.88888888888888888888888888888888888888888888888889";
-  for (const char* contents : {"1000 1000.001 1000\n", "1 1.00000001 1\n", "1 1.00000000000000000001 1\n",
-                               "1 1.0000000000000000000000000000000000000001 1\n", "7e300 7.0000001e300 7e300\n",
-                               "3e-310 3.0000000000000000000001e-310 3e-310\n"}) {
+  // (Each signal starts at its odd sample: a last sample equal to the first is now refused as the
+  // period's end point, and a phase shift does not change mu.)
+  for (const char* contents : {"1000.001 1000 1000\n", "1.00000001 1 1\n", "1.00000000000000000001 1 1\n",
+                               "1.0000000000000000000000000000000000000001 1 1\n", "7.0000001e300 7e300 7e300\n",
+                               "3.0000000000000000000001e-310 3e-310 3e-310\n"}) {
     const ScratchFile f(contents);
     const WaveSpec spec = parse_wave("samples:" + f.path());
     EXPECT_EQ(evaluate(spec, Quantity::mu, {{"3", "2"}}, {NumberType::float64, 17}).front(), want_double) << contents;
@@ -479,7 +496,7 @@ TEST(Regression, IllConditionedSamplesAreCorrectlyRounded) {
   for (NumberType t : {NumberType::float64, NumberType::mpfr}) {
     const ScratchFile same("3 3.000 0.3e1 30e-1\n");
     EXPECT_THROW(evaluate(parse_wave("samples:" + same.path()), Quantity::mu, {{"3", "2"}}, {t, 17}), InputError);
-    const ScratchFile differs("3 3.000000000000000000000000000000000000001 3\n");
+    const ScratchFile differs("3.000000000000000000000000000000000000001 3 3\n");
     EXPECT_NO_THROW(evaluate(parse_wave("samples:" + differs.path()), Quantity::mu, {{"3", "2"}}, {t, 17}));
   }
 }

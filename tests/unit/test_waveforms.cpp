@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "vibrofric/catalogue.hpp"
+#include "vibrofric/envelope.hpp"
 #include "vibrofric/numbers.hpp"
 #include "vibrofric/solver.hpp"
 
@@ -114,7 +115,7 @@ TEST(Waveforms, NamesAndAliases) {
 
 TEST(Waveforms, SamplesAreNormalisedAndReported) {
   // Four samples of the triangle, scaled by 3 and offset by 5: the normalised wave is the triangle.
-  const std::string path = temp_file("tri_samples.txt", "# triangle\n2 5\n8\n5\n");
+  const std::string path = temp_file("tri_samples.txt", "# triangle\n2\n5\n8\n5\n");
   const auto w = make_waveform<double>(parse_wave("samples:" + path));
   EXPECT_TRUE(w->normalisation().applied);
   EXPECT_DOUBLE_EQ(w->normalisation().offset, 5.0);
@@ -140,6 +141,70 @@ TEST(Waveforms, FourierNormalisedWithFoundExtrema) {
   EXPECT_THROW(parse_wave("fourier:" + temp_file("two.txt", "1 0\n")), InputError);
   EXPECT_THROW(parse_wave("fourier:" + temp_file("dup.txt", "1 0 1\n1 1 0\n")), InputError);
   EXPECT_THROW(make_waveform<double>(parse_wave("fourier:" + temp_file("zero.txt", "1 0 0\n0 3 0\n"))), InputError);
+}
+
+// A time column with non-uniform stamps (README, "File formats"): the solver at 40 digits against
+// the exact rational lower envelope (envelope.hpp) of the same piecewise-linear signal, normalised
+// exactly with the trapezoid mean Σ y_j (φ_{j+1} − φ_{j−1})/2.
+TEST(Waveforms, TimeColumnMatchesTheExactEnvelope) {
+  using envelope::Rational;
+  const std::vector<Rational> phi{0, Rational(1, 10), Rational(1, 4), Rational(3, 10), Rational(11, 20), Rational(4, 5)};
+  const std::vector<Rational> y{0, Rational(9, 10), Rational(1, 5), 1, Rational(-2, 5), -1};
+  const std::string path = temp_file("time_column.csv",
+                                     "time [s], value\n0, 0\n0.1, 0.9\n0.25, 0.2\n0.3, 1\n0.55, -0.4\n0.8, -1\n1, 0\n");
+  const std::size_t n = phi.size();
+  Rational mean = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const Rational next = j + 1 < n ? phi[j + 1] : Rational(1), prev = j > 0 ? phi[j - 1] : Rational(phi[n - 1] - 1);
+    mean += y[j] * (next - prev) / 2;
+  }
+  envelope::Vertices v;
+  for (std::size_t j = 0; j < n; ++j) v.push_back({phi[j], y[j] - mean, y[j] - mean});  // scale (1 − (−1))/2 = 1
+  ASSERT_EQ(envelope::mean(v), 0) << "the trapezoid mean is the mean of the piecewise-linear signal";
+  const WaveSpec spec = parse_wave("samples:" + path);
+  ASSERT_EQ(spec.times.size(), n + 1);
+  PrecisionScope scope(50);
+  const auto w = make_waveform<mpfr>(spec);
+  for (const Rational& beta : {Rational(1, 10), Rational(1), Rational(5)})
+    for (const Rational& gamma : {Rational(3), Rational(1, 2), Rational(-1, 5), Rational(-7, 10)}) {
+      if (!(gamma + envelope::range(v).second > 0)) continue;
+      const Rational exact = envelope::mu(v, beta, gamma).mu;
+      const mpfr b(static_cast<mpfr>(numerator(beta)) / static_cast<mpfr>(denominator(beta)));
+      const mpfr g(static_cast<mpfr>(numerator(gamma)) / static_cast<mpfr>(denominator(gamma)));
+      const mpfr got = solve(*w, b, g).mu;
+      const mpfr want = static_cast<mpfr>(numerator(exact)) / static_cast<mpfr>(denominator(exact));
+      EXPECT_LE(static_cast<double>(abs(got - want) / want), 1e-38) << "beta " << beta << ", gamma " << gamma;
+    }
+}
+
+// The grammar's refusals name what to do (README, "File formats"); the same table in every layout
+// reads the same samples.
+TEST(Waveforms, SampleFileGrammar) {
+  const std::vector<std::string> y{"0", "0.9", "0.2", "1", "-0.4", "-1", "-0.3"};
+  std::string column, line;
+  for (const auto& v : y) {
+    column += v + "\r\n";
+    line += (line.empty() ? "" : " ; ") + v;
+  }
+  EXPECT_EQ(parse_wave("samples:" + temp_file("g_column.txt", "\xEF\xBB\xBF" + column)).samples, y);
+  EXPECT_EQ(parse_wave("samples:" + temp_file("g_line.txt", line + "\n")).samples, y);
+  const auto refused = [](const std::string& name, const std::string& text, const std::string& word) {
+    try {
+      parse_wave("samples:" + temp_file(name, text));
+      ADD_FAILURE() << name << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << name << ": " << e.what();
+    }
+  };
+  refused("g_two.txt", "0 0\n1 1\n2 0\n3 -1\n", "two columns");
+  refused("g_end.txt", "0\n1\n0\n-1\n0\n", "repeats the first");
+  refused("g_periods.txt", "0 1 -1 0 1 -1\n", "2 identical periods");
+  refused("g_time_periods.csv", "t,y\n0,0\n1,1\n2,-1\n3,0\n4,1\n5,-1\n6,0\n", "2 identical periods");
+  refused("g_time_end.csv", "t,y\n0,0\n1,1\n2,-1\n", "end point");
+  refused("g_ragged.txt", "0\n1\n2 3\n", "same number");
+  refused("g_nul.txt", std::string("0\n1\0\n-1\n", 7), "NUL");
+  // Values repeating at a non-uniform time shift are not several periods.
+  EXPECT_NO_THROW(parse_wave("samples:" + temp_file("g_time_ok.csv", "t,y\n0,0\n1,1\n2,-1\n3,0\n5,1\n6,-1\n7,0\n")));
 }
 
 TEST(Numbers, StrictDecimalGrammar) {

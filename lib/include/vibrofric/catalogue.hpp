@@ -26,7 +26,8 @@ struct WaveSpec {
     std::string a, b;
   };
   std::vector<Harmonic> harmonics;  // fourier: w = Σ a_k cos 2πkφ + b_k sin 2πkφ
-  std::vector<std::string> samples;  // samples: y_j at φ = j/N
+  std::vector<std::string> samples;  // samples: y_j at φ = j/N, or at the times below
+  std::vector<std::string> times;    // samples with a time column: t_0 … t_N (t_N − t_0 = the period), else empty
 };
 
 // Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,
@@ -85,8 +86,16 @@ std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
         }
         distinct = std::max(distinct, d);
       }
-      return make_samples_from<Real>(spec.name, spec.samples.size(),
-                                     [&](std::size_t j) { return mpfr(spec.samples[j]); }, distinct);
+      if (spec.times.empty())
+        return make_samples_from<Real>(spec.name, spec.samples.size(),
+                                       [&](std::size_t j) { return mpfr(spec.samples[j]); }, distinct);
+      // A time column: φ_j = (t_j − t_0)/(t_N − t_0), at the current mpfr precision.
+      return make_samples_from<Real>(
+          spec.name, spec.samples.size(), [&](std::size_t j) { return mpfr(spec.samples[j]); }, distinct,
+          [&](std::size_t j) {
+            const mpfr t0(spec.times.front());
+            return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
+          });
     }
   }
   throw InputError("unknown wave kind");

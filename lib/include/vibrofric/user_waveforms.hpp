@@ -1,6 +1,7 @@
 // User waveforms for Eq. (2): a finite Fourier series and a sampled periodic signal (piecewise
 // linear through the samples), both normalised to zero mean and unit amplitude (model.md).
 #pragma once
+#include <functional>
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -246,8 +247,12 @@ class FourierSeries final : public Waveform<Real> {
 // and each w_j is rounded to Real once. `sample(j)` returns y_j at the current mpfr precision,
 // correctly rounded; `distinct_digits` bounds the significant digits of any y_j, so that two
 // samples that differ still differ at that precision (else the signal is constant).
+//
+// With `phase` (a time column), y_j sits at φ_j = phase(j) (φ_0 = 0 < φ_1 < … < φ_{N−1} < 1, the
+// period ending at 1) and the mean is the trapezoid rule's, Σ y_j (φ_{j+1} − φ_{j−1})/2.
 template <class Real, class Sample>
-std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t n, Sample sample, int distinct_digits) {
+std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t n, Sample sample, int distinct_digits,
+                                                 std::function<mpfr(std::size_t)> phase = {}) {
   if (n < 2)
     throw InputError("sampled waveform " + name + " has " + std::to_string(n) + " sample(s): expected at least 2");
   using std::abs;
@@ -279,7 +284,15 @@ std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t 
       p = wanted + log_n + cancelled + 2;
       continue;
     }
-    const mpfr mean = sum / n, scale = (hi - lo) / 2;
+    mpfr mean = sum / n;
+    if (phase) {
+      mean = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        const mpfr next = j + 1 < n ? phase(j + 1) : mpfr(1), prev = j > 0 ? phase(j - 1) : mpfr(phase(n - 1) - 1);
+        mean += sample(j) * (next - prev) / 2;
+      }
+    }
+    const mpfr scale = (hi - lo) / 2;
     w.reserve(n);
     for (std::size_t j = 0; j < n; ++j) w.push_back(detail::rounded<Real>(mpfr((sample(j) - mean) / scale), working));
     norm = {true, detail::rounded<Real>(mean, working), detail::rounded<Real>(scale, working)};
@@ -287,7 +300,16 @@ std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t 
   using P = typename PiecewiseLinear<Real>::Piece;
   std::vector<P> pieces;
   pieces.reserve(n);
-  for (std::size_t j = 0; j < n; ++j) pieces.push_back({Real(j) / n, w[j], Real((w[(j + 1) % n] - w[j]) * n)});
+  if (phase) {
+    PrecisionScope scope(static_cast<unsigned>(working_digits10<Real>() + 10));
+    for (std::size_t j = 0; j < n; ++j) {
+      const mpfr a = phase(j), b = j + 1 < n ? phase(j + 1) : mpfr(1);
+      pieces.push_back({detail::rounded<Real>(a, working), w[j],
+                        detail::rounded<Real>(mpfr((mpfr(w[(j + 1) % n]) - mpfr(w[j])) / (b - a)), working)});
+    }
+  } else {
+    for (std::size_t j = 0; j < n; ++j) pieces.push_back({Real(j) / n, w[j], Real((w[(j + 1) % n] - w[j]) * n)});
+  }
   struct Sampled final : PiecewiseLinear<Real> {
     Sampled(std::string nm, std::vector<P> p, Normalisation<Real> nz) : PiecewiseLinear<Real>(std::move(nm), std::move(p)) {
       this->norm_ = nz;
