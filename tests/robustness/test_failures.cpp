@@ -379,6 +379,47 @@ TEST(BadInput, LongDecimalIsNotAStackOverflow) {
 // detail::integrator() throws InputError for fewer than 4 levels ("bad input", as the tool's
 // --max-levels check says), but Sweep::quad catches every std::exception around it and rethrows
 // SolverError: a library caller (evaluate() with BatchOptions) gets a solver failure, exit 1.
+// Contact is decided once from the decimal γ and the waveform at 60 digits or more, so every number
+// type makes the same decision. A sampled sine written with 17 digits has a mean of order 1e-18, so
+// at γ = −1 it touches or not by that digit; double rounded max w to 1 and said "no contact" where
+// the wider types computed a value. Now double escalates to a type that resolves the contact, and
+// without escalation it is a PrecisionError, not a different answer. Likewise γ within 1e-20 of −1
+// for the sine (double rounds that γ to −1).
+TEST(Regression, ContactIsDecidedAlikeInEveryType) {
+  std::string text;
+  for (int j = 0; j < 50; ++j) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g\n", std::sin(2 * 3.14159265358979323846 * j / 50));
+    text += b;
+  }
+  const ScratchFile f(text);
+  for (const auto& [wave, gamma] : {std::pair<std::string, std::string>{"samples:" + f.path(), "-1"},
+                                    {"sine", "-0.99999999999999999999"}, {"sine", "-1"}}) {
+    const WaveSpec spec = parse_wave(wave);
+    std::vector<std::string> outcomes;
+    for (const Precision p : {Precision{NumberType::float64, 17}, Precision{NumberType::float80, 21},
+                              Precision{NumberType::bin50, 50}, Precision{NumberType::mpfr, 20},
+                              Precision{NumberType::mpfr, 60}}) {
+      try {
+        const std::string v = evaluate(spec, Quantity::mu, {{"1", gamma}}, p).front();
+        PrecisionScope scope(80);
+        outcomes.push_back(format_significant(mpfr(v), 15));
+      } catch (const DomainError&) {
+        outcomes.push_back("no contact");
+      }
+    }
+    for (const auto& o : outcomes) EXPECT_EQ(o, outcomes.back()) << wave << " at gamma = " << gamma;
+    if (wave == "sine") {
+      EXPECT_EQ(outcomes.back() == "no contact", gamma == "-1") << gamma;
+    }
+    BatchOptions raw;
+    raw.escalate = false;
+    if (outcomes.back() != "no contact" && wave != "sine") {
+      EXPECT_THROW(evaluate(spec, Quantity::mu, {{"1", gamma}}, {NumberType::float64, 17}, raw), PrecisionError);
+    }
+  }
+}
+
 TEST(Regression, FewerThanFourQuadratureLevelsIsAnInputError) {
   const Sine<double> sine;
   Options o;

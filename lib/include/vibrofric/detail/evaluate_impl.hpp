@@ -50,7 +50,13 @@ class WaveCache {
       const Waveform<Real>& w = get();
       const Real gamma = gamma_text.empty() ? Real(-w.minimum()) : parse_real<Real>(gamma_text, "gamma");
       contact_.reset();
-      contact_ = std::make_unique<Contact<Real>>(make_contact(w, gamma, opt));
+      try {
+        contact_ = std::make_unique<Contact<Real>>(make_contact(w, gamma, opt));
+      } catch (const DomainError&) {
+        // check_contact (below) found a contact from the decimal γ and the exact waveform: this
+        // type's rounding of γ or of max w removed it, so a wider type must compute it.
+        throw PrecisionError("gamma = " + gamma_text + " leaves a contact narrower than the rounding of this number type");
+      }
       digits_ = d;
       text_ = gamma_text;
     }
@@ -175,9 +181,68 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
                             digits);
 }
 
+// Whether contact exists, γ + max w > 0 (model.md, "Domain and edge behaviour"), decided once from
+// the decimal γ as written and the waveform at 60 digits or more, so that every number type gives
+// the same decision (a sampled sine at γ = −1 has a contact or not by the 17th digit of its mean,
+// which double rounds away). γ that is not a decimal is left to the typed path's message.
+// max w at the current mpfr precision: 1 for the catalogue; for samples (hi − mean)/scale from the
+// decimals, streamed (a 10-million-sample file is not built at 60 digits), at the digits the
+// offset cancels on top; for Fourier the waveform's own maximum.
+inline mpfr exact_maximum(const WaveSpec& spec) {
+  if (spec.kind == WaveKind::fourier) return make_waveform<mpfr>(spec)->maximum();
+  if (spec.kind != WaveKind::samples) return mpfr(1);
+  const std::size_t n = spec.samples.size();
+  for (int extra = 0;; extra += 40) {
+    PrecisionScope scope(static_cast<unsigned>(working_digits10<mpfr>() + extra));
+    const auto phase = [&](std::size_t j) {
+      if (j == n) return mpfr(1);
+      const mpfr t0(spec.times.front());
+      return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
+    };
+    mpfr sum = 0, lo(spec.samples[0]), hi = lo;
+    for (std::size_t j = 0; j < n; ++j) {
+      const mpfr v(spec.samples[j]);
+      sum += spec.times.empty() ? v : mpfr(v * (phase(j + 1) - (j ? phase(j - 1) : mpfr(phase(n - 1) - 1))) / 2);
+      lo = v < lo ? v : lo;
+      hi = v > hi ? v : hi;
+    }
+    if (!(hi > lo)) return mpfr(1);  // constant: the typed path names it
+    const mpfr mean = spec.times.empty() ? mpfr(sum / n) : sum;
+    const mpfr big = abs(lo) > abs(hi) ? mpfr(abs(lo)) : mpfr(abs(hi));
+    if (extra >= 400 || log10(2 * big / (hi - lo)) < extra + 20) return mpfr((hi - mean) / ((hi - lo) / 2));
+  }
+}
+
+inline void check_contact(const WaveSpec& spec, Quantity q, const std::vector<Point>& points) {
+  if (q == Quantity::psi) return;
+  std::optional<mpfr> top;
+  int top_digits = -1;
+  std::string last;
+  for (const Point& p : points) {
+    if (p.gamma == last) continue;
+    last = p.gamma;
+    try {
+      check_decimal(p.gamma, "gamma");
+    } catch (const InputError&) {
+      continue;
+    }
+    const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.size() + 10));
+    PrecisionScope scope(digits);
+    if (top_digits != working_digits10<mpfr>()) {
+      top = exact_maximum(spec);
+      top_digits = working_digits10<mpfr>();
+    }
+    const mpfr gamma(p.gamma);
+    if (!(gamma + *top > 0))
+      throw DomainError("gamma = " + p.gamma + " gives no contact for wave " + spec.name + ": expected gamma > " +
+                        detail::short_str(mpfr(-*top)));
+  }
+}
+
 template <class Real>
 std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const std::vector<Point>& points,
                                         int digits, const BatchOptions& options) {
+  check_contact(spec, q, points);
   std::vector<std::string> out(points.size());
   std::vector<std::exception_ptr> errors(points.size());
   std::atomic<std::size_t> next{0}, done{0};
