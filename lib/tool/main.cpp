@@ -44,7 +44,8 @@ const char* const kUsage =
     "            default 50; the same verdicts over the range); --claim KEY for one (e.g. eq24);\n"
     "            --format json for the report generator\n"
     "  trace     CSV phi,n,s over one period (Fig. 2): --wave W --beta B --gamma G [--points N]\n"
-    "            (default 1000, plus the ends of every stick phase; --digits D, default 17)\n"
+    "            (default 1000, plus the ends of every stick phase and the contact boundaries,\n"
+    "            where n = 0 exactly; --digits D, default 17)\n"
     "  version   versions of vibrofric, the compiler, Boost, MPFR and GMP\n"
     "\n"
     "precision (mu, psi, sweep, physical):\n"
@@ -405,8 +406,16 @@ int run_trace(const Args& a) {
   PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
   const auto w = make_waveform<mpfr>(wave);
   const mpfr beta = parse_real<mpfr>(beta_text, "--beta"), gamma = parse_real<mpfr>(gamma_text, "--gamma");
-  const auto r = solve(*w, beta, gamma);
-  std::vector<mpfr> phis;
+  const Contact<mpfr> contact = make_contact(*w, gamma);
+  const auto r = solve(contact, beta);
+  // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32).
+  std::vector<mpfr> edges;
+  for (const auto& g : contact.segments())
+    if (g.contact) {
+      if (g.nu == 0) edges.push_back(g.u);
+      if (g.nv == 0) edges.push_back(g.v);
+    }
+  std::vector<mpfr> phis(edges);
   for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
   for (const auto& st : r.stick_phases)
     for (const mpfr& x : {st.begin, st.end}) phis.push_back(x - floor(x));
@@ -414,9 +423,11 @@ int run_trace(const Args& a) {
   phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
   std::cout << "phi,n,s\n";
   for (const mpfr& phi : phis) {
-    const mpfr v = gamma + (*w)(phi - floor(phi));
+    const bool edge = std::find(edges.begin(), edges.end(), phi) != edges.end();
+    const mpfr v = edge ? mpfr(0) : mpfr(gamma + (*w)(phi - floor(phi)));
+    const mpfr s = edge ? mpfr(0) : tangential_force(*w, r, beta, gamma, phi == 1 ? mpfr(0) : phi);
     std::cout << format_significant(phi, digits) << ',' << format_significant(v > 0 ? v : mpfr(0), digits) << ','
-              << format_significant(tangential_force(*w, r, beta, gamma, phi == 1 ? mpfr(0) : phi), digits) << '\n';
+              << format_significant(s, digits) << '\n';
   }
   return 0;
 }

@@ -373,7 +373,7 @@ def bad_input_tests():
     for name, change, vals, words in [
         ("negative radius", ("--radius", "-0.001"), ["-0.001"], ["radius"]),
         ("zero radius", ("--radius", "0"), ["0"], ["radius"]),
-        ("nu1 = 0.5", ("--nu1", "0.5"), ["0.5"], ["nu1"]),
+        ("nu1 = 0.50001", ("--nu1", "0.50001"), ["0.50001"], ["nu1"]),
         ("nu2 = -1", ("--nu2", "-1"), ["-1"], ["nu2"]),
         ("E1 = 0", ("--E1", "0"), ["0"], ["E1"]),
         ("E2 = nan", ("--E2", "nan"), ["nan"], ["E2"]),
@@ -598,6 +598,18 @@ def format_tests():
             raise Fail("vibrofric verify --digits 300 --format json: deviation %r, corrected %r" % (
                 c["deviation"], c["corrected_deviation"]))
     test("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
+
+    def trace_first_contact():
+        # The contact boundaries are rows of the trace, with n = 0 exactly (not the rounding of
+        # gamma + w there, ~1e-32 before): sine at gamma = -0.3 touches at asin(0.3)/(2 pi).
+        out = ok_run(["trace", "--wave", "sine", "--beta", "1", "--gamma=-0.3", "--points", "4", "--digits", "20"])
+        rows = [line.split(",") for line in out.strip().splitlines()[1:]]
+        edge = [r for r in rows if r[0].startswith("0.0484933420103391")]
+        if len(edge) != 1 or edge[0][1:] != ["0", "0"]:
+            raise Fail("trace at first contact: %r" % edge)
+        if any(r[1] != "0" and decimal.Decimal(r[1]) < decimal.Decimal("1e-15") for r in rows):
+            raise Fail("trace prints a rounding residue as n: %r" % rows)
+    test("trace: n = 0 exactly at the contact boundaries, which are rows", trace_first_contact)
 
     def no_escalate():
         # A switch: alone it is on and takes no value; =0/false/no leave escalation on (the same digits
@@ -957,6 +969,14 @@ def physical_tests():
         exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(alu["A"]) * (1 + exact["gamma"]) ** 2 / 4
         check_groups(a, got, exact, 40)
     test("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
+
+    # 2b. rubber (nu = 0.5, incompressible) on steel: Eq. 1 as for any nu
+    def rubber_fn():
+        a = physical_args(**{"--E1": "5e6", "--nu1": "0.5", "--digits": "40"})
+        got = parse(ok_run(a))
+        exact, _ = groups(**dict(steel, E1="5e6", nu1="0.5"))
+        check_groups(a, got, {k: exact[k] for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma")}, 40)
+    test("physical rubber (nu = 0.5) on steel: E*, G*, beta, gamma", rubber_fn)
 
     # 3. non-jumping (gamma 2) and above beta_c: mu = mu0 exactly
     def fast_fn():

@@ -34,16 +34,16 @@ struct PhysicalGroups {
   Real gamma;           // ū_z / A (Eq. 14)
 };
 
-// Preconditions: moduli, radius, v0, f, A, μ0 > 0; −1 < ν < 1/2. Throws InputError naming the
-// offending quantity otherwise.
+// Preconditions: moduli, radius, v0, f, A, μ0 > 0; −1 < ν ≤ 1/2 (1/2: incompressible, rubber).
+// Throws InputError naming the offending quantity otherwise.
 template <class Real>
 PhysicalGroups<Real> physical_groups(const PhysicalInput<Real>& in) {
   auto positive = [](const Real& x, const char* what) {
     if (!(x > 0)) throw InputError(std::string(what) + " = " + detail::short_str(x) + ": expected a value > 0");
   };
   auto poisson = [](const Real& x, const char* what) {
-    if (!(x > -1 && x < Real(1) / 2))
-      throw InputError(std::string(what) + " = " + detail::short_str(x) + ": expected -1 < nu < 0.5");
+    if (!(x > -1 && x <= Real(1) / 2))
+      throw InputError(std::string(what) + " = " + detail::short_str(x) + ": expected -1 < nu <= 0.5");
   };
   positive(in.E1, "E1");
   positive(in.E2, "E2");
