@@ -2,6 +2,7 @@
 // (Eqs. 1, 5, 14) and the claims check. Bad input: one line on stderr, exit 2; solver failure: 1.
 #include <unistd.h>
 
+#include <boost/math/tools/roots.hpp>
 #include <boost/version.hpp>
 #include <nlohmann/json.hpp>
 
@@ -80,12 +81,14 @@ const char* const kUsage =
 
 const char* const kPhysicalUsage =
     "usage: vibrofric physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA]\n"
-    "                          --v0 M/S --f HZ --A M --u-mean M --mu0 MU [--shape S GEOMETRY]\n"
-    "                          [--digits D | --type T]\n"
+    "                          --v0 M/S --f HZ --A M (--u-mean M | --F-N N) --mu0 MU\n"
+    "                          [--shape S GEOMETRY] [--digits D | --type T]\n"
     "\n"
     "1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) (Eq. 1);\n"
-    "G defaults to E/(2(1 + nu)). beta = G* v0/(mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14);\n"
-    "A is the zero-to-peak amplitude, u_mean the mean indentation of the indenter's tip.\n"
+    "G defaults to E/(2(1 + nu)), -1 < nu <= 0.5. beta = G* v0/(mu0 E* A f) (Eq. 5), gamma = u_mean/A\n"
+    "(Eq. 14); A is the zero-to-peak amplitude, u_mean the mean indentation of the indenter's tip.\n"
+    "--F-N N sets the mean normal load instead of u_mean: gamma is solved from <F_N>(gamma) = N\n"
+    "(<F_N> rises strictly with gamma) and u_mean_m is printed after gamma.\n"
     "shapes S and their GEOMETRY (metres, degrees):\n"
     "  flat (default) --radius a          flat-ended cylinder: k_z = 2 E* a, k_x = 2 G* a (Eq. 1)\n"
     "  sphere --R R                       MDR (model.md), sigma = x^2/(R A)\n"
@@ -328,11 +331,16 @@ int run_physical(const Args& a) {
     if (a.flags.count(g) && !geometry.at(kind).count(g))
       throw InputError(std::string("--") + g + " does not apply to --shape " + shape);
   const mpfr A = positive("A");
+  // The mean indentation, or the mean normal load an experimenter sets (then γ solves ⟨F_N⟩(γ) = F_N).
+  const bool by_load = a.flags.count("F-N") > 0;
+  if (by_load && a.flags.count("u-mean")) throw InputError("--u-mean and --F-N both given: expected one of them");
+  if (!by_load && !a.flags.count("u-mean")) throw InputError("missing --u-mean (mean indentation) or --F-N (mean normal load) for 'physical'");
   PhysicalInput<mpfr> in{get("E1"), get("nu1"), get("E2"), get("nu2"), opt("G1"), opt("G2"),
-                         kind == "flat" ? positive("radius") : mpfr(0), get("v0"), get("f"), A, get("u-mean"), get("mu0")};
+                         kind == "flat" ? positive("radius") : mpfr(0), get("v0"), get("f"), A,
+                         by_load ? mpfr(0) : get("u-mean"), get("mu0")};
   if (a.flags.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + a.flags.at("G1") + ": expected a value > 0");
   if (a.flags.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + a.flags.at("G2") + ": expected a value > 0");
-  const auto g = physical_groups(in);
+  auto g = physical_groups(in);
   BatchOptions options;
   mpfr length = 1;
   std::string lambda;
@@ -353,27 +361,49 @@ int run_physical(const Args& a) {
     options.profile = parse_profile(shape);
     options.profile.height_unit = a.flags.at("A");  // heights in metres, the library's in units of A
   }
+  options.escalate = !switch_on(a, "no-escalate");
+  options.solver = parse_solver_options(a);
+  // ⟨F_N⟩(γ) = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope: N does
+  // not depend on β. Also the largest contact radius (curved) in units of L.
+  const auto w = make_waveform<mpfr>(wave);
+  const auto p = kind == "flat" ? nullptr : make_profile<mpfr>(options.profile);
+  auto load = [&](const mpfr& gam, mpfr* edge_out) {
+    if (!(gam + w->maximum() > 0)) return mpfr(0);  // no contact, no load
+    mpfr normal;
+    if (kind == "flat") {
+      normal = solve(*w, g.beta, gam, options.solver).normal_area;
+    } else {
+      const auto r = solve_curved(*w, *p, g.beta, gam, options.solver, mpfr(pow(mpfr(10), -digits - 5)));
+      normal = r.normal_integral;
+      if (edge_out) *edge_out = r.contact_radius;
+    }
+    return kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
+  };
+  if (by_load) {
+    const mpfr F_N = positive("F-N");
+    // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
+    mpfr lo = -w->maximum(), hi = lo + 1;
+    for (int k = 0; load(hi, nullptr) < F_N; ++k) {
+      if (k == 200) throw InputError("--F-N = " + a.flags.at("F-N") + ": expected a load the contact can carry");
+      lo = hi;
+      hi = lo + pow(mpfr(2), k + 1);
+    }
+    std::uintmax_t iterations = 400;
+    const auto bracket = boost::math::tools::toms748_solve(
+        [&](const mpfr& gam) { return mpfr(load(gam, nullptr) - F_N); }, lo, hi,
+        boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
+    if (iterations >= 400) throw SolverError("--F-N = " + a.flags.at("F-N") + ": the mean indentation did not converge");
+    g.gamma = (bracket.first + bracket.second) / 2;
+  }
   const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
   // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  options.escalate = !switch_on(a, "no-escalate");
-  options.solver = parse_solver_options(a);
   const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
   const mpfr mu = mpfr(ratio_fine) * in.mu0;
-  // ⟨F_N⟩ = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope.
-  const auto w = make_waveform<mpfr>(wave);
-  mpfr normal, edge;
-  if (kind == "flat") {
-    normal = solve(*w, mpfr(beta), mpfr(gamma), options.solver).normal_area;
-  } else {
-    const auto p = make_profile<mpfr>(options.profile);
-    const auto r = solve_curved(*w, *p, mpfr(beta), mpfr(gamma), options.solver, mpfr(pow(mpfr(10), -digits - 5)));
-    normal = r.normal_integral;
-    edge = r.contact_radius;
-  }
-  const mpfr force = kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
+  mpfr edge;
+  const mpfr force = load(mpfr(gamma), &edge);
   auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
   std::cout << "shape = " << (kind == "profile" ? shape : kind) << '\n';
   line("E_star_Pa", g.E_star);
@@ -387,6 +417,7 @@ int run_physical(const Args& a) {
   if (!lambda.empty()) line("lambda", mpfr(lambda));
   line("beta", g.beta);
   line("gamma", g.gamma);
+  if (by_load) line("u_mean_m", mpfr(g.gamma * A));
   std::cout << "mu_over_mu0 = " << mu_ratio << '\n';
   line("mu", mu);
   line("F_N_mean_N", force);
@@ -530,7 +561,7 @@ int main(int argc, char** argv) {
       {"mu", with({"wave", "beta", "gamma", "profile"})},
       {"psi", with({"wave", "beta", "profile"})},
       {"sweep", with({"wave", "beta", "gamma", "threads", "profile"})},
-      {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "mu0", "shape",
+      {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "F-N", "mu0", "shape",
                          "R", "flat-radius", "half-angle"})},
       {"verify", {"digits", "claim", "format"}},
       {"trace", {"wave", "beta", "gamma", "points", "digits"}},

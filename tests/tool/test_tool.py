@@ -283,6 +283,11 @@ def bad_input_tests():
     for v in ("banana", ""):
         bad("no-escalate=%s" % v, ["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--type", "double",
                                    "--no-escalate=" + v], [], ["no-escalate", "'%s'" % v])
+    for name, change, words in (("both --u-mean and --F-N", ["--F-N", "10"], ["--F-N", "--u-mean"]),
+                                ("negative --F-N", None, ["F-N", "-5"])):
+        args = physical_args() + change if change else replace_flag(physical_args(), "--u-mean", "--F-N", "-5")
+        bad("physical " + name, args, [], words)
+    bad("physical without --u-mean or --F-N", physical_args(**{"--u-mean": None}), [], ["--u-mean", "--F-N"])
     bad("verify digits=5", ["verify", "--digits", "5"], ["5"], ["digits"])
     bad("verify digits=301 (above the documented 10 to 300)", ["verify", "--digits", "301"], ["301"], ["digits"])
     bad("verify unknown flag --wave", ["verify", "--wave", "sine"], ["--wave"])
@@ -394,6 +399,19 @@ def bad_input_tests():
 STEEL = [("--wave", "sine"), ("--E1", "210e9"), ("--nu1", "0.3"), ("--E2", "210e9"),
          ("--nu2", "0.3"), ("--radius", "0.001"), ("--v0", "0.0001"), ("--f", "100"),
          ("--A", "0.000001"), ("--u-mean", "0.0000005"), ("--mu0", "0.5")]
+
+
+def replace_flag(args, old, new, value):
+    """args with `old VALUE` replaced by `new value`."""
+    i = args.index(old)
+    return args[:i] + [new, value] + args[i + 2:]
+
+
+def dec_sqrt(x):
+    """sqrt of a Fraction to 60 digits, as a Fraction."""
+    with decimal.localcontext() as c:
+        c.prec = 60
+        return Fraction((decimal.Decimal(x.numerator) / decimal.Decimal(x.denominator)).sqrt())
 
 
 def physical_args(base=STEEL, **change):
@@ -977,6 +995,29 @@ def physical_tests():
         exact, _ = groups(**dict(steel, E1="5e6", nu1="0.5"))
         check_groups(a, got, {k: exact[k] for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma")}, 40)
     test("physical rubber (nu = 0.5) on steel: E*, G*, beta, gamma", rubber_fn)
+
+    # 2c. the mean normal load instead of the indentation (--F-N): the triangle's N(gamma) = (1 + gamma)^2/4
+    # in the jumping range gives gamma = 2 sqrt(F_N/(k_z A)) - 1 in closed form; the sine and the sphere
+    # return the u_mean whose <F_N> was asked for.
+    def load_fn():
+        def close(s, exact, digits, what):
+            if abs(F(s) - exact) > abs(exact) * Fraction(10) ** -digits:
+                raise Fail("%s: got %s, expected %s (to %d digits)" % (what, s, dec(exact, digits + 5), digits))
+        exact, _ = groups(**steel)
+        kzA = exact["k_z_N_per_m"] * F(steel["A"])
+        a = physical_args(**{"--wave": "triangle", "--u-mean": None, "--F-N": "30", "--digits": "40"})
+        got = parse(ok_run(a))
+        gamma = 2 * dec_sqrt(Fraction(30) / kzA) - 1
+        close(got["gamma"], gamma, 38, "%s: gamma" % cmd(a))
+        close(got["u_mean_m"], gamma * F(steel["A"]), 38, "%s: u_mean_m" % cmd(a))
+        close(got["F_N_mean_N"], Fraction(30), 38, "%s: F_N_mean_N" % cmd(a))
+        for shape in ([], ["--shape", "sphere", "--R", "0.01"]):
+            base = physical_args(**{"--digits": "30", "--radius": None if shape else "0.001"}) + shape
+            ref = parse(ok_run(base))
+            again = parse(ok_run(replace_flag(base, "--u-mean", "--F-N", ref["F_N_mean_N"])))
+            close(again["gamma"], F(ref["gamma"]), 26, "round trip %s: gamma" % shape)
+            close(again["mu_over_mu0"], F(ref["mu_over_mu0"]), 26, "round trip %s: mu" % shape)
+    test("physical --F-N: gamma from the mean normal load (triangle closed form; sine and sphere round trip)", load_fn)
 
     # 3. non-jumping (gamma 2) and above beta_c: mu = mu0 exactly
     def fast_fn():
