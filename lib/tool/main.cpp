@@ -89,6 +89,8 @@ const char* const kPhysicalUsage =
     "(Eq. 14); A is the zero-to-peak amplitude, u_mean the mean indentation of the indenter's tip.\n"
     "--F-N N sets the mean normal load instead of u_mean: gamma is solved from <F_N>(gamma) = N\n"
     "(<F_N> rises strictly with gamma) and u_mean_m is printed after gamma.\n"
+    "Also printed: beta_c (Eq. 6, of the clipped n; curved: the central spring's) and, for the\n"
+    "flat punch, the fractions of the period in contact and in stick.\n"
     "shapes S and their GEOMETRY (metres, degrees):\n"
     "  flat (default) --radius a          flat-ended cylinder: k_z = 2 E* a, k_x = 2 G* a (Eq. 1)\n"
     "  sphere --R R                       MDR (model.md), sigma = x^2/(R A)\n"
@@ -404,6 +406,19 @@ int run_physical(const Args& a) {
   const mpfr mu = mpfr(ratio_fine) * in.mu0;
   mpfr edge;
   const mpfr force = load(mpfr(gamma), &edge);
+  // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,
+  // the fractions of the period in contact and in stick.
+  mpfr beta_c, contact_fraction, stick_fraction;
+  if (kind == "flat") {
+    const Contact<mpfr> c = make_contact(*w, mpfr(gamma), options.solver);
+    const auto r = solve(c, mpfr(beta), options.solver);
+    beta_c = r.beta_c;
+    for (const auto& seg : c.segments())
+      if (seg.contact) contact_fraction += seg.v - seg.u;
+    for (const auto& st : r.stick_phases) stick_fraction += st.end - st.begin;
+  } else {
+    beta_c = make_contact(*w, mpfr(gamma), options.solver).beta_c();
+  }
   auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
   std::cout << "shape = " << (kind == "profile" ? shape : kind) << '\n';
   line("E_star_Pa", g.E_star);
@@ -422,6 +437,15 @@ int run_physical(const Args& a) {
   line("mu", mu);
   line("F_N_mean_N", force);
   line("F_x_mean_N", mpfr(mu * force));
+  using std::isfinite;
+  if (isfinite(beta_c))
+    line("beta_c", beta_c);
+  else
+    std::cout << "beta_c = inf\n";  // an upward jump of n: stick at every beta
+  if (kind == "flat") {
+    line("contact_fraction", contact_fraction);
+    line("stick_fraction", stick_fraction);
+  }
   return 0;
 }
 

@@ -937,7 +937,7 @@ def physical_tests():
 
     def check_groups(a, got, exact, digits):
         keys = ["shape", "E_star_Pa", "G_star_Pa", "k_z_N_per_m", "k_x_N_per_m", "beta", "gamma",
-                "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N"]
+                "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "beta_c", "contact_fraction", "stick_fraction"]
         if "F_N_mean_N" in exact:   # <F_x> = mu <F_N>
             exact["F_x_mean_N"] = exact["F_N_mean_N"] * exact["mu"]
         if list(got) != keys:
@@ -985,6 +985,11 @@ def physical_tests():
         exact["mu"] = mu0 * 2 * b / (4 + b)
         # <F_N> = k_z A N_tri(gamma), N_tri = (1 + gamma)^2/4 in the jumping range
         exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(alu["A"]) * (1 + exact["gamma"]) ** 2 / 4
+        # beta_c = 4; contact on (1 + gamma)/2 of the period; stick from first contact until the ramp
+        # meets the falling flank, 2 (1 + gamma)/(4 + beta) of it.
+        exact["beta_c"] = Fraction(4)
+        exact["contact_fraction"] = (1 + exact["gamma"]) / 2
+        exact["stick_fraction"] = 2 * (1 + exact["gamma"]) / (4 + b)
         check_groups(a, got, exact, 40)
     test("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
 
@@ -1058,7 +1063,7 @@ def physical_tests():
             b = exact["beta"]
             g = Decimal(exact["gamma"].numerator) / Decimal(exact["gamma"].denominator)
             want = ["shape", "E_star_Pa", "G_star_Pa", "contact_radius_max_m", "beta", "gamma",
-                    "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N"]
+                    "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "beta_c"]
             if list(got) != want:
                 raise Fail("%s printed %s, expected %s" % (cmd(a), list(got), want))
             for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma"):
