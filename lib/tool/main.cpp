@@ -39,6 +39,8 @@ const char* const kUsage =
     "  mu        mu/mu0 at one point:        --wave W --beta B --gamma G [--profile P]\n"
     "  psi       Psi_w(beta), non-jumping:   --wave W --beta B\n"
     "  sweep     CSV over beta and gamma:    --wave W --beta FROM:TO:N --gamma G1,G2,... [--profile P]\n"
+    "            ranges FROM:TO:N (linear, ends included) or log:FROM:TO:N (geometric); --gamma also\n"
+    "            as a range (FROM > TO allowed); --quantity psi: Psi_w(beta) over beta, no --gamma\n"
     "  physical  from physical inputs (SI):  see 'vibrofric physical --help'\n"
     "  verify    decide every claim of the paper (model.md's list: Eqs. 6-24, Secs. 3-3.2, Figs. 2-4),\n"
     "            then model.md's own (beta_c table, curved contacts), at --digits D (10 to 300,\n"
@@ -202,25 +204,32 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 // β_i = FROM + i (TO − FROM)/(N − 1), as decimal strings of 17 significant digits computed at
 // 40 digits: the printed β is exactly the β evaluated.
-std::vector<std::string> beta_range(const std::string& spec) {
-  const auto parts = split(spec, ':');
-  if (parts.size() != 3) throw InputError("--beta '" + spec + "': expected FROM:TO:N");
-  check_decimal(parts[0], "--beta FROM");
-  check_decimal(parts[1], "--beta TO");
-  const int n = parse_int(parts[2], "--beta N", 1, 1000000);
+// FROM:TO:N, N values with both ends (linear), or log:FROM:TO:N (geometric, FROM and TO > 0). As
+// decimals of 17 significant digits, trailing zeros dropped. `flag` names the flag in messages;
+// `descending` allows TO < FROM (γ from 1 down to −1, as the paper's figures).
+std::vector<std::string> value_range(const std::string& spec, const std::string& flag, bool descending) {
+  const bool log = spec.rfind("log:", 0) == 0;
+  const auto parts = split(log ? spec.substr(4) : spec, ':');
+  if (parts.size() != 3) throw InputError(flag + " '" + spec + "': expected FROM:TO:N or log:FROM:TO:N");
+  check_decimal(parts[0], flag + " FROM");
+  check_decimal(parts[1], flag + " TO");
+  const int n = parse_int(parts[2], flag + " N", 1, 1000000);
   PrecisionScope scope(40);
   const mpfr from(parts[0]), to(parts[1]);
-  if (to < from) throw InputError("--beta '" + spec + "': empty range, expected FROM <= TO");
-  if (n > 1 && !(to > from)) throw InputError("--beta '" + spec + "': empty range for N > 1, expected FROM < TO");
+  if (!descending && to < from) throw InputError(flag + " '" + spec + "': empty range, expected FROM <= TO");
+  if (n > 1 && from == to) throw InputError(flag + " '" + spec + "': empty range for N > 1, expected FROM != TO");
+  if (log && !(from > 0 && to > 0))
+    throw InputError(flag + " '" + spec + "': a log range needs FROM > 0 and TO > 0");
   std::vector<std::string> out;
   for (int i = 0; i < n; ++i) {
-    const mpfr b = n == 1 ? from : mpfr(from + (to - from) * i / (n - 1));
-    std::string s = format_significant(b, 17);
-    if (s.find('.') != std::string::npos && s.find('e') == std::string::npos) {
-      while (s.back() == '0') s.pop_back();
-      if (s.back() == '.') s.pop_back();
+    const mpfr t = n == 1 ? mpfr(0) : mpfr(mpfr(i) / (n - 1));
+    const mpfr v = i == n - 1 ? to : log ? mpfr(from * pow(to / from, t)) : mpfr(from + (to - from) * t);
+    std::string str = format_significant(i == 0 ? from : v, 17);
+    if (str.find('.') != std::string::npos && str.find('e') == std::string::npos) {
+      while (str.back() == '0') str.pop_back();
+      if (str.back() == '.') str.pop_back();
     }
-    out.push_back(s);
+    out.push_back(str);
   }
   return out;
 }
@@ -276,9 +285,20 @@ int run_mu_psi(const Args& a, Quantity q) {
 
 int run_sweep(const Args& a) {
   const WaveSpec wave = parse_wave(need(a, "wave"));
-  const auto betas = beta_range(need(a, "beta"));
-  const auto gammas = split(need(a, "gamma"), ',');
-  for (const auto& g : gammas) check_decimal(g, "--gamma value");
+  const auto betas = value_range(need(a, "beta"), "--beta", false);
+  // --quantity psi: Ψ_w(β) (Eq. 12), which has no γ.
+  const std::string quantity = a.flags.count("quantity") ? a.flags.at("quantity") : "mu";
+  if (quantity != "mu" && quantity != "psi") throw InputError("--quantity '" + quantity + "': expected mu or psi");
+  const Quantity q = quantity == "psi" ? Quantity::psi : Quantity::mu;
+  std::vector<std::string> gammas;
+  if (q == Quantity::psi) {
+    if (a.flags.count("gamma")) throw InputError("--gamma does not apply to --quantity psi: Psi_w(beta) has no gamma (Eq. 12)");
+    gammas.push_back("");
+  } else {
+    const std::string& gs = need(a, "gamma");
+    gammas = gs.find(':') != std::string::npos ? value_range(gs, "--gamma", true) : split(gs, ',');
+    for (const auto& g : gammas) check_decimal(g, "--gamma value");
+  }
   const Precision prec = parse_precision(a);
   std::vector<Point> points;
   for (const auto& g : gammas)
@@ -295,8 +315,11 @@ int run_sweep(const Args& a) {
       std::fprintf(stderr, "\rsweep: %zu/%zu", done, points.size());
       if (done == points.size()) std::fprintf(stderr, "\n");
     };
-  const auto values = evaluate(wave, Quantity::mu, points, prec, opt);
-  if (opt.profile.kind == ProfileKind::flat) {
+  const auto values = evaluate(wave, q, points, prec, opt);
+  if (q == Quantity::psi) {
+    std::cout << "wave,beta,psi\n";
+    for (std::size_t i = 0; i < points.size(); ++i) std::cout << wave.name << ',' << points[i].beta << ',' << values[i] << '\n';
+  } else if (opt.profile.kind == ProfileKind::flat) {
     std::cout << "wave,beta,gamma,mu_over_mu0\n";
     for (std::size_t i = 0; i < points.size(); ++i)
       std::cout << wave.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
@@ -584,7 +607,7 @@ int main(int argc, char** argv) {
   const std::map<std::string, std::set<std::string>> allowed{
       {"mu", with({"wave", "beta", "gamma", "profile"})},
       {"psi", with({"wave", "beta", "profile"})},
-      {"sweep", with({"wave", "beta", "gamma", "threads", "profile"})},
+      {"sweep", with({"wave", "beta", "gamma", "threads", "profile", "quantity"})},
       {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "F-N", "mu0", "shape",
                          "R", "flat-radius", "half-angle"})},
       {"verify", {"digits", "claim", "format"}},

@@ -313,6 +313,11 @@ def bad_input_tests():
     bad("sweep range nan:1:3", sw + ["--beta", "nan:1:3", "--gamma", "0.5"],
         [("nan:1:3", "'nan'")])
     bad("sweep single beta (plain number)", sw + ["--beta", "1", "--gamma", "0.5"], ["1"])
+    bad("sweep log range from 0", sw + ["--beta", "log:0:1:3", "--gamma", "0.5"], ["log:0:1:3"], ["log"])
+    bad("sweep psi with gamma", ["sweep", "--wave", "tri", "--quantity", "psi", "--beta", "1:2:2", "--gamma", "1"],
+        [], ["--gamma", "psi"])
+    bad("sweep quantity foo", sw + ["--beta", "1:2:2", "--gamma", "0.5", "--quantity", "foo"], ["foo"], ["quantity"])
+    bad("sweep gamma range N = x", sw + ["--beta", "1:2:2", "--gamma", "1:0:x"], ["x"], ["--gamma"])
     bad("sweep gamma list 0.5,,1", sw + ["--beta", "1:2:3", "--gamma", "0.5,,1"],
         [("0.5,,1", "empty")], ["gamma"])
     bad("sweep gamma list 0.5,x", sw + ["--beta", "1:2:3", "--gamma", "0.5,x"],
@@ -616,6 +621,29 @@ def format_tests():
             raise Fail("vibrofric verify --digits 300 --format json: deviation %r, corrected %r" % (
                 c["deviation"], c["corrected_deviation"]))
     test("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
+
+    def sweep_ranges():
+        # log:FROM:TO:N is geometric with both ends exact; --gamma FROM:TO:N runs downwards too; the
+        # triangle's mu = 2b/(4+b) for every gamma <= 1 (Eq. 19) and its Psi = (4-b)/(4+b) (Eq. 17).
+        out = ok_run(["sweep", "--wave", "tri", "--beta", "log:0.01:100:5", "--gamma", "1:-0.5:4", "--digits", "20"])
+        rows = [r.split(",") for r in out.strip().splitlines()[1:]]
+        if [r[1] for r in rows[:5]] != ["0.01", "0.1", "1", "10", "100"] or [r[2] for r in rows[::5]] != ["1", "0.5", "0", "-0.5"]:
+            raise Fail("sweep log/descending ranges: %r" % rows)
+        for _, b, g, m in rows:
+            bb = F(b)
+            want = 2 * bb / (4 + bb) if bb < 4 else Fraction(1)
+            if abs(F(m) - want) > Fraction(1, 10 ** 19):
+                raise Fail("sweep tri beta %s gamma %s: %s, Eq. 19 gives %s" % (b, g, m, dec(want, 20)))
+        out = ok_run(["sweep", "--wave", "tri", "--quantity", "psi", "--beta", "0.5:3.5:7", "--digits", "20"])
+        lines = out.strip().splitlines()
+        if lines[0] != "wave,beta,psi" or len(lines) != 8:
+            raise Fail("sweep --quantity psi: %r" % lines)
+        for line in lines[1:]:
+            _, b, v = line.split(",")
+            want = (4 - F(b)) / (4 + F(b))
+            if abs(F(v) - want) > Fraction(1, 10 ** 19):
+                raise Fail("sweep psi tri beta %s: %s, Eq. 17 gives %s" % (b, v, dec(want, 20)))
+    test("sweep: log-spaced beta, a descending gamma range, --quantity psi (Eqs. 17, 19)", sweep_ranges)
 
     def trace_first_contact():
         # The contact boundaries are rows of the trace, with n = 0 exactly (not the rounding of
