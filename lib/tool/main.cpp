@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -308,12 +310,28 @@ int run_sweep(const Args& a) {
   opt.escalate = !switch_on(a, "no-escalate");
   opt.solver = parse_solver_options(a);
   opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
+  // The progress line on a terminal: at most ten redraws a second, never backwards (workers report
+  // out of order), with the percentage and the remaining time; the callback costs an atomic load
+  // and a clock read per point between redraws.
   std::mutex m;
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  std::atomic<long long> next_draw_ns{0};
+  std::size_t shown = 0;
   if (isatty(2))
     opt.progress = [&](std::size_t done) {
+      const long long now = std::chrono::duration_cast<std::chrono::nanoseconds>(clock::now() - start).count();
+      const bool last = done == points.size();
+      if (!last && now < next_draw_ns.load(std::memory_order_relaxed)) return;
       std::lock_guard<std::mutex> lock(m);
-      std::fprintf(stderr, "\rsweep: %zu/%zu", done, points.size());
-      if (done == points.size()) std::fprintf(stderr, "\n");
+      if (done <= shown || (!last && now < next_draw_ns.load(std::memory_order_relaxed))) return;
+      next_draw_ns.store(now + 100'000'000, std::memory_order_relaxed);
+      shown = done;
+      const double seconds = static_cast<double>(now) / 1e9;
+      const double left = seconds * static_cast<double>(points.size() - done) / static_cast<double>(done);
+      std::fprintf(stderr, "\rsweep: %zu/%zu (%.1f %%), %.0f s left   ", done, points.size(),
+                   100.0 * static_cast<double>(done) / static_cast<double>(points.size()), left);
+      if (last) std::fprintf(stderr, "\n");
     };
   const auto values = evaluate(wave, q, points, prec, opt);
   if (q == Quantity::psi) {
