@@ -4,6 +4,7 @@
 
 #include <boost/math/tools/roots.hpp>
 #include <boost/version.hpp>
+#include <csv.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -56,6 +57,7 @@ const char* const kUsage =
     "precision (mu, psi, sweep, physical):\n"
     "  --digits D   significant digits, 1 to 10000 (default 50), mpfr with guard digits\n"
     "  --type T     double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr\n"
+    "  --format F   mu, psi, physical: text (default), csv or json; sweep: csv (default) or json\n"
     "  --no-escalate    fixed types: print the value computed in the type even where its\n"
     "               rounding bound exceeds the type's epsilon (default: recompute with mpfr)\n"
     "\n"
@@ -268,6 +270,38 @@ ProfileSpec parse_profile_flag(const Args& a) {
   return a.flags.count("profile") ? parse_profile(a.flags.at("profile")) : ProfileSpec{};
 }
 
+// Output formats of mu, psi, sweep and physical: their plain text, CSV (RFC 4180: a field with a
+// comma, a quote or a line break is quoted by libcsv) or JSON (nlohmann; values as decimal strings,
+// which keep every digit). One record is a JSON object, several are an array of objects.
+enum class Format { text, csv, json };
+
+Format parse_format(const Args& a) {
+  if (!a.flags.count("format")) return Format::text;
+  const std::string& f = a.flags.at("format");
+  if (f == "text") return Format::text;
+  if (f == "csv") return Format::csv;
+  if (f == "json") return Format::json;
+  throw InputError("--format '" + f + "': expected text, csv or json");
+}
+
+std::string csv_field(const std::string& f) {
+  if (f.find_first_of(",\"\r\n") == std::string::npos) return f;
+  std::string out(2 * f.size() + 3, '\0');
+  out.resize(csv_write(out.data(), out.size(), f.data(), f.size()));
+  return out;
+}
+
+void write_csv_row(const std::vector<std::string>& fields) {
+  for (std::size_t i = 0; i < fields.size(); ++i) std::cout << (i ? "," : "") << csv_field(fields[i]);
+  std::cout << '\n';
+}
+
+nlohmann::ordered_json json_record(const std::vector<std::string>& names, const std::vector<std::string>& values) {
+  nlohmann::ordered_json j;
+  for (std::size_t i = 0; i < names.size(); ++i) j[names[i]] = values[i];
+  return j;
+}
+
 int run_mu_psi(const Args& a, Quantity q) {
   const WaveSpec wave = parse_wave(need(a, "wave"));
   Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
@@ -281,7 +315,31 @@ int run_mu_psi(const Args& a, Quantity q) {
                      "so Eq. 13's separation does not exist (use mu)");
   opt.escalate = !switch_on(a, "no-escalate");
   opt.solver = parse_solver_options(a);
-  std::cout << evaluate(wave, q, {p}, parse_precision(a), opt).front() << '\n';
+  const Format format = parse_format(a);
+  const std::string value = evaluate(wave, q, {p}, parse_precision(a), opt).front();
+  if (format == Format::text) {
+    std::cout << value << '\n';
+    return 0;
+  }
+  std::vector<std::string> names{"wave"}, values{wave.name};
+  if (opt.profile.kind != ProfileKind::flat) {
+    names.push_back("profile");
+    values.push_back(opt.profile.name);
+  }
+  names.push_back("beta");
+  values.push_back(p.beta);
+  if (q == Quantity::mu) {
+    names.push_back("gamma");
+    values.push_back(p.gamma);
+  }
+  names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
+  values.push_back(value);
+  if (format == Format::csv) {
+    write_csv_row(names);
+    write_csv_row(values);
+  } else {
+    std::cout << json_record(names, values).dump(1) << '\n';
+  }
   return 0;
 }
 
@@ -302,6 +360,8 @@ int run_sweep(const Args& a) {
     for (const auto& g : gammas) check_decimal(g, "--gamma value");
   }
   const Precision prec = parse_precision(a);
+  const Format format = a.flags.count("format") ? parse_format(a) : Format::csv;
+  if (format == Format::text) throw InputError("--format text: sweep writes csv (the default) or json");
   std::vector<Point> points;
   for (const auto& g : gammas)
     for (const auto& b : betas) points.push_back({b, g});
@@ -334,17 +394,27 @@ int run_sweep(const Args& a) {
       if (last) std::fprintf(stderr, "\n");
     };
   const auto values = evaluate(wave, q, points, prec, opt);
-  if (q == Quantity::psi) {
-    std::cout << "wave,beta,psi\n";
-    for (std::size_t i = 0; i < points.size(); ++i) std::cout << wave.name << ',' << points[i].beta << ',' << values[i] << '\n';
-  } else if (opt.profile.kind == ProfileKind::flat) {
-    std::cout << "wave,beta,gamma,mu_over_mu0\n";
-    for (std::size_t i = 0; i < points.size(); ++i)
-      std::cout << wave.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
+  const bool curved = opt.profile.kind != ProfileKind::flat;
+  std::vector<std::string> names{"wave"};
+  if (curved) names.push_back("profile");
+  names.push_back("beta");
+  if (q == Quantity::mu) names.push_back("gamma");
+  names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
+  auto record = [&](std::size_t i) {
+    std::vector<std::string> r{wave.name};
+    if (curved) r.push_back(opt.profile.name);
+    r.push_back(points[i].beta);
+    if (q == Quantity::mu) r.push_back(points[i].gamma);
+    r.push_back(values[i]);
+    return r;
+  };
+  if (format == Format::json) {
+    std::cout << "[";
+    for (std::size_t i = 0; i < points.size(); ++i) std::cout << (i ? ",\n " : "\n ") << json_record(names, record(i)).dump();
+    std::cout << "\n]\n";
   } else {
-    std::cout << "wave,profile,beta,gamma,mu_over_mu0\n";
-    for (std::size_t i = 0; i < points.size(); ++i)
-      std::cout << wave.name << ',' << opt.profile.name << ',' << points[i].beta << ',' << points[i].gamma << ',' << values[i] << '\n';
+    write_csv_row(names);
+    for (std::size_t i = 0; i < points.size(); ++i) write_csv_row(record(i));
   }
   return 0;
 }
@@ -352,6 +422,7 @@ int run_sweep(const Args& a) {
 int run_physical(const Args& a) {
   const WaveSpec wave = parse_wave(need(a, "wave"));
   const Precision prec = parse_precision(a);
+  const Format format = parse_format(a);
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
   auto get = [&](const char* name) { return parse_real<mpfr>(need(a, name), std::string("--") + name); };
@@ -460,8 +531,13 @@ int run_physical(const Args& a) {
   } else {
     beta_c = make_contact(*w, mpfr(gamma), options.solver).beta_c();
   }
-  auto line = [&](const char* name, const mpfr& v) { std::cout << name << " = " << format_significant(v, digits) << '\n'; };
-  std::cout << "shape = " << (kind == "profile" ? shape : kind) << '\n';
+  std::vector<std::string> names, values;
+  auto field = [&](const char* name, const std::string& v) {
+    names.push_back(name);
+    values.push_back(v);
+  };
+  auto line = [&](const char* name, const mpfr& v) { field(name, format_significant(v, digits)); };
+  field("shape", kind == "profile" ? shape : kind);
   line("E_star_Pa", g.E_star);
   line("G_star_Pa", g.G_star);
   if (kind == "flat") {
@@ -474,7 +550,7 @@ int run_physical(const Args& a) {
   line("beta", g.beta);
   line("gamma", g.gamma);
   if (by_load) line("u_mean_m", mpfr(g.gamma * A));
-  std::cout << "mu_over_mu0 = " << mu_ratio << '\n';
+  field("mu_over_mu0", mu_ratio);
   line("mu", mu);
   line("F_N_mean_N", force);
   line("F_x_mean_N", mpfr(mu * force));
@@ -482,10 +558,18 @@ int run_physical(const Args& a) {
   if (isfinite(beta_c))
     line("beta_c", beta_c);
   else
-    std::cout << "beta_c = inf\n";  // an upward jump of n: stick at every beta
+    field("beta_c", "inf");  // an upward jump of n: stick at every beta
   if (kind == "flat") {
     line("contact_fraction", contact_fraction);
     line("stick_fraction", stick_fraction);
+  }
+  if (format == Format::csv) {
+    write_csv_row(names);
+    write_csv_row(values);
+  } else if (format == Format::json) {
+    std::cout << json_record(names, values).dump(1) << '\n';
+  } else {
+    for (std::size_t i = 0; i < names.size(); ++i) std::cout << names[i] << " = " << values[i] << '\n';
   }
   return 0;
 }
@@ -623,11 +707,11 @@ int main(int argc, char** argv) {
     return s;
   };
   const std::map<std::string, std::set<std::string>> allowed{
-      {"mu", with({"wave", "beta", "gamma", "profile"})},
-      {"psi", with({"wave", "beta", "profile"})},
-      {"sweep", with({"wave", "beta", "gamma", "threads", "profile", "quantity"})},
+      {"mu", with({"wave", "beta", "gamma", "profile", "format"})},
+      {"psi", with({"wave", "beta", "profile", "format"})},
+      {"sweep", with({"wave", "beta", "gamma", "threads", "profile", "quantity", "format"})},
       {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "F-N", "mu0", "shape",
-                         "R", "flat-radius", "half-angle"})},
+                         "R", "flat-radius", "half-angle", "format"})},
       {"verify", {"digits", "claim", "format"}},
       {"trace", {"wave", "beta", "gamma", "points", "digits"}},
       {"version", {}},

@@ -313,6 +313,10 @@ def bad_input_tests():
     bad("sweep range nan:1:3", sw + ["--beta", "nan:1:3", "--gamma", "0.5"],
         [("nan:1:3", "'nan'")])
     bad("sweep single beta (plain number)", sw + ["--beta", "1", "--gamma", "0.5"], ["1"])
+    for c in (["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5"], sw + ["--beta", "1:2:2", "--gamma", "0.5"],
+              physical_args()):
+        bad("%s --format xml" % c[0], c + ["--format", "xml"], ["xml"], ["--format"])
+    bad("sweep --format text", sw + ["--beta", "1:2:2", "--gamma", "0.5", "--format", "text"], [], ["--format"])
     bad("sweep log range from 0", sw + ["--beta", "log:0:1:3", "--gamma", "0.5"], ["log:0:1:3"], ["log"])
     bad("sweep psi with gamma", ["sweep", "--wave", "tri", "--quantity", "psi", "--beta", "1:2:2", "--gamma", "1"],
         [], ["--gamma", "psi"])
@@ -621,6 +625,35 @@ def format_tests():
             raise Fail("vibrofric verify --digits 300 --format json: deviation %r, corrected %r" % (
                 c["deviation"], c["corrected_deviation"]))
     test("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
+
+    def formats():
+        # --format csv|json carry the same values as the text output; CSV fields that hold a comma or
+        # a quote are quoted per RFC 4180 (Python's csv module reads them back).
+        import csv as csvmod, io
+        text = ok_run(["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--digits", "25"]).strip()
+        j = json.loads(ok_run(["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--digits", "25", "--format", "json"]))
+        if j != {"wave": "sine", "beta": "1", "gamma": "0.5", "mu_over_mu0": text}:
+            raise Fail("mu --format json: %r, text %r" % (j, text))
+        odd = os.path.join(TMP, 'dir,with "quotes"')
+        os.makedirs(odd, exist_ok=True)
+        path = os.path.join(odd, "w.txt")
+        with open(path, "w") as f:
+            f.write("0\n1\n0.5\n-1\n")
+        out = ok_run(["sweep", "--wave", "samples:" + path, "--beta", "1:2:2", "--gamma", "0.5", "--digits", "12"])
+        rows = list(csvmod.reader(io.StringIO(out)))
+        if rows[0] != ["wave", "beta", "gamma", "mu_over_mu0"] or [r[0] for r in rows[1:]] != ["samples:" + path] * 2:
+            raise Fail("sweep csv with a comma and quotes in the wave name: %r" % rows)
+        js = json.loads(ok_run(["sweep", "--wave", "samples:" + path, "--beta", "1:2:2", "--gamma", "0.5", "--digits", "12",
+                                "--format", "json"]))
+        if [[d[k] for k in ("wave", "beta", "gamma", "mu_over_mu0")] for d in js] != rows[1:]:
+            raise Fail("sweep json %r and csv %r differ" % (js, rows))
+        base = physical_args(**{"--digits": "15"})
+        text_lines = dict(line.split(" = ") for line in ok_run(base).strip().splitlines())
+        pj = json.loads(ok_run(base + ["--format", "json"]))
+        pc = list(csvmod.reader(io.StringIO(ok_run(base + ["--format", "csv"]))))
+        if pj != text_lines or dict(zip(pc[0], pc[1])) != text_lines or list(pj) != pc[0]:
+            raise Fail("physical formats differ: text %r, json %r, csv %r" % (text_lines, pj, pc))
+    test("--format csv|json for mu, sweep and physical: the text's values; RFC 4180 quoting", formats)
 
     def sweep_ranges():
         # log:FROM:TO:N is geometric with both ends exact; --gamma FROM:TO:N runs downwards too; the
