@@ -196,14 +196,14 @@ WaveSpec parse_wave(const std::string& text) {
   if (colon != std::string::npos && head == "power") {
     s.kind = WaveKind::power;
     s.exponent = arg;
-    check_decimal(arg, "power exponent p in " + quoted(text));
+    check_decimal(arg, "power exponent p in " + quoted(visible(text)));
     // strtold, not stold: an exponent that underflows (power:1e-5000) is 0 here, not an exception.
     if (!(std::strtold(arg.c_str(), nullptr) >= 1))
       throw InputError("power exponent p = " + quoted(arg) + ": expected p ≥ 1");
     return s;
   }
   if (colon != std::string::npos && head == "fourier") {
-    if (arg.empty()) throw InputError("wave " + quoted(text) + ": expected fourier:FILE");
+    if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected fourier:FILE");
     s.kind = WaveKind::fourier;
     std::set<unsigned> seen;
     const Table table = read_table(arg, text);
@@ -227,7 +227,7 @@ WaveSpec parse_wave(const std::string& text) {
     return s;
   }
   if (colon != std::string::npos && head == "samples") {
-    if (arg.empty()) throw InputError("wave " + quoted(text) + ": expected samples:FILE");
+    if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected samples:FILE");
     s.kind = WaveKind::samples;
     const Table table = read_table(arg, text);
     const auto& rows = table.rows;
@@ -302,7 +302,7 @@ WaveSpec parse_wave(const std::string& text) {
                        " identical periods; expected one period (the frequency f is that of one period)");
     return s;
   }
-  throw InputError("unknown wave " + quoted(text) +
+  throw InputError("unknown wave " + quoted(visible(text)) +
                    ": expected sine, triangle, sawtooth-right, sawtooth-left, square, power:P, fourier:FILE or samples:FILE");
 }
 

@@ -449,9 +449,16 @@ int run_physical(const Args& a) {
   const bool by_load = a.flags.count("F-N") > 0;
   if (by_load && a.flags.count("u-mean")) throw InputError("--u-mean and --F-N both given: expected one of them");
   if (!by_load && !a.flags.count("u-mean")) throw InputError("missing --u-mean (mean indentation) or --F-N (mean normal load) for 'physical'");
-  PhysicalInput<mpfr> in{get("E1"), get("nu1"), get("E2"), get("nu2"), opt("G1"), opt("G2"),
-                         kind == "flat" ? positive("radius") : mpfr(0), get("v0"), get("f"), A,
-                         by_load ? mpfr(0) : get("u-mean"), get("mu0")};
+  // Checked here with the values as typed (physical_groups checks them again, for library users).
+  auto poisson = [&](const char* name) {
+    const mpfr v = get(name);
+    if (!(v > -1 && v <= mpfr("0.5")))
+      throw InputError(std::string("--") + name + " = " + a.flags.at(name) + ": expected -1 < nu <= 0.5");
+    return v;
+  };
+  PhysicalInput<mpfr> in{positive("E1"), poisson("nu1"), positive("E2"), poisson("nu2"), opt("G1"), opt("G2"),
+                         kind == "flat" ? positive("radius") : mpfr(0), positive("v0"), positive("f"), A,
+                         by_load ? mpfr(0) : get("u-mean"), positive("mu0")};
   if (a.flags.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + a.flags.at("G1") + ": expected a value > 0");
   if (a.flags.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + a.flags.at("G2") + ": expected a value > 0");
   auto g = physical_groups(in);

@@ -317,6 +317,9 @@ def bad_input_tests():
               physical_args()):
         bad("%s --format xml" % c[0], c + ["--format", "xml"], ["xml"], ["--format"])
     bad("sweep --format text", sw + ["--beta", "1:2:2", "--gamma", "0.5", "--format", "text"], [], ["--format"])
+    bad("wave name with a CR", ["mu", "--wave", "sine\r", "--beta", "1", "--gamma", "0.5"], [], ["'sine\\r'"])
+    bad("nu1 with 29 digits, quoted as typed", physical_args(**{"--nu1": "0.70000000000000000000000000001"}),
+        [], ["0.70000000000000000000000000001"])
     bad("sweep log range from 0", sw + ["--beta", "log:0:1:3", "--gamma", "0.5"], ["log:0:1:3"], ["log"])
     bad("sweep psi with gamma", ["sweep", "--wave", "tri", "--quantity", "psi", "--beta", "1:2:2", "--gamma", "1"],
         [], ["--gamma", "psi"])
