@@ -9,6 +9,7 @@ that starts with `vibrofric: ` is a bad-input message: it is stderr, stdout is e
 status is 2. Usage:
 test_readme.py TOOL [README]."""
 import os
+import re
 import shlex
 import subprocess
 import sys
@@ -44,6 +45,24 @@ def examples(text):
     return out
 
 
+TIME = re.compile(r"(\d[\d.]*)\s?(ns|µs|ms)\b")
+
+
+def timings_from_bench(docs, results):
+    """Every time a README quotes (a number with ns, µs or ms) occurs in bench/results/latest.md,
+    the one run that bench/run wrote; a configured time ("minimum time of 10 ms") is no measurement."""
+    measured = {(float(v), u) for v, u in TIME.findall(open(results, encoding="utf-8").read())}
+    bad = []
+    for doc in docs:
+        for n, line in enumerate(open(doc, encoding="utf-8"), 1):
+            for m in TIME.finditer(line):
+                if "minimum time of" in line[:m.start()]:
+                    continue
+                if (float(m.group(1)), m.group(2)) not in measured:
+                    bad.append("%s:%d: %s %s is not in %s" % (doc, n, m.group(1), m.group(2), results))
+    return bad
+
+
 def main():
     tool = sys.argv[1]
     readme = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "..", "..", "README.md")
@@ -70,6 +89,11 @@ def main():
     if not found:
         print("FAIL: no examples found in " + readme)
         return 1
+    root = os.path.dirname(os.path.abspath(readme))
+    for problem in timings_from_bench([readme, os.path.join(root, "bench", "README.md")],
+                                      os.path.join(root, "bench", "results", "latest.md")):
+        failures += 1
+        print("FAIL " + problem)
     print("%d examples, %d failed" % (len(found), failures))
     return 1 if failures else 0
 
