@@ -1,5 +1,6 @@
 #include "vibrofric/catalogue.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -17,21 +18,7 @@ namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
-// A text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').
-std::string visible(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    const auto u = static_cast<unsigned char>(ch);
-    if (u >= 0x20 && u < 0x7F) {
-      out += ch;
-    } else {
-      char b[8];
-      std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
-      out += b;
-    }
-  }
-  return out;
-}
+using detail::visible;
 
 // A user waveform file as a table (README, "File formats"): a UTF-8 byte-order mark and CR line
 // ends are dropped, '#' starts a comment, blank lines are skipped; a line with ',' or ';' has its
@@ -137,7 +124,75 @@ std::size_t smallest_period(const std::vector<std::string>& y, const std::vector
   return n;
 }
 
+// The 0-based value column chosen by `column` (README, "File formats"): a 1-based index (header
+// names hold no number, so digits are never a name), or a header name matched exactly.
+std::size_t choose_column(const std::string& column, const std::vector<std::string>& header, std::size_t columns,
+                          const std::string& path) {
+  const std::string range = columns == 1 ? std::string("1") : "1 to " + std::to_string(columns);
+  if (std::all_of(column.begin(), column.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    const std::size_t index = column.size() > 9 ? 0 : static_cast<std::size_t>(std::stoul(column));
+    if (index < 1 || index > columns)
+      throw InputError("column " + quoted(column) + " of " + quoted(visible(path)) + " is out of range: the file has " +
+                       std::to_string(columns) + (columns == 1 ? " column" : " columns") + ", expected an index " + range);
+    return index - 1;
+  }
+  if (header.empty())
+    throw InputError("column " + quoted(visible(column)) + ": " + quoted(visible(path)) +
+                     " has no header line of names, expected a 1-based column index " + range);
+  std::vector<std::size_t> found;
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == column) found.push_back(i);
+  if (found.size() > 1)
+    throw InputError("column " + quoted(visible(column)) + " names columns " + std::to_string(found[0] + 1) + " and " +
+                     std::to_string(found[1] + 1) + " of " + quoted(visible(path)) + ": expected a 1-based index to choose one");
+  if (found.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < header.size(); ++i) names += (i ? ", " : "") + quoted(visible(header[i]));
+    throw InputError("column " + quoted(visible(column)) + " is not in the header of " + quoted(visible(path)) +
+                     ": expected one of " + names + " or an index " + range);
+  }
+  return found[0];
+}
+
 }  // namespace
+
+std::string detail::visible(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u >= 0x20 && u < 0x7F) {
+      out += ch;
+    } else {
+      char b[8];
+      std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
+      out += b;
+    }
+  }
+  return out;
+}
+
+int detail::distinct_digits(const WaveSpec& spec) {
+  int distinct = 1;
+  for (const std::string& t : spec.samples) {
+    int d = 0;
+    for (const char c : t) {
+      if (c == 'e' || c == 'E') break;
+      if (c >= '0' && c <= '9') ++d;
+    }
+    distinct = std::max(distinct, d);
+  }
+  return distinct;
+}
+
+mpfr detail::sample_value(const WaveSpec& spec, std::size_t j) { return mpfr(spec.samples[j]); }
+
+std::function<mpfr(std::size_t)> detail::sample_phase(const WaveSpec& spec) {
+  if (spec.times.empty()) return {};
+  return [&spec](std::size_t j) {
+    const mpfr t0(spec.times.front());
+    return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
+  };
+}
 
 const std::vector<std::string>& catalogue_names() {
   static const std::vector<std::string> names{"sine", "triangle", "sawtooth-right", "sawtooth-left", "square"};
@@ -183,9 +238,22 @@ void check_decimal(const std::string& text, const std::string& what) {
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
 }
 
-WaveSpec parse_wave(const std::string& text) {
+WaveSpec parse_wave(const std::string& text) { return parse_wave(text, WaveReadOptions{}); }
+
+WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
   WaveSpec s;
   s.name = text;
+  const bool chosen = !options.column.empty();
+  if (chosen) {
+    const auto colon = text.find(':');
+    const std::string head = text.substr(0, colon);
+    const bool known = std::find(catalogue_names().begin(), catalogue_names().end(), text) != catalogue_names().end() ||
+                       text == "harmonic" || text == "tri" || text == "str" || text == "stl" || text == "sqr" ||
+                       (colon != std::string::npos && (head == "power" || head == "fourier"));
+    if (known)
+      throw InputError("column " + quoted(visible(options.column)) + " given for wave " + quoted(visible(text)) +
+                       ": a column applies to samples:FILE waves only, expected no column");
+  }
   if (text == "sine" || text == "harmonic") { s.kind = WaveKind::sine; s.name = "sine"; return s; }
   if (text == "triangle" || text == "tri") { s.kind = WaveKind::triangle; s.name = "triangle"; return s; }
   if (text == "sawtooth-right" || text == "str") { s.kind = WaveKind::sawtooth_right; s.name = "sawtooth-right"; return s; }
@@ -235,7 +303,7 @@ WaveSpec parse_wave(const std::string& text) {
     for (const auto& [line, tok] : rows)
       for (const auto& t : tok) check_decimal(t, arg + ":" + std::to_string(line) + " sample");
     std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
-    if (rows.size() == 1 && table.header.empty()) {
+    if (!chosen && rows.size() == 1 && table.header.empty()) {
       s.samples = rows[0].second;  // one line of values: one period
     } else {
       for (const auto& [line, tok] : rows)
@@ -246,25 +314,49 @@ WaveSpec parse_wave(const std::string& text) {
       if (!table.header.empty() && !rows.empty() && table.header.size() != columns)
         throw InputError(arg + ": the header names " + std::to_string(table.header.size()) + " columns, the data have " +
                          std::to_string(columns) + ": expected one name per column");
-      if (columns == 2) {
-        const bool t0 = !table.header.empty() && is_time_name(table.header[0]);
-        const bool t1 = !table.header.empty() && is_time_name(table.header[1]);
-        if (table.header.empty() || t0 == t1)
+      const auto& header = table.header;
+      std::size_t vc = 0, tc = std::string::npos;  // value and time column (npos: none)
+      if (chosen && (!rows.empty() || !header.empty())) {
+        if (columns == 0) columns = header.size();
+        vc = choose_column(options.column, header, columns, arg);
+        std::vector<std::size_t> time_columns;
+        for (std::size_t i = 0; i < header.size(); ++i)
+          if (is_time_name(header[i])) time_columns.push_back(i);
+        if (time_columns.size() > 1)
+          throw InputError(quoted(visible(arg)) + ": the header names " + std::to_string(time_columns.size()) + " time columns, " +
+                           quoted(visible(header[time_columns[0]])) + " and " + quoted(visible(header[time_columns[1]])) +
+                           ": expected at most one column named 'time' or 't'");
+        if (!time_columns.empty()) tc = time_columns[0];
+        if (vc == tc)
+          throw InputError("column " + quoted(visible(options.column)) + " of " + quoted(visible(arg)) + " is its time column " +
+                           quoted(visible(header[tc])) + ": expected a column of values");
+        if (!header.empty() && std::count(header.begin(), header.end(), header[vc]) == 1)
+          s.column = header[vc];
+        else
+          s.column = std::to_string(vc + 1);
+        s.name = text + "#" + s.column;
+      } else if (chosen) {
+        // No rows and no header: nothing to choose from; the sample count below says so.
+      } else if (columns == 2) {
+        const bool t0 = !header.empty() && is_time_name(header[0]);
+        const bool t1 = !header.empty() && is_time_name(header[1]);
+        if (header.empty() || t0 == t1)
           throw InputError(arg + ": two columns" +
-                           (table.header.empty() ? std::string(" and no header")
-                                                 : " named " + quoted(visible(table.header[0])) + ", " + quoted(visible(table.header[1]))) +
+                           (header.empty() ? std::string(" and no header")
+                                           : " named " + quoted(visible(header[0])) + ", " + quoted(visible(header[1]))) +
                            ": expected one column of values, or a header naming one column 'time' (or 't'), e.g. 'time,value'");
-        const std::size_t tc = t0 ? 0 : 1;
-        for (const auto& [line, tok] : rows) {
-          s.times.push_back(tok[tc]);
-          s.samples.push_back(tok[1 - tc]);
-        }
+        tc = t0 ? 0 : 1;
+        vc = 1 - tc;
       } else if (columns > 2) {
         throw InputError(arg + ": " + std::to_string(columns) +
-                         " columns: expected one column of values, or two named 'time' and 'value'");
-      } else {
-        for (const auto& [line, tok] : rows) s.samples.push_back(tok[0]);
+                         " columns: expected one column of values, or two named 'time' and 'value', or a chosen value column");
       }
+      for (const auto& [line, tok] : rows) {
+        if (tc != std::string::npos) s.times.push_back(tok[tc]);
+        s.samples.push_back(tok[vc]);
+      }
+      if (!header.empty() && vc < header.size()) s.value_column = header[vc];
+      if (tc != std::string::npos) s.time_column = header[tc];
     }
     if (s.samples.size() < 2 + (s.times.empty() ? 0 : 1))
       throw InputError("file " + quoted(visible(arg)) + " has " + std::to_string(s.samples.size()) + " sample(s): expected at least " +
@@ -304,6 +396,61 @@ WaveSpec parse_wave(const std::string& text) {
   }
   throw InputError("unknown wave " + quoted(visible(text)) +
                    ": expected sine, triangle, sawtooth-right, sawtooth-left, square, power:P, fourier:FILE or samples:FILE");
+}
+
+std::vector<std::pair<std::string, std::string>> describe_normalisation(const WaveSpec& wave, int digits) {
+  if (digits < 1 || digits > 10000)
+    throw InputError("digits = " + std::to_string(digits) + ": expected 1 to 10000 significant digits");
+  const auto text = [&](const mpfr& x) { return format_significant(x, digits); };
+  const unsigned guarded = static_cast<unsigned>(digits) + 10;
+  if (wave.kind == WaveKind::fourier) {
+    // The FourierSeries constructor normalises (extrema by root search): build it, 10 guard digits.
+    PrecisionScope scope(guarded);
+    const auto w = make_waveform<mpfr>(wave);
+    const Normalisation<mpfr>& nz = w->normalisation();
+    std::size_t count = 0;
+    for (const auto& h : wave.harmonics) count += h.k != 0;
+    return {{"harmonics", std::to_string(count)},
+            {"mean_removed", text(nz.offset)},
+            {"peak_to_peak", text(mpfr(2 * nz.scale))},
+            {"scale", text(nz.scale)},
+            {"factor", text(mpfr(1 / nz.scale))}};
+  }
+  if (wave.kind != WaveKind::samples)
+    return {{"normalisation", "none (catalogue wave, already zero mean and max - min = 2)"}};
+  const SampleNormalisation nz = normalise_samples(
+      wave.name, wave.samples.size(), [&](std::size_t j) { return detail::sample_value(wave, j); },
+      detail::distinct_digits(wave), detail::sample_phase(wave), static_cast<int>(guarded));
+  std::string period = "1 (uniform phases)";
+  if (!wave.times.empty()) {
+    // t_N − t_0 with the digits both stamps share cancelled: estimated at 60 digits first.
+    int cancelled = 0;
+    {
+      PrecisionScope scope(60);
+      const mpfr a(wave.times.front()), b(wave.times.back());
+      cancelled = static_cast<int>(std::ceil(static_cast<double>(log10(mpfr(std::max(abs(a), abs(b)) / (b - a))))));
+    }
+    PrecisionScope scope(guarded + static_cast<unsigned>(std::max(cancelled, 0)));
+    period = text(mpfr(mpfr(wave.times.back()) - mpfr(wave.times.front())));
+  }
+  const std::string column =
+      !wave.value_column.empty() ? wave.value_column : !wave.column.empty() ? wave.column : std::string("1");
+  PrecisionScope scope(nz.digits);
+  // The mean is accurate to about 10^-(digits − log10 N − 2)·max|y| (normalise_samples): below that
+  // (a zero mean computed as ±1e-22) its significant digits would be rounding noise, shown as 0.
+  const int log_n = static_cast<int>(std::ceil(std::log10(static_cast<double>(wave.samples.size()))));
+  const mpfr accuracy = pow(mpfr(10), -(static_cast<int>(nz.digits) - log_n - 2)) * std::max(abs(nz.lo), abs(nz.hi));
+  const mpfr mean = abs(nz.mean) <= accuracy ? mpfr(0) : nz.mean;
+  return {{"samples", std::to_string(wave.samples.size())},
+          {"end_point", wave.times.empty() ? "none" : "dropped"},
+          {"time_column", wave.times.empty() ? "none" : wave.time_column.empty() ? "unnamed" : wave.time_column},
+          {"period", period},
+          {"column", column},
+          {"raw_mean", text(mean)},
+          {"raw_min", text(nz.lo)},
+          {"raw_max", text(nz.hi)},
+          {"scale", text(nz.scale)},
+          {"factor", text(mpfr(1 / nz.scale))}};
 }
 
 }  // namespace vibrofric

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <functional>
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/envelope.hpp"
@@ -205,6 +206,106 @@ TEST(Waveforms, SampleFileGrammar) {
   refused("g_nul.txt", std::string("0\n1\0\n-1\n", 7), "NUL");
   // Values repeating at a non-uniform time shift are not several periods.
   EXPECT_NO_THROW(parse_wave("samples:" + temp_file("g_time_ok.csv", "t,y\n0,0\n1,1\n2,-1\n3,0\n5,1\n6,-1\n7,0\n")));
+}
+
+// A value column chosen by name or 1-based index (WaveReadOptions): more than two columns, the
+// header's time column still giving the phases; the canonical name records the column.
+TEST(Waveforms, ColumnSelection) {
+  const std::string path = temp_file("c_multi.csv", "t;a;b\n0;1;10\n1;3;20\n3;-1;40\n4;1;10\n");
+  const WaveSpec b = parse_wave("samples:" + path, {"b"});
+  EXPECT_EQ(b.samples, (std::vector<std::string>{"10", "20", "40"}));
+  EXPECT_EQ(b.times, (std::vector<std::string>{"0", "1", "3", "4"}));
+  EXPECT_EQ(b.name, "samples:" + path + "#b");
+  EXPECT_EQ(b.column, "b");
+  EXPECT_EQ(b.time_column, "t");
+  const WaveSpec three = parse_wave("samples:" + path, {"3"});  // by index: the same wave, the same name
+  EXPECT_EQ(three.samples, b.samples);
+  EXPECT_EQ(three.name, b.name);
+  EXPECT_EQ(parse_wave("samples:" + path, {"a"}).samples, (std::vector<std::string>{"1", "3", "-1"}));
+  // Without a column: names unchanged, and more than two columns still refused.
+  const std::string two = temp_file("c_two.csv", "time,value\n0,0\n1,1\n2,-1\n3,0\n");
+  EXPECT_EQ(parse_wave("samples:" + two).name, "samples:" + two);
+  EXPECT_EQ(parse_wave("samples:" + two, WaveReadOptions{}).name, "samples:" + two);
+  EXPECT_EQ(parse_wave("sine", WaveReadOptions{}).name, "sine");
+  // No header: an index only, uniform phases.
+  const std::string bare = temp_file("c_bare.txt", "0 5 1\n1 6 1\n2 4 1\n");
+  const WaveSpec second = parse_wave("samples:" + bare, {"2"});
+  EXPECT_EQ(second.samples, (std::vector<std::string>{"5", "6", "4"}));
+  EXPECT_TRUE(second.times.empty());
+  EXPECT_EQ(second.name, "samples:" + bare + "#2");
+
+  const auto refused = [](const std::function<void()>& f, const std::string& words) {
+    try {
+      f();
+      ADD_FAILURE() << "accepted; expected '" << words << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+  };
+  refused([&] { parse_wave("samples:" + path); }, "3 columns: expected one column of values");
+  refused([&] { parse_wave("samples:" + path, {"c"}); },
+          "column 'c' is not in the header of '" + path + "': expected one of 't', 'a', 'b' or an index 1 to 3");
+  refused([&] { parse_wave("samples:" + path, {"4"}); },
+          "column '4' of '" + path + "' is out of range: the file has 3 columns, expected an index 1 to 3");
+  refused([&] { parse_wave("samples:" + path, {"0"}); }, "is out of range: the file has 3 columns");
+  refused([&] { parse_wave("samples:" + path, {"t"}); }, "column 't' of '" + path + "' is its time column 't': expected a column of values");
+  refused([&] { parse_wave("samples:" + path, {"1"}); }, "is its time column 't'");
+  refused([&] { parse_wave("samples:" + path, {"b\r"}); }, "column 'b\\r' is not in the header");
+  refused([&] { parse_wave("samples:" + bare, {"b"}); },
+          "column 'b': '" + bare + "' has no header line of names, expected a 1-based column index 1 to 3");
+  refused([&] { parse_wave("sine", {"2"}); }, "column '2' given for wave 'sine': a column applies to samples:FILE waves only, expected no column");
+  refused([&] { parse_wave("power:2", {"2"}); }, "a column applies to samples:FILE waves only");
+  refused([&] { parse_wave("fourier:" + temp_file("c_f.txt", "1 0 1\n"), {"a_k"}); }, "a column applies to samples:FILE waves only");
+  refused([&] { parse_wave("samples:" + temp_file("c_dup.csv", "t,v,v\n0,1,2\n1,2,3\n2,1,2\n"), {"v"}); },
+          "column 'v' names columns 2 and 3 of");
+  refused([&] { parse_wave("samples:" + temp_file("c_times.csv", "t,time,v\n0,0,2\n1,1,3\n2,2,2\n"), {"v"}); },
+          "the header names 2 time columns, 't' and 'time': expected at most one");
+}
+
+// The normalisation reported (model.md, "Waveform catalogue"), against hand computation.
+TEST(Waveforms, DescribeNormalisation) {
+  using Pairs = std::vector<std::pair<std::string, std::string>>;
+  // 2, 5, 8, 5 at φ = j/4: mean 5, min 2, max 8, scale (8 − 2)/2 = 3.
+  EXPECT_EQ(describe_normalisation(parse_wave("samples:" + temp_file("d_tri.txt", "2\n5\n8\n5\n")), 6),
+            (Pairs{{"samples", "4"}, {"end_point", "none"}, {"time_column", "none"}, {"period", "1 (uniform phases)"},
+                   {"column", "1"}, {"raw_mean", "5.00000"}, {"raw_min", "2.00000"}, {"raw_max", "8.00000"},
+                   {"scale", "3.00000"}, {"factor", "0.333333"}}));
+  // 0 0 1: mean 1/3, scale 1/2.
+  const WaveSpec third = parse_wave("samples:" + temp_file("d_third.txt", "0 0 1\n"));
+  const Pairs t = describe_normalisation(third, 5);
+  EXPECT_EQ(t[5], (std::pair<std::string, std::string>{"raw_mean", "0.33333"}));
+  EXPECT_EQ(t[8], (std::pair<std::string, std::string>{"scale", "0.50000"}));
+  // The same numbers as the wave's: 17 digits read back give the double normalisation exactly.
+  const auto w = make_waveform<double>(third);
+  EXPECT_EQ(std::strtod(describe_normalisation(third, 17)[5].second.c_str(), nullptr), w->normalisation().offset);
+  EXPECT_EQ(std::strtod(describe_normalisation(third, 17)[8].second.c_str(), nullptr), w->normalisation().scale);
+  // Column b at t = 0, 1, 3 (period 4, end point 10 dropped): phases 0, 1/4, 3/4, trapezoid
+  // weights (φ_{j+1} − φ_{j−1})/2 = 1/4, 3/8, 3/8: mean 10/4 + 20·3/8 + 40·3/8 = 25; min 10, max 40, scale 15.
+  const std::string path = temp_file("d_multi.csv", "t;a;b\n0;1;10\n1;3;20\n3;-1;40\n4;1;10\n");
+  EXPECT_EQ(describe_normalisation(parse_wave("samples:" + path, {"b"}), 4),
+            (Pairs{{"samples", "3"}, {"end_point", "dropped"}, {"time_column", "t"}, {"period", "4.000"}, {"column", "b"},
+                   {"raw_mean", "25.00"}, {"raw_min", "10.00"}, {"raw_max", "40.00"}, {"scale", "15.00"},
+                   {"factor", "0.06667"}}));
+  // Column a: 1, 3, −1 with the same weights: mean 1/4 + 9/8 − 3/8 = 1; scale 2.
+  const Pairs a = describe_normalisation(parse_wave("samples:" + path, {"a"}), 4);
+  EXPECT_EQ(a[5].second, "1.000");
+  EXPECT_EQ(a[8].second, "2.000");
+  // y = 0, 2, 1, −1, −2 at t = 0, 1, 3, 4, 6, period 7: trapezoid weights 1/7, 3/14, 3/14, 3/14,
+  // 3/14, mean exactly 0 (shown as 0, not as the rounding left at the working precision).
+  const WaveSpec zero = parse_wave("samples:" + temp_file("d_zero.csv", "t,y\n0,0\n1,2\n3,1\n4,-1\n6,-2\n7,0\n"));
+  const Pairs z = describe_normalisation(zero, 8);
+  EXPECT_EQ(z[3].second, "7.0000000");
+  EXPECT_EQ(z[5].second, "0");
+  EXPECT_EQ(z[8].second, "2.0000000");
+  // Fourier 7 + 2 sin 2πφ + cos 4πφ: max 1.5 + 7, min −3 + 7 (FourierNormalisedWithFoundExtrema).
+  EXPECT_EQ(describe_normalisation(parse_wave("fourier:" + temp_file("d_f.txt", "0 7 0\n1 0 2\n2 1 0\n")), 6),
+            (Pairs{{"harmonics", "2"}, {"mean_removed", "7.00000"}, {"peak_to_peak", "4.50000"}, {"scale", "2.25000"},
+                   {"factor", "0.444444"}}));
+  EXPECT_EQ(describe_normalisation(parse_wave("sine"), 6),
+            (Pairs{{"normalisation", "none (catalogue wave, already zero mean and max - min = 2)"}}));
+  EXPECT_EQ(describe_normalisation(parse_wave("power:3"), 6).size(), 1u);
+  EXPECT_THROW(describe_normalisation(parse_wave("sine"), 0), InputError);
 }
 
 TEST(Numbers, StrictDecimalGrammar) {

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vibrofric/errors.hpp"
@@ -28,11 +29,36 @@ struct WaveSpec {
   std::vector<Harmonic> harmonics;  // fourier: w = Σ a_k cos 2πkφ + b_k sin 2πkφ
   std::vector<std::string> samples;  // samples: y_j at φ = j/N, or at the times below
   std::vector<std::string> times;    // samples with a time column: t_0 … t_N (t_N − t_0 = the period), else empty
+  // samples: which columns were read. `column` is the value column as chosen by
+  // WaveReadOptions::column, canonical (the header's name if it names that column once, else the
+  // 1-based index), and empty without the option; it is what tells "samples:a#b" (file a, column
+  // b) from a file named "a#b". value_column/time_column: the header's names ("" without a header
+  // or time column), for describe_normalisation.
+  std::string column, value_column, time_column;
+};
+
+// How to read a samples:FILE (README, "File formats"). column: the value column, a header name
+// (exact, as in the header line) or a 1-based index; it lets a file have more than two columns
+// (the time column, if the header names one 'time' or 't', still gives the phases). Empty: the
+// one- and two-column layouts only, as without options.
+struct WaveReadOptions {
+  std::string column;
 };
 
 // Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,
 // power:P (P ≥ 1), fourier:FILE, samples:FILE. Throws InputError naming the text otherwise.
+// With options.column the name is "samples:FILE#COLUMN" (COLUMN canonical, WaveSpec::column);
+// without, the name is unchanged.
 WaveSpec parse_wave(const std::string& text);
+WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options);
+
+// The normalisation a user wave gets (model.md, "Waveform catalogue": "the normalisation used is
+// reported"), as name/value pairs with values to `digits` significant digits, computed by the code
+// that normalises the wave (normalise_samples, the FourierSeries constructor). scale is the
+// divisor of w = (raw − offset)/scale, (max − min)/2 as in Waveform::normalisation() and the
+// README; factor = 1/scale = 2/(max − min) is the multiplier. A samples mean below the accuracy it
+// is computed to (relative to max|y|) is shown as 0. digits: 1 to 10000.
+std::vector<std::pair<std::string, std::string>> describe_normalisation(const WaveSpec& wave, int digits);
 
 // Names of the catalogue waves, for help texts and tests.
 const std::vector<std::string>& catalogue_names();
@@ -53,6 +79,17 @@ Real parse_real(const std::string& text, const std::string& what) {
   else
     return Real(text);
 }
+
+namespace detail {
+// Text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').
+std::string visible(const std::string& s);
+// A samples wave's inputs to make_samples_from, shared with describe_normalisation: the largest
+// count of significant digits of a sample, y_j at the current mpfr precision, and with a time
+// column φ_j = (t_j − t_0)/(t_N − t_0) at the current mpfr precision (empty function without).
+int distinct_digits(const WaveSpec& spec);
+mpfr sample_value(const WaveSpec& spec, std::size_t j);
+std::function<mpfr(std::size_t)> sample_phase(const WaveSpec& spec);
+}  // namespace detail
 
 template <class Real>
 std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
@@ -77,25 +114,9 @@ std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
     case WaveKind::samples: {
       // Normalised from the decimal text itself (parse_wave checked its grammar and range): its
       // rounding to Real would be amplified by the offset-to-amplitude ratio.
-      int distinct = 1;
-      for (const std::string& t : spec.samples) {
-        int d = 0;
-        for (const char c : t) {
-          if (c == 'e' || c == 'E') break;
-          if (c >= '0' && c <= '9') ++d;
-        }
-        distinct = std::max(distinct, d);
-      }
-      if (spec.times.empty())
-        return make_samples_from<Real>(spec.name, spec.samples.size(),
-                                       [&](std::size_t j) { return mpfr(spec.samples[j]); }, distinct);
-      // A time column: φ_j = (t_j − t_0)/(t_N − t_0), at the current mpfr precision.
       return make_samples_from<Real>(
-          spec.name, spec.samples.size(), [&](std::size_t j) { return mpfr(spec.samples[j]); }, distinct,
-          [&](std::size_t j) {
-            const mpfr t0(spec.times.front());
-            return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
-          });
+          spec.name, spec.samples.size(), [&](std::size_t j) { return detail::sample_value(spec, j); },
+          detail::distinct_digits(spec), detail::sample_phase(spec));
     }
   }
   throw InputError("unknown wave kind");

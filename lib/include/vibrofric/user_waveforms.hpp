@@ -239,29 +239,31 @@ class FourierSeries final : public Waveform<Real> {
   unsigned max_k_ = 0;
 };
 
-// Periodic samples y_0 … y_{N−1} at φ_j = j/N, joined by straight lines (y_N = y_0), normalised
-// to w_j = (y_j − mean)/scale with scale = (max − min)/2. The mean of the piecewise-linear signal
-// is the mean of the samples. With an offset large against the amplitude the subtraction cancels
-// log10 κ digits, κ = 2·max|y|/(max − min) (1000, 1000.001, 1000: κ ≈ 2·10^6), so it is done in
-// mpfr from the exact samples with those digits, log10 N for the mean and 10 guard digits on top,
-// and each w_j is rounded to Real once. `sample(j)` returns y_j at the current mpfr precision,
-// correctly rounded; `distinct_digits` bounds the significant digits of any y_j, so that two
-// samples that differ still differ at that precision (else the signal is constant).
-//
-// With `phase` (a time column), y_j sits at φ_j = phase(j) (φ_0 = 0 < φ_1 < … < φ_{N−1} < 1, the
-// period ending at 1) and the mean is the trapezoid rule's, Σ y_j (φ_{j+1} − φ_{j−1})/2.
-template <class Real, class Sample>
-std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t n, Sample sample, int distinct_digits,
-                                                 std::function<mpfr(std::size_t)> phase = {}) {
+// The normalisation of samples y_0 … y_{N−1} (model.md, "Waveform catalogue": user waves are
+// normalised to zero mean and unit amplitude, and the normalisation used is reported), shared by
+// make_samples_from and describe_normalisation so that the reported numbers are the ones used.
+// mean is the mean of the piecewise-linear signal: Σ y_j / N at φ_j = j/N, or with `phase` (a
+// time column) the trapezoid rule's Σ y_j (φ_{j+1} − φ_{j−1})/2; scale = (max − min)/2.
+// With an offset large against the amplitude the subtraction cancels log10 κ digits,
+// κ = 2·max|y|/(max − min) (1000, 1000.001, 1000: κ ≈ 2·10^6), so everything is computed in mpfr
+// at `digits` = wanted + those digits + log10 N for the mean, from the exact samples; the values
+// carry that precision, and the caller subtracts and divides at it (PrecisionScope(digits)).
+// `sample(j)` returns y_j at the current mpfr precision, correctly rounded; `distinct_digits`
+// bounds the significant digits of any y_j, so that two samples that differ still differ at that
+// precision (else the signal is constant).
+struct SampleNormalisation {
+  unsigned digits = 0;  // the mpfr precision (decimal digits) of the values below
+  mpfr mean, lo, hi, scale;
+};
+
+template <class Sample>
+SampleNormalisation normalise_samples(const std::string& name, std::size_t n, Sample sample, int distinct_digits,
+                                      const std::function<mpfr(std::size_t)>& phase, int wanted) {
   if (n < 2)
     throw InputError("sampled waveform " + name + " has " + std::to_string(n) + " sample(s): expected at least 2");
   using std::abs;
-  const int wanted = working_digits10<Real>() + 10;
-  const unsigned working = mpfr::thread_default_precision();  // mpfr's working precision, restored below
   const int log_n = static_cast<int>(std::ceil(std::log10(static_cast<double>(n))));
-  std::vector<Real> w;
-  Normalisation<Real> norm;
-  for (int p = wanted + log_n, attempt = 0; w.empty(); ++attempt) {
+  for (int p = wanted + log_n, attempt = 0;; ++attempt) {
     if (attempt == 8)
       throw InputError("sampled waveform " + name + ": the normalisation does not converge: offset too large against the amplitude");
     PrecisionScope scope(static_cast<unsigned>(p));
@@ -292,10 +294,28 @@ std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t 
         mean += sample(j) * (next - prev) / 2;
       }
     }
-    const mpfr scale = (hi - lo) / 2;
+    return {static_cast<unsigned>(p), mean, lo, hi, mpfr((hi - lo) / 2)};
+  }
+}
+
+// Periodic samples y_0 … y_{N−1} at φ_j = j/N, joined by straight lines (y_N = y_0), normalised
+// to w_j = (y_j − mean)/scale by normalise_samples (10 guard digits over the working precision),
+// each w_j rounded to Real once.
+//
+// With `phase` (a time column), y_j sits at φ_j = phase(j) (φ_0 = 0 < φ_1 < … < φ_{N−1} < 1, the
+// period ending at 1) and the mean is the trapezoid rule's, Σ y_j (φ_{j+1} − φ_{j−1})/2.
+template <class Real, class Sample>
+std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t n, Sample sample, int distinct_digits,
+                                                 std::function<mpfr(std::size_t)> phase = {}) {
+  const unsigned working = mpfr::thread_default_precision();  // mpfr's working precision, restored below
+  const SampleNormalisation nz = normalise_samples(name, n, sample, distinct_digits, phase, working_digits10<Real>() + 10);
+  std::vector<Real> w;
+  Normalisation<Real> norm;
+  {
+    PrecisionScope scope(nz.digits);
     w.reserve(n);
-    for (std::size_t j = 0; j < n; ++j) w.push_back(detail::rounded<Real>(mpfr((sample(j) - mean) / scale), working));
-    norm = {true, detail::rounded<Real>(mean, working), detail::rounded<Real>(scale, working)};
+    for (std::size_t j = 0; j < n; ++j) w.push_back(detail::rounded<Real>(mpfr((sample(j) - nz.mean) / nz.scale), working));
+    norm = {true, detail::rounded<Real>(nz.mean, working), detail::rounded<Real>(nz.scale, working)};
   }
   using P = typename PiecewiseLinear<Real>::Piece;
   std::vector<P> pieces;
