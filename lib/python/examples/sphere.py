@@ -1,0 +1,42 @@
+#!/usr/bin/python3
+"""A ball on a flat under harmonic oscillation (MDR, model.md "Curved contacts"): mu/mu0 against beta
+for several gamma, sphere (solid) against the paper's flat punch (dashed).
+
+    PYTHONPATH=build/release/lib/python /usr/bin/python3 lib/python/examples/sphere.py sphere.png
+"""
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+import vibrofric
+
+
+def main(out):
+    beta = np.linspace(0.05, 7.0, 120)
+    gamma = np.array([1.0, 0.5, 0.0, -0.5, -0.9])
+    sphere = vibrofric.mu("sine", beta, gamma[:, None], profile="sphere")
+    flat = vibrofric.mu("sine", beta, gamma[:, None])
+    fig, ax = plt.subplots(figsize=(6.4, 4.8), dpi=120)
+    colors = plt.cm.plasma(np.linspace(0, 0.85, len(gamma)))
+    for g, s, f, c in zip(gamma, sphere, flat, colors):
+        ax.plot(beta, s, color=c, lw=1.3, label=f"sphere, γ = {g:g}")
+        ax.plot(beta, f, color=c, lw=0.8, ls="--")
+    ax.set_xlabel("β")
+    ax.set_ylabel("μ̄ / μ0")
+    ax.set_ylim(0, 1.02)
+    ax.set_title("Sphere (solid) and flat punch (dashed), harmonic wave")
+    ax.legend(fontsize=7, loc="lower right")
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out)
+    print(f"wrote {out}: {sphere.size + flat.size} points")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: sphere.py OUTPUT.png")
+    main(sys.argv[1])

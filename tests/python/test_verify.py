@@ -1,0 +1,29 @@
+"""vibrofric.verify: the claims catalogue as a list of dicts, the fields of `vibrofric verify
+--format json`."""
+import vibrofric
+
+FIELDS = {"key", "id", "source", "statement", "method", "how", "criterion", "proof", "worst", "verdict", "scope",
+          "fails_where", "corrected", "cases", "deviation", "deviation_unit", "corrected_deviation", "measured",
+          "digits"}
+
+
+def test_eq17_holds():
+    (row,) = vibrofric.verify("eq17", digits=20)
+    assert set(row) == FIELDS
+    assert row["key"] == "eq17" and row["id"] == "Eq. 17" and row["source"] == "paper"
+    assert row["verdict"] == "holds"
+    assert row["cases"] > 0 and row["digits"] == 20
+    assert isinstance(row["deviation"], str) and float(row["deviation"]) < 1e-15
+    assert row["corrected_deviation"] is None
+    assert all(isinstance(m, tuple) and len(m) == 2 for m in row["measured"])
+
+
+def test_eq24_fails_as_printed():
+    (row,) = vibrofric.verify("eq24", digits=10)
+    assert row["verdict"] == "fails"
+    assert row["corrected"] and row["corrected_deviation"] is not None
+
+
+def test_claim_keys():
+    assert "eq17" in vibrofric.claims and "eq24" in vibrofric.claims
+    assert vibrofric.catalogue[0] == "sine"

@@ -1,0 +1,97 @@
+"""Waves and profiles from arrays: vibrofric.samples, vibrofric.fourier, vibrofric.profile give the
+same values, string for string, as the same numbers written to samples:/fourier:/profile: files,
+and the catalogue's closed forms where the array is a catalogue wave."""
+import math
+
+import numpy as np
+import pytest
+
+import vibrofric
+from closed_forms import mu_triangle, nearest_double
+
+BETAS = np.array([0.2, 0.9, 1.7, 3.3, 5.0])
+GAMMAS = np.array([[0.8], [0.0], [-0.4]])
+
+
+def write(path, lines):
+    path.write_text("".join(line + "\n" for line in lines))
+    return str(path)
+
+
+def same_strings(wave_a, wave_b, **kw):
+    for digits in (None, 30):
+        a = vibrofric.mu(wave_a, BETAS, GAMMAS, digits=digits, strings=True, **kw)
+        b = vibrofric.mu(wave_b, BETAS, GAMMAS, digits=digits, strings=True, **kw)
+        assert a.shape == (3, 5)
+        assert list(a.ravel()) == list(b.ravel())
+
+
+def test_samples_equal_file(tmp_path):
+    rng = np.random.default_rng(20240516)
+    y = rng.normal(size=37) * 3.7 + 11.0
+    f = write(tmp_path / "y.txt", [repr(float(v)) for v in y])
+    same_strings(vibrofric.samples(y), "samples:" + f)
+    same_strings(vibrofric.samples(list(y)), "samples:" + f)
+
+
+def test_samples_with_time_equal_file(tmp_path):
+    rng = np.random.default_rng(7)
+    t = np.cumsum(rng.uniform(0.5, 1.5, size=21))
+    y = rng.normal(size=21)
+    y[-1] = y[0]  # one period with its end point
+    f = write(tmp_path / "ty.csv", ["time,value"] + [f"{float(a)!r},{float(b)!r}" for a, b in zip(t, y)])
+    same_strings(vibrofric.samples(y, t=t), "samples:" + f)
+
+
+def test_samples_decimal_strings_equal_file(tmp_path):
+    y = ["0.1", "0.35", "1.000000000000000000000000001", "-0.2", "-0.7"]
+    f = write(tmp_path / "y.txt", y)
+    same_strings(vibrofric.samples(y), "samples:" + f)
+
+
+def test_fourier_equal_file(tmp_path):
+    a = [0.3, 0.0, -0.05]
+    b = [1.0, 0.2, 0.01]
+    f = write(tmp_path / "c.txt", [f"{k} {a[k - 1]!r} {b[k - 1]!r}" for k in (1, 2, 3)])
+    same_strings(vibrofric.fourier(a, b), "fourier:" + f)
+    f0 = write(tmp_path / "c0.txt", ["0 2.5 0"] + [f"{k} {a[k - 1]!r} {b[k - 1]!r}" for k in (1, 2, 3)])
+    same_strings(vibrofric.fourier(np.array(a), np.array(b), a0=2.5), "fourier:" + f0)
+
+
+def test_samples_of_a_triangle_follow_eq19():
+    # -1, 0, 1, 0 at phi = j/4, linear between: the triangle shifted by a quarter period, and with
+    # an offset and a scale that the normalisation removes (phase shifts do not change mu).
+    for y in ([-1, 0, 1, 0], [1.5, 2.0, 2.5, 2.0], ["10", "30", "50", "30"]):
+        w = vibrofric.samples(y)
+        assert w.kind == "samples" and len(w) == 4
+        for b in (0.3, 1.0, 2.5):
+            for g in (0.5, -0.5):
+                assert vibrofric.mu(w, b, g) == nearest_double(mu_triangle(b, g)), (y, b, g)
+
+
+def test_fourier_sine_is_the_sine():
+    w = vibrofric.fourier([0.0], [1.0])
+    assert w.kind == "fourier" and len(w) == 1
+    got = vibrofric.mu(w, BETAS, GAMMAS, digits=30)
+    want = vibrofric.mu("sine", BETAS, GAMMAS, digits=30)
+    for x, y in zip(got.ravel(), want.ravel()):
+        assert abs(x - y) <= 1e-29 * abs(y)
+    assert np.array_equal(vibrofric.mu(w, BETAS, GAMMAS), vibrofric.mu("sine", BETAS, GAMMAS))
+
+
+def test_profile_equal_file(tmp_path):
+    r = np.linspace(0.0, 3.0, 31)
+    f = r ** 2 / 2  # a sphere, sampled
+    path = write(tmp_path / "p.txt", [f"{float(a)!r} {float(b)!r}" for a, b in zip(r, f)])
+    p = vibrofric.profile(r, f)
+    assert len(p) == 31
+    a = vibrofric.mu("sine", BETAS, 0.3, profile=p, strings=True)
+    b = vibrofric.mu("sine", BETAS, 0.3, profile="profile:" + path, strings=True)
+    assert list(a) == list(b)
+
+
+def test_profile_keeps_the_triangle_closed_form():
+    # Eq. 19 holds on every profile while the centre jumps (gamma <= 1).
+    r = [0, 1, 2, 3, 4]
+    f = [0, 0.25, 1.0, 2.25, 4.0]
+    assert vibrofric.mu("triangle", 1.5, 0.2, profile=vibrofric.profile(r, f)) == nearest_double(mu_triangle(1.5, 0.2))
