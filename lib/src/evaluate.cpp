@@ -35,21 +35,30 @@ int output_digits(const Precision& p) {
   return p.digits;
 }
 
-std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
-                                  const Precision& precision, const BatchOptions& options) {
+void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
+                     const std::function<Point(std::size_t)>& point, const Precision& precision,
+                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink) {
   if (precision.type == NumberType::mpfr &&
       (precision.digits < min_digits || precision.digits > max_digits))
     throw InputError("--digits " + std::to_string(precision.digits) + ": expected " +
                      std::to_string(min_digits) + " to " + std::to_string(max_digits));
   const int digits = output_digits(precision);
   switch (precision.type) {
-    case NumberType::float64: return detail::evaluate_typed<double>(wave, q, points, digits, options);
-    case NumberType::float80: return detail::evaluate_typed<long double>(wave, q, points, digits, options);
-    case NumberType::bin50: return detail::evaluate_typed<bin50>(wave, q, points, digits, options);
-    case NumberType::bin100: return detail::evaluate_typed<bin100>(wave, q, points, digits, options);
-    case NumberType::mpfr: return detail::evaluate_typed<mpfr>(wave, q, points, digits, options);
+    case NumberType::float64: return detail::evaluate_stream_typed<double>(wave, q, count, point, digits, options, sink);
+    case NumberType::float80: return detail::evaluate_stream_typed<long double>(wave, q, count, point, digits, options, sink);
+    case NumberType::bin50: return detail::evaluate_stream_typed<bin50>(wave, q, count, point, digits, options, sink);
+    case NumberType::bin100: return detail::evaluate_stream_typed<bin100>(wave, q, count, point, digits, options, sink);
+    case NumberType::mpfr: return detail::evaluate_stream_typed<mpfr>(wave, q, count, point, digits, options, sink);
   }
-  return {};
+}
+
+std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
+                                  const Precision& precision, const BatchOptions& options) {
+  std::vector<std::string> out(points.size());
+  evaluate_stream(
+      wave, q, points.size(), [&](std::size_t i) { return points[i]; }, precision, options,
+      [&](std::size_t i, const std::string& value) { out[i] = value; });
+  return out;
 }
 
 }  // namespace vibrofric

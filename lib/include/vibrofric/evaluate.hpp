@@ -55,15 +55,39 @@ struct BatchOptions {
 };
 
 // Formatted values, in the order of `points`. Throws the error of the first failing point
-// (InputError for bad input or domain, SolverError if the solver failed).
+// (InputError for bad input or domain, SolverError if the solver failed). Holds every value until
+// the end: for large batches use evaluate_stream.
 std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
                                   const Precision& precision, const BatchOptions& options = {});
+
+// The values of points 0 … count − 1, each passed to the sink as soon as it and every point before
+// it are done, with memory bounded independently of count (evaluate() is this with a vector).
+//  - point(i) makes point i on demand. With options.threads other than 1 it is called from the
+//    worker threads, concurrently: it must be thread-safe. Each index is asked for once.
+//  - sink(i, value) is called on the calling thread for i = 0, 1, …, count − 1 in that order.
+//  - Memory: a window of options threads × stream_chunk points is in flight (points claimed
+//    ahead of the oldest undelivered one wait for it), plus each worker's waveform caches, which
+//    live for the whole stream.
+//  - Values are identical, string for string, to evaluate()'s for the same point and options.
+//  - Errors: the error of the first failing point by index (as evaluate(); an exception thrown by
+//    point(i) or by options.progress after point i counts as point i's) is thrown after the rows
+//    before it were delivered, and no row after it is. An exception thrown by the sink stops the
+//    stream and propagates. Either way the workers are joined before evaluate_stream returns.
+//  - options.progress is called once per point computed (from the workers), with a count of
+//    points done that grows by one per call; calls from different workers may arrive out of order.
+void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
+                     const std::function<Point(std::size_t)>& point, const Precision& precision,
+                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink);
+
+// Points in flight per worker thread in evaluate_stream (the memory bound's chunk).
+inline constexpr std::size_t stream_chunk = 4096;
 
 namespace detail {
 // One instantiation per number type, each in its own translation unit (compile cost).
 template <class Real>
-std::vector<std::string> evaluate_typed(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
-                                        int digits, const BatchOptions& options);
+void evaluate_stream_typed(const WaveSpec& wave, Quantity q, std::size_t count,
+                           const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
+                           const std::function<void(std::size_t, const std::string&)>& sink);
 }  // namespace detail
 
 }  // namespace vibrofric

@@ -1,12 +1,17 @@
-// Implementation of evaluate_typed<Real> (evaluate.hpp); included by one .cpp per number type.
+// Implementation of evaluate_stream_typed<Real> (evaluate.hpp); included by one .cpp per number type.
 #pragma once
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
+#include <cstdlib>
 #include <exception>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "vibrofric/curved.hpp"
 #include "vibrofric/evaluate.hpp"
@@ -213,77 +218,199 @@ inline mpfr exact_maximum(const WaveSpec& spec) {
   }
 }
 
-inline void check_contact(const WaveSpec& spec, Quantity q, const std::vector<Point>& points) {
-  if (q == Quantity::psi) return;
-  std::optional<mpfr> top;
-  int top_digits = -1;
-  std::string last;
-  for (const Point& p : points) {
-    if (p.gamma == last) continue;
-    last = p.gamma;
+// The contact check of one worker, point by point, its state kept for the whole stream: γ checked
+// last (points come γ by γ, so a sweep checks each once) and the exact max w, computed once per
+// precision on first need.
+class ContactCheck {
+ public:
+  ContactCheck(const WaveSpec& spec, Quantity q) : spec_(spec), q_(q) {}
+  void operator()(const Point& p) {
+    if (q_ == Quantity::psi || p.gamma == last_) return;
     try {
       check_decimal(p.gamma, "gamma");
     } catch (const InputError&) {
-      continue;
+      return;
     }
     // Clear of the boundary in double, no exact test is needed (a sweep's points stay cheap): the
     // catalogue has max w = 1, and a normalised user wave max w >= 0 (zero mean).
     const double g = std::strtod(p.gamma.c_str(), nullptr);
-    const bool catalogue = spec.kind != WaveKind::samples && spec.kind != WaveKind::fourier;
-    if (g > (catalogue ? -1 + 1e-9 : 1e-9)) continue;
-    const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.size() + 10));
-    PrecisionScope scope(digits);
-    if (top_digits != working_digits10<mpfr>()) {
-      top = exact_maximum(spec);
-      top_digits = working_digits10<mpfr>();
-    }
-    const mpfr gamma(p.gamma);
-    if (!(gamma + *top > 0))
-      throw DomainError("gamma = " + p.gamma + " gives no contact for wave " + spec.name + ": expected gamma > " +
-                        detail::short_str(mpfr(-*top)));
-  }
-}
-
-template <class Real>
-std::vector<std::string> evaluate_typed(const WaveSpec& spec, Quantity q, const std::vector<Point>& points,
-                                        int digits, const BatchOptions& options) {
-  check_contact(spec, q, points);
-  std::vector<std::string> out(points.size());
-  std::vector<std::exception_ptr> errors(points.size());
-  std::atomic<std::size_t> next{0}, done{0};
-  auto worker = [&] {
-    WaveCache<Real> waves(spec, options.profile);
-    WaveCache<long double> wider(spec, options.profile);
-    WaveCache<mpfr> fallback(spec, options.profile);
-    for (std::size_t i; (i = next++) < points.size();) {
-      try {
-        if constexpr (is_runtime_precision_v<Real>)
-          out[i] = evaluate_point<Real>(waves, spec, q, points[i], digits, options.solver);
-        else
-          out[i] = evaluate_fixed(waves, wider, fallback, spec, q, points[i], digits, options);
-      } catch (...) {
-        errors[i] = std::current_exception();
+    const bool catalogue = spec_.kind != WaveKind::samples && spec_.kind != WaveKind::fourier;
+    if (!(g > (catalogue ? -1 + 1e-9 : 1e-9))) {
+      const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.size() + 10));
+      PrecisionScope scope(digits);
+      if (top_digits_ != working_digits10<mpfr>()) {
+        top_.reset();
+        top_ = exact_maximum(spec_);
+        top_digits_ = working_digits10<mpfr>();
       }
-      const std::size_t d = ++done;
+      const mpfr gamma(p.gamma);
+      if (!(gamma + *top_ > 0))
+        throw DomainError("gamma = " + p.gamma + " gives no contact for wave " + spec_.name + ": expected gamma > " +
+                          detail::short_str(mpfr(-*top_)));
+    }
+    last_ = p.gamma;  // only a γ that passed
+  }
+
+ private:
+  const WaveSpec& spec_;
+  Quantity q_;
+  std::optional<mpfr> top_;
+  int top_digits_ = -1;
+  std::string last_;  // "" to begin with: an empty γ is left to the typed path's message
+};
+
+// One worker's state for a whole stream: the contact check and the waveform caches of every rung.
+template <class Real>
+class PointEvaluator {
+ public:
+  PointEvaluator(const WaveSpec& spec, Quantity q, int digits, const BatchOptions& options)
+      : spec_(spec), q_(q), digits_(digits), options_(options), check_(spec, q), waves_(spec, options.profile),
+        wider_(spec, options.profile), fallback_(spec, options.profile) {}
+  std::string operator()(const Point& p) {
+    check_(p);
+    if constexpr (is_runtime_precision_v<Real>)
+      return evaluate_point<Real>(waves_, spec_, q_, p, digits_, options_.solver);
+    else
+      return evaluate_fixed(waves_, wider_, fallback_, spec_, q_, p, digits_, options_);
+  }
+
+ private:
+  const WaveSpec& spec_;
+  Quantity q_;
+  int digits_;
+  const BatchOptions& options_;
+  ContactCheck check_;
+  WaveCache<Real> waves_;
+  WaveCache<long double> wider_;
+  WaveCache<mpfr> fallback_;
+};
+
+// The streaming core under evaluate() and evaluate_stream() (evaluate.hpp).
+//
+// One thread: point by point on the calling thread, each delivered before the next is computed.
+// More: `threads` workers claim points one at a time from a shared counter (as the batch did) and
+// write each value into a ring of threads × stream_chunk slots, slot i mod size; the calling
+// thread delivers slot after slot in index order. A worker that claims a point a whole ring ahead
+// of the next undelivered one waits until that slot is delivered: memory is the ring, whatever
+// count is. Slots publish their index + 1 (release) once written, so the ring is never cleared.
+// Waits use one mutex and two condition variables; the fast paths are atomics only, and a side
+// notifies the other only when it announced that it waits (announcement and publication are both
+// sequentially consistent, so one of them sees the other).
+template <class Real>
+void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
+                           const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
+                           const std::function<void(std::size_t, const std::string&)>& sink) {
+  if (count == 0) return;
+  unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, count));
+  std::atomic<std::size_t> done{0};
+  // Point i's value, or its error (its own, its generator's or its progress report's).
+  auto compute = [&](PointEvaluator<Real>& evaluator, std::size_t i, std::string& value, std::exception_ptr& error) {
+    error = nullptr;
+    try {
+      value = evaluator(point(i));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    const std::size_t d = ++done;
+    try {
       if (options.progress) options.progress(d);
+    } catch (...) {
+      if (!error) error = std::current_exception();
     }
   };
-  unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, points.size())));
+
   if (threads <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+    PointEvaluator<Real> evaluator(spec, q, digits, options);
+    std::string value;
+    for (std::size_t i = 0; i < count; ++i) {
+      std::exception_ptr error;
+      compute(evaluator, i, value, error);
+      if (error) std::rethrow_exception(error);
+      sink(i, value);
+    }
+    return;
   }
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
-  return out;
+
+  struct Slot {
+    std::atomic<std::size_t> filled{0};  // index + 1 of the point written here, 0 before any
+    std::string value;
+    std::exception_ptr error;
+  };
+  const std::size_t size = std::min<std::size_t>(count, std::size_t{threads} * stream_chunk);
+  const std::size_t notify_step = std::max<std::size_t>(1, size / 8);
+  const std::unique_ptr<Slot[]> ring(new Slot[size]);
+  constexpr std::size_t nobody = static_cast<std::size_t>(-1);
+  std::atomic<std::size_t> next{0};               // the next point to claim
+  std::atomic<std::size_t> head{0};               // the next point to deliver
+  std::atomic<std::size_t> awaited{nobody};       // the point the calling thread waits for
+  std::atomic<unsigned> waiting_workers{0};       // workers waiting for a free slot
+  std::atomic<bool> stop{false};
+  std::mutex mutex;
+  std::condition_variable slot_freed, point_done;
+
+  auto worker = [&] {
+    PointEvaluator<Real> evaluator(spec, q, digits, options);
+    for (;;) {
+      const std::size_t i = next++;
+      if (i >= count || stop.load(std::memory_order_relaxed)) return;
+      if (i >= head.load() + size) {
+        std::unique_lock<std::mutex> lock(mutex);
+        ++waiting_workers;
+        slot_freed.wait(lock, [&] { return stop.load() || i < head.load() + size; });
+        --waiting_workers;
+        if (stop.load()) return;
+      }
+      Slot& slot = ring[i % size];
+      compute(evaluator, i, slot.value, slot.error);
+      slot.filled.store(i + 1);
+      if (awaited.load() == i) {
+        std::lock_guard<std::mutex> lock(mutex);
+        point_done.notify_one();
+      }
+    }
+  };
+
+  // Stops and joins the workers on every way out, the sink's exceptions included.
+  struct Pool {
+    std::vector<std::thread> threads;
+    std::atomic<bool>& stop;
+    std::mutex& mutex;
+    std::condition_variable& slot_freed;
+    ~Pool() {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        stop.store(true);
+        slot_freed.notify_all();
+      }
+      for (auto& t : threads) t.join();
+    }
+  } pool{{}, stop, mutex, slot_freed};
+  pool.threads.reserve(threads);
+  for (unsigned t = 0; t < threads; ++t) pool.threads.emplace_back(worker);
+
+  for (std::size_t h = 0; h < count; ++h) {
+    Slot& slot = ring[h % size];
+    if (slot.filled.load(std::memory_order_acquire) != h + 1) {
+      std::unique_lock<std::mutex> lock(mutex);
+      if (waiting_workers.load() > 0) slot_freed.notify_all();  // the notices skipped below
+      awaited.store(h);
+      point_done.wait(lock, [&] { return slot.filled.load() == h + 1; });
+      awaited.store(nobody);
+    }
+    if (slot.error) std::rethrow_exception(slot.error);  // Pool's destructor stops and joins
+    sink(h, slot.value);
+    head.store(h + 1);
+    if ((h + 1) % notify_step == 0 && waiting_workers.load() > 0) {
+      std::lock_guard<std::mutex> lock(mutex);
+      slot_freed.notify_all();
+    }
+  }
 }
 
 }  // namespace vibrofric::detail
 
 #define VIBROFRIC_INSTANTIATE_EVALUATE(Real)                                                     \
-  template std::vector<std::string> vibrofric::detail::evaluate_typed<Real>(                    \
-      const WaveSpec&, Quantity, const std::vector<Point>&, int, const BatchOptions&);
+  template void vibrofric::detail::evaluate_stream_typed<Real>(                                 \
+      const WaveSpec&, Quantity, std::size_t, const std::function<Point(std::size_t)>&, int,    \
+      const BatchOptions&, const std::function<void(std::size_t, const std::string&)>&);

@@ -1,0 +1,275 @@
+// evaluate_stream (evaluate.hpp): the same strings as evaluate() for every number type, profile,
+// quantity and thread count; rows in index order on the calling thread; at most a window of
+// threads × stream_chunk points made ahead of the rows delivered; the first failing point's error
+// after exactly the rows before it. Timing is never asserted.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <typeinfo>
+#include <vector>
+
+#include "vibrofric/catalogue.hpp"
+#include "vibrofric/evaluate.hpp"
+#include "vibrofric/profile.hpp"
+
+namespace {
+
+using namespace vibrofric;
+
+// A decimal as a user types it ("%.*g"), from a seeded generator: random-ish, the same every run.
+std::string decimal(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+// n points: β in (lo_beta, hi_beta), γ in (lo_gamma, hi_gamma); runs of equal γ (as a sweep gives,
+// where the contact cache matters) mixed with single ones, and a few where double escalates
+// (β → 0, γ → −1 for the catalogue waves).
+std::vector<Point> grid(std::size_t n, unsigned seed, bool corners = true) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> beta(0.05, 3), gamma(-0.95, 1.5), u(0, 1);
+  std::vector<Point> out;
+  std::string g = decimal(gamma(gen), 6);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (u(gen) < 0.2) g = decimal(gamma(gen), 1 + static_cast<int>(u(gen) * 16));
+    std::string b = decimal(beta(gen), 1 + static_cast<int>(u(gen) * 16));
+    if (corners && i % 7 == 3) b = "1e-6";
+    out.push_back({b, corners && i % 11 == 5 ? "-0.9999999" : g});
+  }
+  return out;
+}
+
+struct Row {
+  std::size_t index;
+  std::string value;
+};
+
+// evaluate_stream's rows, checking order and the calling thread as they come.
+std::vector<std::string> stream(const WaveSpec& wave, Quantity q, const std::vector<Point>& points, const Precision& p,
+                                const BatchOptions& o, std::vector<Row>* rows = nullptr) {
+  std::vector<std::string> out;
+  const auto caller = std::this_thread::get_id();
+  evaluate_stream(
+      wave, q, points.size(), [&](std::size_t i) { return points.at(i); }, p, o,
+      [&](std::size_t i, const std::string& v) {
+        EXPECT_EQ(i, out.size()) << "rows out of order";
+        EXPECT_EQ(std::this_thread::get_id(), caller) << "sink called from a worker";
+        out.push_back(v);
+        if (rows) rows->push_back({i, v});
+      });
+  return out;
+}
+
+struct TypeCase {
+  Precision precision;
+  std::size_t flat_points;    // per quantity, flat punch
+  std::size_t curved_points;  // sphere: a spring integral per point (cpp_bin_float_100: ~17 s a point, none)
+};
+
+std::vector<TypeCase> type_cases() {
+  return {
+      {{NumberType::float64, 17}, 1000, 12},
+      {{NumberType::float80, 21}, 500, 4},
+      {{NumberType::bin50, 50}, 200, 2},
+      {{NumberType::bin100, 100}, 100, 0},
+      {{NumberType::mpfr, 30}, 200, 4},
+  };
+}
+
+// The same strings as evaluate() for each type, flat (μ and Ψ) and sphere (μ), threads 1 and 2.
+TEST(evaluate_stream, SameStringsAsEvaluateInEveryType) {
+  const WaveSpec sine = parse_wave("sine");
+  unsigned seed = 1;
+  for (const TypeCase& c : type_cases()) {
+    for (const std::string profile : {"flat", "sphere"}) {
+      for (const Quantity q : {Quantity::mu, Quantity::psi}) {
+        if (profile != "flat" && q == Quantity::psi) continue;
+        const std::size_t n = profile == "flat" ? c.flat_points : c.curved_points;
+        if (n == 0) continue;
+        const std::vector<Point> points = grid(n, seed++, profile == "flat");
+        BatchOptions o;
+        o.profile = parse_profile(profile);
+        o.threads = 1;
+        const std::vector<std::string> want = evaluate(sine, q, points, c.precision, o);
+        ASSERT_EQ(want.size(), n);
+        for (const unsigned threads : {1u, 2u}) {
+          o.threads = threads;
+          const std::string where = number_type_name(c.precision.type) + " " + profile +
+                                    (q == Quantity::mu ? " mu" : " psi") + " threads " + std::to_string(threads);
+          EXPECT_EQ(stream(sine, q, points, c.precision, o), want) << where;
+          if (profile == "flat") {
+            EXPECT_EQ(evaluate(sine, q, points, c.precision, o), want) << where;
+          }
+        }
+      }
+    }
+  }
+}
+
+// Several ring laps (count not a multiple of the chunk) in double, with progress and the window.
+TEST(evaluate_stream, ManyPointsInOrderWithinTheWindow) {
+  const WaveSpec wave = parse_wave("tri");
+  const std::size_t n = 5 * stream_chunk + 123;
+  std::vector<Point> points = grid(n, 99, true);
+  const Precision p{NumberType::float64, 17};
+  BatchOptions o;
+  o.threads = 1;
+  const std::vector<std::string> want = evaluate(wave, Quantity::mu, points, p, o);
+  for (const unsigned threads : {1u, 2u}) {
+    o.threads = threads;
+    std::atomic<std::size_t> progress_calls{0}, progress_max{0}, delivered{0}, window_violations{0};
+    o.progress = [&](std::size_t d) {
+      ++progress_calls;
+      for (std::size_t m = progress_max.load(); d > m && !progress_max.compare_exchange_weak(m, d);) {
+      }
+    };
+    std::vector<std::unique_ptr<std::atomic<int>>> asked(n);
+    for (auto& a : asked) a = std::make_unique<std::atomic<int>>(0);
+    std::vector<std::string> got;
+    evaluate_stream(
+        wave, Quantity::mu, n,
+        [&](std::size_t i) {
+          ++*asked.at(i);
+          if (i >= delivered.load() + threads * stream_chunk) ++window_violations;
+          return points[i];
+        },
+        p, o,
+        [&](std::size_t i, const std::string& v) {
+          ASSERT_EQ(i, got.size());
+          got.push_back(v);
+          delivered.store(i + 1);
+        });
+    EXPECT_EQ(got, want) << "threads " << threads;
+    EXPECT_EQ(progress_calls.load(), n);
+    EXPECT_EQ(progress_max.load(), n);
+    EXPECT_EQ(window_violations.load(), 0u) << "a point was made more than threads x stream_chunk ahead";
+    EXPECT_TRUE(std::all_of(asked.begin(), asked.end(), [](const auto& a) { return a->load() == 1; }))
+        << "every point is asked for exactly once";
+  }
+}
+
+TEST(evaluate_stream, ZeroPoints) {
+  for (const unsigned threads : {0u, 1u, 2u}) {
+    BatchOptions o;
+    o.threads = threads;
+    bool called = false;
+    evaluate_stream(
+        parse_wave("sine"), Quantity::mu, 0, [&](std::size_t) { called = true; return Point{"1", "0"}; },
+        {NumberType::float64, 17}, o, [&](std::size_t, const std::string&) { called = true; });
+    EXPECT_FALSE(called);
+  }
+  // The precision is checked whatever the count, as evaluate() does.
+  EXPECT_THROW(evaluate_stream(
+                   parse_wave("sine"), Quantity::mu, 0, [](std::size_t) { return Point{"1", "0"}; },
+                   {NumberType::mpfr, max_digits + 1}, {}, [](std::size_t, const std::string&) {}),
+               InputError);
+}
+
+// The exception evaluate() throws for these points, as (type, message).
+std::pair<std::string, std::string> evaluate_error(const WaveSpec& wave, const std::vector<Point>& points,
+                                                   const Precision& p, const BatchOptions& o) {
+  try {
+    evaluate(wave, Quantity::mu, points, p, o);
+  } catch (const std::exception& e) {
+    return {typeid(e).name(), e.what()};
+  }
+  ADD_FAILURE() << "evaluate did not throw";
+  return {};
+}
+
+// A failing point mid-stream: exactly the rows before it, then evaluate()'s exception, whatever
+// fails after it (a different error at a later index) and however many threads.
+TEST(evaluate_stream, ErrorMidStreamDeliversTheRowsBeforeIt) {
+  const WaveSpec sine = parse_wave("sine");
+  struct Bad {
+    std::size_t n, at;
+    const char* beta;
+    const char* gamma;
+  };
+  for (const TypeCase& c : type_cases()) {
+    const bool fast = c.precision.type == NumberType::float64;
+    const std::size_t n = fast ? 1000 : 9, k = fast ? 777 : 4;
+    for (const Bad& bad : {Bad{fast ? 3 * stream_chunk + 7 : 9, fast ? 2 * stream_chunk + 300 : 5, "abc", "0.5"},
+                           Bad{n, k, "1", "-2"},     // no contact: DomainError
+                           Bad{n, 0, "1", "nan"}}) {  // the first point
+      std::vector<Point> points = grid(bad.n, 7, false);
+      points[bad.at] = {bad.beta, bad.gamma};
+      if (bad.at + 2 < bad.n) points[bad.at + 2] = {"1", "-5"};  // a later, different error
+      for (const unsigned threads : {1u, 2u}) {
+        BatchOptions o;
+        o.threads = threads;
+        const auto want = evaluate_error(sine, points, c.precision, o);
+        std::vector<Row> rows;
+        std::pair<std::string, std::string> got;
+        try {
+          stream(sine, Quantity::mu, points, c.precision, o, &rows);
+          ADD_FAILURE() << "evaluate_stream did not throw";
+        } catch (const std::exception& e) {
+          got = {typeid(e).name(), e.what()};
+        }
+        const std::string where = number_type_name(c.precision.type) + " bad at " + std::to_string(bad.at) +
+                                  " threads " + std::to_string(threads);
+        EXPECT_EQ(got, want) << where;
+        ASSERT_EQ(rows.size(), bad.at) << where;
+        if (bad.at > 0) {
+          const std::vector<Point> before(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(bad.at));
+          const auto ok = evaluate(sine, Quantity::mu, before, c.precision, o);
+          for (std::size_t i = 0; i < bad.at; ++i) ASSERT_EQ(rows[i].value, ok[i]) << where << " row " << i;
+        }
+      }
+    }
+  }
+}
+
+// The generator's, progress's and sink's exceptions: the first two count as their point's error,
+// the sink's stops the stream; every way out joins the workers (the test would hang otherwise).
+TEST(evaluate_stream, CallbackExceptions) {
+  const WaveSpec sine = parse_wave("sine");
+  const std::vector<Point> points = grid(3000, 5, false);
+  const Precision p{NumberType::float64, 17};
+  for (const unsigned threads : {1u, 2u}) {
+    BatchOptions o;
+    o.threads = threads;
+    std::size_t rows = 0;
+    EXPECT_THROW(evaluate_stream(
+                     sine, Quantity::mu, points.size(),
+                     [&](std::size_t i) {
+                       if (i == 1234) throw std::runtime_error("generator");
+                       return points[i];
+                     },
+                     p, o, [&](std::size_t, const std::string&) { ++rows; }),
+                 std::runtime_error);
+    EXPECT_EQ(rows, 1234u);
+
+    rows = 0;
+    EXPECT_THROW(evaluate_stream(
+                     sine, Quantity::mu, points.size(), [&](std::size_t i) { return points[i]; }, p, o,
+                     [&](std::size_t i, const std::string&) {
+                       if (i == 100) throw std::logic_error("sink");
+                       ++rows;
+                     }),
+                 std::logic_error);
+    EXPECT_EQ(rows, 100u);
+
+    BatchOptions cancel = o;
+    cancel.progress = [](std::size_t d) {
+      if (d == 2000) throw std::runtime_error("cancelled");
+    };
+    rows = 0;
+    EXPECT_THROW(evaluate_stream(
+                     sine, Quantity::mu, points.size(), [&](std::size_t i) { return points[i]; }, p, cancel,
+                     [&](std::size_t, const std::string&) { ++rows; }),
+                 std::runtime_error);
+    EXPECT_LE(rows, 2000u + threads);  // the 2000th point done: index 1999 or, with workers, a little later
+  }
+}
+
+}  // namespace
