@@ -2,16 +2,20 @@
 // (Eqs. 1, 5, 14) and the claims check. Bad input: one line on stderr, exit 2; solver failure: 1.
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <boost/version.hpp>
 #include <csv.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -22,9 +26,11 @@
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/claims.hpp"
+#include "vibrofric/commands.hpp"
 #include "vibrofric/curved.hpp"
 #include "vibrofric/detail/evaluate_impl.hpp"
 #include "vibrofric/evaluate.hpp"
+#include "vibrofric/fit.hpp"
 #include "vibrofric/physical.hpp"
 #include "vibrofric/profile.hpp"
 
@@ -32,89 +38,189 @@ namespace {
 
 using namespace vibrofric;
 
-const char* const kUsage =
-    "usage: vibrofric COMMAND [OPTIONS]\n"
-    "\n"
+// Help texts: a synopsis per command (CLI11 lists every flag with its default below it) and
+// footers on waves, profiles and file formats.
+const char* const kAbout =
     "Sliding friction under normal oscillation (M. Popov, large amplitudes): the macroscopic\n"
-    "coefficient of friction mu/mu0 = g_w(beta, gamma) and the reduction function Psi_w(beta).\n"
+    "coefficient of friction mu/mu0 = g_w(beta, gamma) (Eq. 15) and the reduction function\n"
+    "Psi_w(beta) (Eq. 12).\n"
     "\n"
     "commands:\n"
-    "  mu        mu/mu0 at one point:        --wave W --beta B --gamma G [--profile P]\n"
-    "  psi       Psi_w(beta), non-jumping:   --wave W --beta B\n"
-    "  sweep     CSV over beta and gamma:    --wave W --beta FROM:TO:N --gamma G1,G2,... [--profile P]\n"
-    "            ranges FROM:TO:N (linear, ends included) or log:FROM:TO:N (geometric); --gamma also\n"
-    "            as a range (FROM > TO allowed); --quantity psi: Psi_w(beta) over beta, no --gamma\n"
-    "  physical  from physical inputs (SI):  see 'vibrofric physical --help'\n"
-    "  verify    decide every claim of the paper (model.md's list: Eqs. 6-24, Secs. 3-3.2, Figs. 2-4),\n"
-    "            then model.md's own (beta_c table, curved contacts), at --digits D (10 to 300,\n"
-    "            default 50; the same verdicts over the range); --claim KEY for one (e.g. eq24);\n"
-    "            --format json for the report generator\n"
-    "  trace     CSV phi,n,s over one period (Fig. 2): --wave W --beta B --gamma G [--points N]\n"
-    "            (default 1000, plus the ends of every stick phase and the contact boundaries,\n"
-    "            where n = 0 exactly; --digits D, default 17)\n"
+    "  mu        mu/mu0 at one point\n"
+    "  psi       Psi_w(beta) (non-jumping, flat punch)\n"
+    "  sweep     mu/mu0 or Psi over ranges of beta and gamma, rows streamed as CSV or JSON\n"
+    "  physical  from physical inputs in SI units (Eqs. 1, 5, 14), one point or a sweep of one input\n"
+    "  trace     n(phi) and s(phi) over one period (Fig. 2)\n"
+    "  fit       a samples file to a fourier file with K harmonics\n"
+    "  verify    decide every claim of the paper and of model.md\n"
     "  version   versions of vibrofric, the compiler, Boost, MPFR and GMP\n"
     "\n"
-    "precision (mu, psi, sweep, physical):\n"
-    "  --digits D   significant digits, 1 to 10000 (default 50), mpfr with guard digits\n"
-    "  --type T     double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr\n"
-    "  --format F   mu, psi, physical: text (default), csv or json; sweep: csv (default) or json\n"
-    "  --no-escalate    fixed types: print the value computed in the type even where its\n"
-    "               rounding bound exceeds the type's epsilon (default: recompute with mpfr)\n"
     "\n"
-    "profiles P (mu, sweep; model.md MDR): flat (default: the flat punch), sphere, cone, power:N\n"
-    "  (N >= 1, sigma = x^N), wearflat:LAMBDA (sphere with a wear flat, LAMBDA = b^2/(R A) > 0),\n"
-    "  profile:FILE (lines 'r f', f(0) = 0, f non-decreasing, heights in units of the amplitude A).\n"
-    "  psi is flat-punch only: the outer springs of a curved contact always jump.\n"
-    "\n"
+    "'vibrofric COMMAND --help' lists every flag of a command with its default.\n"
+    "exit status: 0 success, 1 solver failure, 2 bad input.\n";
+
+const char* const kWaves =
     "waves W: sine (harmonic), triangle (tri), sawtooth-right (str), sawtooth-left (stl),\n"
     "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
     "  fourier FILE: lines 'k a_k b_k' for w = sum a_k cos(2 pi k phi) + b_k sin(2 pi k phi)\n"
     "  samples FILE: one period of values y_j at phi = j/N (one column, or one line), linear\n"
-    "  between; or two columns under a header naming one 'time' ('time,value'), the last line\n"
-    "  repeating the first value one period later. Fields: whitespace, or ',' / ';' where a\n"
-    "  line has them; '#' starts a comment (README, \"File formats\"). User waves are\n"
-    "  normalised to zero mean and max - min = 2.\n"
-    "\n"
-    "solver controls (mu, psi, sweep):\n"
-    "  --area auto|exact|quadrature  areas from antiderivatives (auto: where the wave has one) or\n"
-    "               tanh-sinh with every event a breakpoint\n"
-    "  --max-iterations N  root-finder budget per event (default 200 + working bits)\n"
-    "  --max-levels N      tanh-sinh halvings, 4 to 30 (default 15); --quadrature-tolerance T\n"
-    "               (default sqrt(eps) of the working precision)\n"
-    "  A budget the solver cannot meet is an error (exit 1), never a value.\n"
-    "\n"
-    "exit status: 0 success, 1 solver failure, 2 bad input.\n";
+    "  between; or columns under a header, one named 'time' or 't' giving the time stamps (the\n"
+    "  last line repeats the first value one period later); --column picks the value column.\n"
+    "  Fields: whitespace, or ',' / ';' where a line has them; '#' starts a comment (README,\n"
+    "  \"File formats\"). User waves are normalised to zero mean and max - min = 2\n"
+    "  (--diagnostics shows how).\n";
 
-const char* const kPhysicalUsage =
-    "usage: vibrofric physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA]\n"
-    "                          --v0 M/S --f HZ --A M (--u-mean M | --F-N N) --mu0 MU\n"
-    "                          [--shape S GEOMETRY] [--digits D | --type T]\n"
-    "\n"
+const char* const kProfiles =
+    "profiles P (model.md MDR): flat (the flat punch), sphere, cone, power:N (N >= 1, sigma = x^N),\n"
+    "  wearflat:LAMBDA (sphere with a wear flat, LAMBDA = b^2/(R A) > 0), profile:FILE (lines\n"
+    "  'r f', f(0) = 0, f non-decreasing, heights in units of the amplitude A).\n";
+
+const char* const kPhysicalAbout =
     "1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2) (Eq. 1);\n"
     "G defaults to E/(2(1 + nu)), -1 < nu <= 0.5. beta = G* v0/(mu0 E* A f) (Eq. 5), gamma = u_mean/A\n"
     "(Eq. 14); A is the zero-to-peak amplitude, u_mean the mean indentation of the indenter's tip.\n"
     "--F-N N sets the mean normal load instead of u_mean: gamma is solved from <F_N>(gamma) = N\n"
     "(<F_N> rises strictly with gamma) and u_mean_m is printed after gamma.\n"
-    "Also printed: beta_c (Eq. 6, of the clipped n; curved: the central spring's) and, for the\n"
-    "flat punch, the fractions of the period in contact and in stick.\n"
+    "Sweep: one of --v0, --A, --f, --F-N, --u-mean given as FROM:TO:N or log:FROM:TO:N writes one\n"
+    "row per value (CSV, or --format json).\n"
+    "Printed: shape, E*, G*, k_z and k_x (flat) or the largest contact radius (curved), lambda\n"
+    "(wearflat), beta, gamma, mu/mu0, mu, the mean normal and friction forces <F_N>, <F_x> in\n"
+    "newtons, beta_c (Eq. 6, of the clipped n; curved: the central spring's) and, for the flat\n"
+    "punch, the fractions of the period in contact and in stick.\n"
     "shapes S and their GEOMETRY (metres, degrees):\n"
     "  flat (default) --radius a          flat-ended cylinder: k_z = 2 E* a, k_x = 2 G* a (Eq. 1)\n"
     "  sphere --R R                       MDR (model.md), sigma = x^2/(R A)\n"
     "  cone --half-angle THETA            angle between axis and flank, in degrees\n"
     "  wearflat --R R --flat-radius b     sphere with a wear flat, lambda = b^2/(R A)\n"
-    "  profile:FILE                       measured profile, lines 'r f' in metres, f(0) = 0\n"
-    "Prints one 'name = value' a line: shape, E*, G*, k_z and k_x (flat) or the largest contact\n"
-    "radius (curved), lambda (wearflat), beta, gamma, mu/mu0, mu, and the mean normal and friction\n"
-    "forces <F_N>, <F_x> in newtons.\n";
+    "  profile:FILE                       measured profile, lines 'r f' in metres, f(0) = 0\n";
 
 struct Args {
   std::string command;
-  std::map<std::string, std::string> flags;
+  std::map<std::string, std::string> flags;  // the flags given, with their values as typed
   bool help = false;
 };
 
-// Flags that take no value (--no-escalate), or a validated one (--no-escalate=false).
-bool is_switch(const std::string& name) { return name == "no-escalate"; }
+// One flag of a command: its name, the value's placeholder (empty: a switch), the help line and
+// the default shown by --help (empty: none).
+struct FlagSpec {
+  const char* name;
+  const char* value;
+  const char* help;
+  const char* fallback;
+};
+
+const std::vector<FlagSpec> kWaveFlags{
+    {"wave", "W", "the wave (required): catalogue name, power:P, fourier:FILE or samples:FILE", ""},
+    {"column", "C", "samples FILE: the value column, by header name or 1-based index", "the one value column"},
+    {"diagnostics", "", "print the normalisation of a user wave (offset, scale, period) on stderr", ""},
+};
+const std::vector<FlagSpec> kPrecisionFlags{
+    {"digits", "D", "significant digits, 1 to 10000 (mpfr, with guard digits)", "50"},
+    {"type", "T", "double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr", "mpfr"},
+    {"no-escalate", "", "fixed types: print the value computed in the type even where its rounding bound "
+                        "exceeds the type's epsilon (=true/false/yes/no/1/0; default off: recompute with mpfr)", ""},
+};
+const std::vector<FlagSpec> kSolverFlags{
+    {"area", "M", "auto | exact | quadrature: areas from antiderivatives or tanh-sinh, every event a breakpoint",
+     "auto"},
+    {"max-iterations", "N", "root-finder budget per event, 1 to 100000", "200 + working bits"},
+    {"max-levels", "N", "tanh-sinh halvings, 4 to 30", "15"},
+    {"quadrature-tolerance", "T", "tanh-sinh tolerance, in (0, 1)", "sqrt(eps) of the working precision"},
+};
+
+struct CommandSpec {
+  const char* name;
+  const char* synopsis;
+  std::vector<FlagSpec> flags;
+  std::vector<const std::vector<FlagSpec>*> groups;
+  std::string footer;
+};
+
+const std::vector<CommandSpec>& commands() {
+  static const std::vector<CommandSpec> specs{
+      {"mu", "mu --wave W --beta B --gamma G [--profile P]: mu/mu0 = g_w(beta, gamma) (Eq. 15)",
+       {{"beta", "B", "beta (Eq. 5), a decimal >= 0 (required)", ""},
+        {"gamma", "G", "gamma = u_mean/A (Eq. 14), a decimal (required)", ""},
+        {"profile", "P", "the indenter (model.md MDR)", "flat"},
+        {"format", "F", "text | csv | json", "text"}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       std::string(kWaves) + kProfiles},
+      {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
+       {{"beta", "B", "beta (Eq. 5), a decimal >= 0 (required)", ""},
+        {"profile", "P", "flat only: in a curved contact the outer springs always jump", "flat"},
+        {"format", "F", "text | csv | json", "text"}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       kWaves},
+      {"sweep", "sweep --wave W --beta RANGE --gamma G1,G2,...|RANGE [--profile P]: rows streamed in order",
+       {{"beta", "RANGE", "FROM:TO:N (linear, ends included) or log:FROM:TO:N (geometric) (required)", ""},
+        {"gamma", "G", "a list G1,G2,... or a range FROM:TO:N (FROM > TO allowed); not with --quantity psi", ""},
+        {"quantity", "Q", "mu | psi", "mu"},
+        {"profile", "P", "the indenter (model.md MDR)", "flat"},
+        {"threads", "N", "worker threads, 0 for every core", "0"},
+        {"format", "F", "csv | json", "csv"}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       std::string(kWaves) + kProfiles},
+      {"physical", "physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA] --v0 M/S --f HZ\n"
+                   "                          --A M (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",
+       {{"E1", "PA", "Young's modulus of body 1, > 0 (required)", ""},
+        {"nu1", "NU", "Poisson's ratio of body 1, -1 < nu <= 0.5 (required)", ""},
+        {"E2", "PA", "Young's modulus of body 2, > 0 (required)", ""},
+        {"nu2", "NU", "Poisson's ratio of body 2 (required)", ""},
+        {"G1", "PA", "shear modulus of body 1", "E1/(2(1 + nu1))"},
+        {"G2", "PA", "shear modulus of body 2", "E2/(2(1 + nu2))"},
+        {"v0", "M/S", "sliding velocity, > 0 (required; or a range)", ""},
+        {"f", "HZ", "oscillation frequency, > 0 (required; or a range)", ""},
+        {"A", "M", "zero-to-peak amplitude of the normal oscillation, > 0 (required; or a range)", ""},
+        {"u-mean", "M", "mean indentation (or a range); or give --F-N", ""},
+        {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", ""},
+        {"mu0", "MU", "local coefficient of friction, > 0 (required)", ""},
+        {"shape", "S", "flat | sphere | cone | wearflat | profile:FILE", "flat"},
+        {"radius", "M", "flat: punch radius (required for flat)", ""},
+        {"R", "M", "sphere, wearflat: radius of curvature", ""},
+        {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", ""},
+        {"flat-radius", "M", "wearflat: radius of the wear flat", ""},
+        {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)"}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       std::string(kPhysicalAbout) + kWaves},
+      {"trace", "trace --wave W --beta B --gamma G: CSV phi,n,s over one period (Fig. 2)",
+       {{"beta", "B", "beta (required)", ""},
+        {"gamma", "G", "gamma (required)", ""},
+        {"points", "N", "equally spaced phases, 2 to 1000000, plus every stick phase's ends and the contact "
+                        "boundaries (where n = 0 exactly)", "1000"},
+        {"digits", "D", "significant digits", "17"}},
+       {&kWaveFlags},
+       kWaves},
+      {"fit", "fit --wave samples:FILE --harmonics K [--output FILE]: a fourier file from samples",
+       {{"harmonics", "K", "harmonics of the fit, 1 to 10000, 2K < samples (required)", ""},
+        {"output", "FILE", "write the fourier file here", "stdout"}},
+       {&kWaveFlags},
+       "The fit is the DFT for uniform phases (one column) and linear least squares (QR) on t/period for\n"
+       "time stamps; the file's comments give the rms and largest residual. Use the fit when the signal\n"
+       "is noisy (samples:FILE follows every wiggle: slopes enter beta_c, Eq. 6) and the samples when\n"
+       "its kinks are real (a clipped or triangular drive).\n"},
+      {"verify", "verify [--digits D] [--claim KEY] [--format json]: every claim of the paper and model.md",
+       {{"digits", "D", "working digits, 10 to 300 (the same verdicts over the range)", "50"},
+        {"claim", "KEY", "one claim (e.g. eq24)", "all"},
+        {"format", "F", "text | json (for the report generator)", "text"}},
+       {},
+       ""},
+      {"version", "version: versions of vibrofric, the compiler, Boost, MPFR and GMP", {}, {}, ""},
+  };
+  return specs;
+}
+
+// CLI11's help with our synopsis as its usage line.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_usage(const CLI::App* app, std::string) const override {
+    for (const auto& c : commands())
+      if (app->get_name() == c.name) return std::string("usage: vibrofric ") + c.synopsis + "\n";
+    return "usage: vibrofric COMMAND [OPTIONS]\n";
+  }
+  std::string make_description(const CLI::App*) const override { return ""; }
+};
+
+bool is_switch(const std::string& name) { return name == "no-escalate" || name == "diagnostics"; }
 
 // A switch's state: absent is off; present alone, or =1/true/yes, on; =0/false/no, off; else bad input.
 bool switch_on(const Args& a, const std::string& name) {
@@ -123,48 +229,87 @@ bool switch_on(const Args& a, const std::string& name) {
   const std::string& v = it->second;
   if (v == "1" || v == "true" || v == "yes") return true;
   if (v == "0" || v == "false" || v == "no") return false;
-  throw InputError("--" + name + " = '" + v + "': expected no value, or one of true, false, yes, no, 1, 0");
+  throw InputError("--" + name + " = '" + detail::visible(v) + "': expected no value, or one of true, false, yes, no, 1, 0");
 }
 
-// --name value, --name=value; values may start with '-' (negative numbers).
-Args parse_args(int argc, char** argv, const std::map<std::string, std::set<std::string>>& allowed) {
+std::vector<FlagSpec> flags_of(const CommandSpec& c) {
+  std::vector<FlagSpec> all = c.flags;
+  for (const auto* g : c.groups) all.insert(all.end(), g->begin(), g->end());
+  return all;
+}
+
+// Parsed by CLI11; checked first for what CLI11 would misread: a value flag followed by another
+// flag (`--beta --gamma 0` would take '--gamma' as beta), an empty `--beta=`, unknown names.
+Args parse_args(int argc, char** argv) {
   Args a;
-  if (argc < 2) throw InputError("missing command: expected mu, psi, sweep, physical, verify, trace or version (see --help)");
+  std::string names;
+  for (const auto& c : commands()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  if (argc < 2) throw InputError("missing command: expected one of " + names + " (see --help)");
   a.command = argv[1];
   if (a.command == "--help" || a.command == "-h" || a.command == "help") {
+    std::cout << "usage: vibrofric COMMAND [OPTIONS]\n\n" << kAbout;
     a.help = true;
-    a.command.clear();
     return a;
   }
-  const auto it = allowed.find(a.command);
-  if (it == allowed.end())
-    throw InputError("unknown command '" + a.command + "': expected mu, psi, sweep, physical, verify, trace or version");
+  CLI::App app("vibrofric");
+  app.formatter(std::make_shared<HelpFormatter>());
+  const auto spec = std::find_if(commands().begin(), commands().end(), [&](const CommandSpec& c) { return a.command == c.name; });
+  if (spec == commands().end())
+    throw InputError("unknown command '" + detail::visible(a.command) + "': expected one of " + names);
+  const std::vector<FlagSpec> flags = flags_of(*spec);
+  auto find = [&](const std::string& n) {
+    return std::find_if(flags.begin(), flags.end(), [&](const FlagSpec& f) { return n == f.name; });
+  };
+  std::set<std::string> seen;
   for (int i = 2; i < argc; ++i) {
-    std::string tok = argv[i];
-    if (tok == "--help" || tok == "-h") {
-      a.help = true;
+    const std::string tok = argv[i];
+    if (tok == "--help" || tok == "-h") continue;
+    if (tok.rfind("--", 0) != 0) throw InputError("unexpected argument '" + detail::visible(tok) + "': expected --flag value");
+    const auto eq = tok.find('=');
+    const std::string name = tok.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
+    if (find(name) == flags.end()) throw InputError("unknown flag --" + detail::visible(name) + " for '" + a.command + "'");
+    if (!seen.insert(name).second) throw InputError("flag --" + name + " given twice");
+    if (is_switch(name)) {
+      // CLI11 would read an empty `--no-escalate=` as the switch alone.
+      if (eq + 1 == tok.size()) switch_on(Args{a.command, {{name, ""}}, false}, name);
       continue;
     }
-    if (tok.rfind("--", 0) != 0) throw InputError("unexpected argument '" + tok + "': expected --flag value");
-    std::string name = tok.substr(2), value;
-    bool has_value = false;
-    if (const auto eq = name.find('='); eq != std::string::npos) {
-      value = name.substr(eq + 1);
-      name = name.substr(0, eq);
-      has_value = true;
-    }
-    if (!it->second.count(name)) throw InputError("unknown flag --" + name + " for '" + a.command + "'");
-    if (!has_value && is_switch(name)) {
-      value = "true";  // a switch takes no value; --name=VALUE is checked by switch_on
-      has_value = true;
-    }
-    if (!has_value) {
-      if (i + 1 >= argc) throw InputError("flag --" + name + " needs a value");
-      value = argv[++i];
-    }
-    if (a.flags.count(name)) throw InputError("flag --" + name + " given twice");
-    a.flags[name] = value;
+    // The next token is a value unless it is a flag by name ('--' alone is a value, and bad).
+    const auto is_flag = [](const std::string& t) { return t.size() > 2 && t.rfind("--", 0) == 0 && std::isalpha(t[2]); };
+    if (eq + 1 == tok.size()) throw InputError("--" + name + "= is empty: --" + name + " needs a value");
+    if (eq == std::string::npos && (i + 1 >= argc || is_flag(argv[i + 1])))
+      throw InputError("--" + name + " needs a value");
+    if (eq == std::string::npos) ++i;
   }
+  CLI::App* sub = app.add_subcommand(spec->name, spec->synopsis);
+  std::map<std::string, std::string> values;
+  std::vector<std::pair<std::string, CLI::Option*>> options;
+  auto add = [&](const FlagSpec& f, const char* group) {
+    CLI::Option* o = f.value[0] == '\0' ? sub->add_flag(std::string("--") + f.name, values[f.name], f.help)
+                                        : sub->add_option(std::string("--") + f.name, values[f.name], f.help)
+                                              ->type_name(f.value);
+    if (f.fallback[0] != '\0') o->default_str(f.fallback);
+    o->group(group);
+    options.emplace_back(f.name, o);
+  };
+  for (const auto& f : spec->flags) add(f, "Options");
+  for (const auto* g : spec->groups)
+    for (const auto& f : *g)
+      add(f, g == &kWaveFlags ? "Wave" : g == &kPrecisionFlags ? "Precision" : "Solver controls");
+  if (!spec->footer.empty()) sub->footer(spec->footer);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << sub->help();
+    a.help = true;
+    return a;
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    if (const auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
+    throw InputError(a.command + ": " + what);
+  }
+  for (const auto& [name, o] : options)
+    if (o->count() > 0) a.flags[name] = values[name];
   return a;
 }
 
@@ -176,10 +321,10 @@ const std::string& need(const Args& a, const std::string& name) {
 
 int parse_int(const std::string& text, const std::string& what, long lo, long hi) {
   if (!std::regex_match(text, std::regex("[+-]?[0-9]{1,9}")))
-    throw InputError(what + " = '" + text + "': expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+    throw InputError(what + " = '" + detail::visible(text) + "': expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
   const long v = std::stol(text);
   if (v < lo || v > hi)
-    throw InputError(what + " = " + text + ": expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+    throw InputError(what + " = " + detail::visible(text) + ": expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
   return static_cast<int>(v);
 }
 
@@ -189,7 +334,7 @@ Precision parse_precision(const Args& a) {
   if (has_type) p.type = parse_number_type(a.flags.at("type"));
   if (has_digits) {
     if (has_type && p.type != NumberType::mpfr)
-      throw InputError("--digits goes with mpfr only: --type " + a.flags.at("type") + " has fixed precision");
+      throw InputError("--digits goes with mpfr only: --type " + detail::visible(a.flags.at("type")) + " has fixed precision");
     p.digits = parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits);
   }
   return p;
@@ -214,24 +359,27 @@ std::vector<std::string> split(const std::string& s, char sep) {
 std::vector<std::string> value_range(const std::string& spec, const std::string& flag, bool descending) {
   const bool log = spec.rfind("log:", 0) == 0;
   const auto parts = split(log ? spec.substr(4) : spec, ':');
-  if (parts.size() != 3) throw InputError(flag + " '" + spec + "': expected FROM:TO:N or log:FROM:TO:N");
+  if (parts.size() != 3) throw InputError(flag + " '" + detail::visible(spec) + "': expected FROM:TO:N or log:FROM:TO:N");
   check_decimal(parts[0], flag + " FROM");
   check_decimal(parts[1], flag + " TO");
   const int n = parse_int(parts[2], flag + " N", 1, 1000000);
   PrecisionScope scope(40);
   const mpfr from(parts[0]), to(parts[1]);
-  if (!descending && to < from) throw InputError(flag + " '" + spec + "': empty range, expected FROM <= TO");
-  if (n > 1 && from == to) throw InputError(flag + " '" + spec + "': empty range for N > 1, expected FROM != TO");
+  if (!descending && to < from) throw InputError(flag + " '" + detail::visible(spec) + "': empty range, expected FROM <= TO");
+  if (n > 1 && from == to) throw InputError(flag + " '" + detail::visible(spec) + "': empty range for N > 1, expected FROM != TO");
   if (log && !(from > 0 && to > 0))
-    throw InputError(flag + " '" + spec + "': a log range needs FROM > 0 and TO > 0");
+    throw InputError(flag + " '" + detail::visible(spec) + "': a log range needs FROM > 0 and TO > 0");
   std::vector<std::string> out;
   for (int i = 0; i < n; ++i) {
     const mpfr t = n == 1 ? mpfr(0) : mpfr(mpfr(i) / (n - 1));
     const mpfr v = i == n - 1 ? to : log ? mpfr(from * pow(to / from, t)) : mpfr(from + (to - from) * t);
     std::string str = format_significant(i == 0 ? from : v, 17);
-    if (str.find('.') != std::string::npos && str.find('e') == std::string::npos) {
-      while (str.back() == '0') str.pop_back();
-      if (str.back() == '.') str.pop_back();
+    const std::size_t e = std::min(str.find('e'), str.size());
+    if (str.find('.') < e) {  // trailing zeros of the mantissa dropped: 1.0000000000000000e-06 is 1e-06
+      std::size_t end = e;
+      while (str[end - 1] == '0') --end;
+      if (str[end - 1] == '.') --end;
+      str.erase(end, e - end);
     }
     out.push_back(str);
   }
@@ -250,7 +398,7 @@ Options parse_solver_options(const Args& a) {
     else if (m == "quadrature")
       o.area = AreaMethod::quadrature;
     else
-      throw InputError("--area '" + m + "': expected auto, exact or quadrature");
+      throw InputError("--area '" + detail::visible(m) + "': expected auto, exact or quadrature");
   }
   if (a.flags.count("max-iterations"))
     o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, 100000));
@@ -281,7 +429,7 @@ Format parse_format(const Args& a) {
   if (f == "text") return Format::text;
   if (f == "csv") return Format::csv;
   if (f == "json") return Format::json;
-  throw InputError("--format '" + f + "': expected text, csv or json");
+  throw InputError("--format '" + detail::visible(f) + "': expected text, csv or json");
 }
 
 std::string csv_field(const std::string& f) {
@@ -302,15 +450,27 @@ nlohmann::ordered_json json_record(const std::vector<std::string>& names, const 
   return j;
 }
 
+// The wave of --wave, its value column (--column) and, with --diagnostics, the normalisation a
+// user wave went through (model.md, user waveforms), on stderr so that stdout stays data.
+WaveSpec read_wave(const Args& a) {
+  WaveReadOptions options;
+  if (a.flags.count("column")) options.column = a.flags.at("column");
+  WaveSpec wave = parse_wave(need(a, "wave"), options);
+  if (switch_on(a, "diagnostics"))
+    for (const auto& [name, value] : describe_normalisation(wave, 17))
+      std::cerr << "normalisation: " << name << " = " << value << '\n';
+  return wave;
+}
+
 int run_mu_psi(const Args& a, Quantity q) {
-  const WaveSpec wave = parse_wave(need(a, "wave"));
+  const WaveSpec wave = read_wave(a);
   Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
   check_decimal(p.beta, "--beta");
   if (q == Quantity::mu) check_decimal(p.gamma, "--gamma");
   BatchOptions opt;
   opt.profile = parse_profile_flag(a);
   if (q == Quantity::psi && opt.profile.kind != ProfileKind::flat)
-    throw InputError("psi --profile " + a.flags.at("profile") +
+    throw InputError("psi --profile " + detail::visible(a.flags.at("profile")) +
                      ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
                      "so Eq. 13's separation does not exist (use mu)");
   opt.escalate = !switch_on(a, "no-escalate");
@@ -344,11 +504,11 @@ int run_mu_psi(const Args& a, Quantity q) {
 }
 
 int run_sweep(const Args& a) {
-  const WaveSpec wave = parse_wave(need(a, "wave"));
+  const WaveSpec wave = read_wave(a);
   const auto betas = value_range(need(a, "beta"), "--beta", false);
   // --quantity psi: Ψ_w(β) (Eq. 12), which has no γ.
   const std::string quantity = a.flags.count("quantity") ? a.flags.at("quantity") : "mu";
-  if (quantity != "mu" && quantity != "psi") throw InputError("--quantity '" + quantity + "': expected mu or psi");
+  if (quantity != "mu" && quantity != "psi") throw InputError("--quantity '" + detail::visible(quantity) + "': expected mu or psi");
   const Quantity q = quantity == "psi" ? Quantity::psi : Quantity::mu;
   std::vector<std::string> gammas;
   if (q == Quantity::psi) {
@@ -362,9 +522,9 @@ int run_sweep(const Args& a) {
   const Precision prec = parse_precision(a);
   const Format format = a.flags.count("format") ? parse_format(a) : Format::csv;
   if (format == Format::text) throw InputError("--format text: sweep writes csv (the default) or json");
-  std::vector<Point> points;
-  for (const auto& g : gammas)
-    for (const auto& b : betas) points.push_back({b, g});
+  // Points made on demand, γ-major as the rows (a 3000 × 3000 map holds no vector of points).
+  const std::size_t count = betas.size() * gammas.size();
+  const auto point = [&](std::size_t i) { return Point{betas[i % betas.size()], gammas[i / betas.size()]}; };
   BatchOptions opt;
   opt.profile = parse_profile_flag(a);
   opt.escalate = !switch_on(a, "no-escalate");
@@ -381,241 +541,163 @@ int run_sweep(const Args& a) {
   if (isatty(2))
     opt.progress = [&](std::size_t done) {
       const long long now = std::chrono::duration_cast<std::chrono::nanoseconds>(clock::now() - start).count();
-      const bool last = done == points.size();
+      const bool last = done == count;
       if (!last && now < next_draw_ns.load(std::memory_order_relaxed)) return;
       std::lock_guard<std::mutex> lock(m);
       if (done <= shown || (!last && now < next_draw_ns.load(std::memory_order_relaxed))) return;
       next_draw_ns.store(now + 100'000'000, std::memory_order_relaxed);
       shown = done;
       const double seconds = static_cast<double>(now) / 1e9;
-      const double left = seconds * static_cast<double>(points.size() - done) / static_cast<double>(done);
-      std::fprintf(stderr, "\rsweep: %zu/%zu (%.1f %%), %.0f s left   ", done, points.size(),
-                   100.0 * static_cast<double>(done) / static_cast<double>(points.size()), left);
+      const double left = seconds * static_cast<double>(count - done) / static_cast<double>(done);
+      std::fprintf(stderr, "\rsweep: %zu/%zu (%.1f %%), %.0f s left   ", done, count,
+                   100.0 * static_cast<double>(done) / static_cast<double>(count), left);
       if (last) std::fprintf(stderr, "\n");
     };
-  const auto values = evaluate(wave, q, points, prec, opt);
   const bool curved = opt.profile.kind != ProfileKind::flat;
   std::vector<std::string> names{"wave"};
   if (curved) names.push_back("profile");
   names.push_back("beta");
   if (q == Quantity::mu) names.push_back("gamma");
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
-  auto record = [&](std::size_t i) {
+  // Rows in their deterministic order as they complete; memory bounded whatever the count. The
+  // domain (β ≥ 0 and representable, contact at the smallest γ, a profile's extent at the largest)
+  // is monotone in β and γ, so the four corners decide it before any row is written.
+  if (count > 0) {
+    auto extreme = [](const std::vector<std::string>& v, bool largest) {
+      PrecisionScope scope(40);
+      std::size_t k = 0;
+      for (std::size_t i = 1; i < v.size(); ++i)
+        if (largest ? mpfr(v[i]) > mpfr(v[k]) : mpfr(v[i]) < mpfr(v[k])) k = i;
+      return v[k];
+    };
+    std::vector<Point> corners;
+    for (bool big_beta : {false, true})
+      for (bool big_gamma : {false, true})
+        corners.push_back({extreme(betas, big_beta), q == Quantity::mu ? extreme(gammas, big_gamma) : std::string()});
+    BatchOptions quiet = opt;
+    quiet.progress = nullptr;
+    evaluate(wave, q, corners, prec, quiet);
+  }
+  if (format == Format::json)
+    std::cout << "[";
+  else
+    write_csv_row(names);
+  evaluate_stream(wave, q, count, point, prec, opt, [&](std::size_t i, const std::string& value) {
+    const Point pt = point(i);
     std::vector<std::string> r{wave.name};
     if (curved) r.push_back(opt.profile.name);
-    r.push_back(points[i].beta);
-    if (q == Quantity::mu) r.push_back(points[i].gamma);
-    r.push_back(values[i]);
-    return r;
-  };
-  if (format == Format::json) {
-    std::cout << "[";
-    for (std::size_t i = 0; i < points.size(); ++i) std::cout << (i ? ",\n " : "\n ") << json_record(names, record(i)).dump();
-    std::cout << "\n]\n";
-  } else {
-    write_csv_row(names);
-    for (std::size_t i = 0; i < points.size(); ++i) write_csv_row(record(i));
-  }
+    r.push_back(pt.beta);
+    if (q == Quantity::mu) r.push_back(pt.gamma);
+    r.push_back(value);
+    if (format == Format::json)
+      std::cout << (i ? ",\n " : "\n ") << json_record(names, r).dump();
+    else
+      write_csv_row(r);
+  });
+  if (format == Format::json) std::cout << (count ? "\n]\n" : "]\n");
   return 0;
 }
 
-int run_physical(const Args& a) {
-  const WaveSpec wave = parse_wave(need(a, "wave"));
-  const Precision prec = parse_precision(a);
-  const Format format = parse_format(a);
-  const int digits = output_digits(prec);
-  PrecisionScope scope(static_cast<unsigned>(digits + 20));
-  auto get = [&](const char* name) { return parse_real<mpfr>(need(a, name), std::string("--") + name); };
-  auto opt = [&](const char* name) {
-    return a.flags.count(name) ? parse_real<mpfr>(a.flags.at(name), std::string("--") + name) : mpfr(0);
-  };
-  auto positive = [&](const char* name) {
-    const mpfr v = get(name);
-    if (!(v > 0)) throw InputError(std::string("--") + name + " = " + a.flags.at(name) + ": expected a value > 0");
-    return v;
-  };
-  // The indenter (model.md MDR): which geometry flags it takes, its profile and length unit L.
-  const std::string shape = a.flags.count("shape") ? a.flags.at("shape") : "flat";
-  const std::map<std::string, std::set<std::string>> geometry{
-      {"flat", {"radius"}}, {"sphere", {"R"}}, {"cone", {"half-angle"}}, {"wearflat", {"R", "flat-radius"}}, {"profile", {}}};
-  const std::string kind = shape.rfind("profile:", 0) == 0 ? "profile" : shape;
-  if (!geometry.count(kind))
-    throw InputError("--shape '" + shape + "': expected flat, sphere, cone, wearflat or profile:FILE");
-  for (const char* g : {"radius", "R", "half-angle", "flat-radius"})
-    if (a.flags.count(g) && !geometry.at(kind).count(g))
-      throw InputError(std::string("--") + g + " does not apply to --shape " + shape);
-  const mpfr A = positive("A");
-  // The mean indentation, or the mean normal load an experimenter sets (then γ solves ⟨F_N⟩(γ) = F_N).
-  const bool by_load = a.flags.count("F-N") > 0;
-  if (by_load && a.flags.count("u-mean")) throw InputError("--u-mean and --F-N both given: expected one of them");
-  if (!by_load && !a.flags.count("u-mean")) throw InputError("missing --u-mean (mean indentation) or --F-N (mean normal load) for 'physical'");
-  // Checked here with the values as typed (physical_groups checks them again, for library users).
-  auto poisson = [&](const char* name) {
-    const mpfr v = get(name);
-    if (!(v > -1 && v <= mpfr("0.5")))
-      throw InputError(std::string("--") + name + " = " + a.flags.at(name) + ": expected -1 < nu <= 0.5");
-    return v;
-  };
-  PhysicalInput<mpfr> in{positive("E1"), poisson("nu1"), positive("E2"), poisson("nu2"), opt("G1"), opt("G2"),
-                         kind == "flat" ? positive("radius") : mpfr(0), positive("v0"), positive("f"), A,
-                         by_load ? mpfr(0) : get("u-mean"), positive("mu0")};
-  if (a.flags.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + a.flags.at("G1") + ": expected a value > 0");
-  if (a.flags.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + a.flags.at("G2") + ": expected a value > 0");
-  auto g = physical_groups(in);
+// `physical`'s inputs as typed, by flag name (commands.hpp), and its controls.
+PhysicalOutputs physical_record(const Args& a, const WaveSpec& wave) {
   BatchOptions options;
-  mpfr length = 1;
-  std::string lambda;
-  if (kind == "sphere") {
-    options.profile = parse_profile("sphere");
-    length = sphere_length(positive("R"), A);
-  } else if (kind == "cone") {
-    const mpfr theta = positive("half-angle");
-    if (!(theta < 90)) throw InputError("--half-angle = " + a.flags.at("half-angle") + ": expected degrees in (0, 90)");
-    options.profile = parse_profile("cone");
-    length = cone_length(theta, A);
-  } else if (kind == "wearflat") {
-    const mpfr R = positive("R"), b = positive("flat-radius");
-    lambda = format_significant(mpfr(b * b / (R * A)), digits + 15);
-    options.profile = parse_profile("wearflat:" + lambda);
-    length = b;
-  } else if (kind == "profile") {
-    options.profile = parse_profile(shape);
-    options.profile.height_unit = a.flags.at("A");  // heights in metres, the library's in units of A
-  }
   options.escalate = !switch_on(a, "no-escalate");
   options.solver = parse_solver_options(a);
-  // ⟨F_N⟩(γ) = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope: N does
-  // not depend on β. Also the largest contact radius (curved) in units of L.
-  const auto w = make_waveform<mpfr>(wave);
-  const auto p = kind == "flat" ? nullptr : make_profile<mpfr>(options.profile);
-  auto load = [&](const mpfr& gam, mpfr* edge_out) {
-    if (!(gam + w->maximum() > 0)) return mpfr(0);  // no contact, no load
-    mpfr normal;
-    if (kind == "flat") {
-      normal = solve(*w, g.beta, gam, options.solver).normal_area;
+  std::map<std::string, std::string> inputs;
+  for (const char* name : {"E1", "nu1", "E2", "nu2", "G1", "G2", "v0", "f", "A", "u-mean", "F-N", "mu0", "shape", "radius",
+                           "R", "half-angle", "flat-radius"})
+    if (a.flags.count(name)) inputs[name] = a.flags.at(name);
+  return physical_point(wave, inputs, parse_precision(a), options);
+}
+
+// Names and values of output records, for CSV and JSON.
+std::vector<std::string> names_of(const PhysicalOutputs& r) {
+  std::vector<std::string> out;
+  for (const auto& [name, value] : r) out.push_back(name);
+  return out;
+}
+std::vector<std::string> values_of(const PhysicalOutputs& r) {
+  std::vector<std::string> out;
+  for (const auto& [name, value] : r) out.push_back(value);
+  return out;
+}
+
+// `physical` at one point, or over a range of one input (--v0, --A, --f, --F-N or --u-mean as
+// FROM:TO:N or log:FROM:TO:N): one row per value, streamed as it is computed.
+int run_physical(const Args& a) {
+  const WaveSpec wave = read_wave(a);
+  std::string swept;
+  for (const char* name : {"v0", "A", "f", "F-N", "u-mean"})
+    if (a.flags.count(name) && a.flags.at(name).find(':') != std::string::npos) {
+      if (!swept.empty())
+        throw InputError("--" + swept + " and --" + name + " are both ranges: expected one swept input at a time");
+      swept = name;
+    }
+  if (swept.empty()) {
+    const Format format = parse_format(a);
+    const PhysicalOutputs rec = physical_record(a, wave);
+    if (format == Format::csv) {
+      write_csv_row(names_of(rec));
+      write_csv_row(values_of(rec));
+    } else if (format == Format::json) {
+      std::cout << json_record(names_of(rec), values_of(rec)).dump(1) << '\n';
     } else {
-      const auto r = solve_curved(*w, *p, g.beta, gam, options.solver, mpfr(pow(mpfr(10), -digits - 5)));
-      normal = r.normal_integral;
-      if (edge_out) *edge_out = r.contact_radius;
+      for (const auto& [name, value] : rec) std::cout << name << " = " << value << '\n';
     }
-    return kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
-  };
-  if (by_load) {
-    const mpfr F_N = positive("F-N");
-    // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
-    mpfr lo = -w->maximum(), hi = lo + 1;
-    for (int k = 0; load(hi, nullptr) < F_N; ++k) {
-      if (k == 200) throw InputError("--F-N = " + a.flags.at("F-N") + ": expected a load the contact can carry");
-      lo = hi;
-      hi = lo + pow(mpfr(2), k + 1);
+    return 0;
+  }
+  const Format format = a.flags.count("format") ? parse_format(a) : Format::csv;
+  if (format == Format::text) throw InputError("--format text: a physical sweep writes csv (the default) or json");
+  // A range of u_mean may start below contact (gamma < -1 for the sine): such rows are errors, as at one point.
+  const auto range = value_range(a.flags.at(swept), "--" + swept, swept == "u-mean");
+  Args point = a;
+  for (std::size_t i = 0; i < range.size(); ++i) {
+    point.flags[swept] = range[i];
+    PhysicalOutputs rec = physical_record(point, wave);
+    rec.insert(rec.begin(), {swept, range[i]});  // the swept input leads each row, under its flag's name
+    if (format == Format::csv) {
+      if (i == 0) write_csv_row(names_of(rec));
+      write_csv_row(values_of(rec));
+    } else {
+      std::cout << (i ? ",\n " : "[\n ") << json_record(names_of(rec), values_of(rec)).dump();
     }
-    std::uintmax_t iterations = 400;
-    const auto bracket = boost::math::tools::toms748_solve(
-        [&](const mpfr& gam) { return mpfr(load(gam, nullptr) - F_N); }, lo, hi,
-        boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
-    if (iterations >= 400) throw SolverError("--F-N = " + a.flags.at("F-N") + ": the mean indentation did not converge");
-    g.gamma = (bracket.first + bracket.second) / 2;
+    std::cout.flush();
   }
-  const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
-  // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
-  Precision fine = prec;
-  if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
-  const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
-  const mpfr mu = mpfr(ratio_fine) * in.mu0;
-  mpfr edge;
-  const mpfr force = load(mpfr(gamma), &edge);
-  // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,
-  // the fractions of the period in contact and in stick.
-  mpfr beta_c, contact_fraction, stick_fraction;
-  if (kind == "flat") {
-    const Contact<mpfr> c = make_contact(*w, mpfr(gamma), options.solver);
-    const auto r = solve(c, mpfr(beta), options.solver);
-    beta_c = r.beta_c;
-    for (const auto& seg : c.segments())
-      if (seg.contact) contact_fraction += seg.v - seg.u;
-    for (const auto& st : r.stick_phases) stick_fraction += st.end - st.begin;
-  } else {
-    beta_c = make_contact(*w, mpfr(gamma), options.solver).beta_c();
-  }
-  std::vector<std::string> names, values;
-  auto field = [&](const char* name, const std::string& v) {
-    names.push_back(name);
-    values.push_back(v);
-  };
-  auto line = [&](const char* name, const mpfr& v) { field(name, format_significant(v, digits)); };
-  field("shape", kind == "profile" ? shape : kind);
-  line("E_star_Pa", g.E_star);
-  line("G_star_Pa", g.G_star);
-  if (kind == "flat") {
-    line("k_z_N_per_m", g.k_z);
-    line("k_x_N_per_m", g.k_x);
-  } else {
-    line("contact_radius_max_m", mpfr(length * edge));
-  }
-  if (!lambda.empty()) line("lambda", mpfr(lambda));
-  line("beta", g.beta);
-  line("gamma", g.gamma);
-  if (by_load) line("u_mean_m", mpfr(g.gamma * A));
-  field("mu_over_mu0", mu_ratio);
-  line("mu", mu);
-  line("F_N_mean_N", force);
-  line("F_x_mean_N", mpfr(mu * force));
-  using std::isfinite;
-  if (isfinite(beta_c))
-    line("beta_c", beta_c);
-  else
-    field("beta_c", "inf");  // an upward jump of n: stick at every beta
-  if (kind == "flat") {
-    line("contact_fraction", contact_fraction);
-    line("stick_fraction", stick_fraction);
-  }
-  if (format == Format::csv) {
-    write_csv_row(names);
-    write_csv_row(values);
-  } else if (format == Format::json) {
-    std::cout << json_record(names, values).dump(1) << '\n';
-  } else {
-    for (std::size_t i = 0; i < names.size(); ++i) std::cout << names[i] << " = " << values[i] << '\n';
-  }
+  if (format == Format::json) std::cout << "\n]\n";
   return 0;
 }
 
 // s(φ) and n(φ) over one period (the paper's Fig. 2): N equally spaced phases plus both ends of
 // every stick phase, so that a plot shows the kinks where they are.
 int run_trace(const Args& a) {
-  const WaveSpec wave = parse_wave(need(a, "wave"));
-  const std::string beta_text = need(a, "beta"), gamma_text = need(a, "gamma");
-  check_decimal(beta_text, "--beta");
-  check_decimal(gamma_text, "--gamma");
+  const WaveSpec wave = read_wave(a);
   const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits) : 17;
-  const int n_points = a.flags.count("points") ? parse_int(a.flags.at("points"), "--points", 2, 1000000) : 1000;
-  PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
-  const auto w = make_waveform<mpfr>(wave);
-  const mpfr beta = parse_real<mpfr>(beta_text, "--beta"), gamma = parse_real<mpfr>(gamma_text, "--gamma");
-  const Contact<mpfr> contact = make_contact(*w, gamma);
-  const auto r = solve(contact, beta);
-  // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32).
-  std::vector<mpfr> edges;
-  for (const auto& g : contact.segments())
-    if (g.contact) {
-      if (g.nu == 0) edges.push_back(g.u);
-      if (g.nv == 0) edges.push_back(g.v);
-    }
-  std::vector<mpfr> phis(edges);
-  for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
-  for (const auto& st : r.stick_phases)
-    for (const mpfr& x : {st.begin, st.end}) phis.push_back(x - floor(x));
-  std::sort(phis.begin(), phis.end());
-  phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+  const int points = a.flags.count("points") ? parse_int(a.flags.at("points"), "--points", 2, 1000000) : 1000;
+  const auto rows = trace_rows(wave, need(a, "beta"), need(a, "gamma"), points, digits);
   std::cout << "phi,n,s\n";
-  for (const mpfr& phi : phis) {
-    const bool edge = std::find(edges.begin(), edges.end(), phi) != edges.end();
-    const mpfr v = edge ? mpfr(0) : mpfr(gamma + (*w)(phi - floor(phi)));
-    const mpfr s = edge ? mpfr(0) : tangential_force(*w, r, beta, gamma, phi == 1 ? mpfr(0) : phi);
-    std::cout << format_significant(phi, digits) << ',' << format_significant(v > 0 ? v : mpfr(0), digits) << ','
-              << format_significant(s, digits) << '\n';
+  for (const auto& r : rows) std::cout << r[0] << ',' << r[1] << ',' << r[2] << '\n';
+  return 0;
+}
+
+// A samples file fitted by K harmonics (DFT for uniform phases, least squares for time stamps),
+// written as a fourier file that --wave fourier:FILE reads.
+int run_fit(const Args& a) {
+  const WaveSpec wave = read_wave(a);
+  const int harmonics = parse_int(need(a, "harmonics"), "--harmonics", 1, 10000);
+  const FourierFit fit = fit_fourier(wave, static_cast<unsigned>(harmonics));
+  const std::string text = fourier_file_text(fit, need(a, "wave"));
+  if (!a.flags.count("output")) {
+    std::cout << text;
+    return 0;
   }
+  const std::string& path = a.flags.at("output");
+  if (std::filesystem::is_directory(path))
+    throw InputError("--output '" + detail::visible(path) + "' is a directory: expected a file name");
+  std::ofstream out(path);
+  if (!(out << text) || !(out.close(), out))
+    throw InputError("--output '" + detail::visible(path) + "': cannot write the file");
+  std::cerr << "fit: K = " << harmonics << " harmonics (" << fit.method << "), rms residual "
+            << fit.rms_residual << ", written to " << path << '\n';
   return 0;
 }
 
@@ -670,7 +752,7 @@ void print_claims_json(const std::vector<ClaimCheck>& checks, int digits) {
 int run_verify(const Args& a) {
   const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", 10, 300) : 50;
   if (a.flags.count("format") && a.flags.at("format") != "json" && a.flags.at("format") != "text")
-    throw InputError("--format '" + a.flags.at("format") + "': expected text or json");
+    throw InputError("--format '" + detail::visible(a.flags.at("format")) + "': expected text or json");
   std::vector<ClaimCheck> checks;
   if (a.flags.count("claim"))
     checks.push_back(check_claim(a.flags.at("claim"), digits));
@@ -704,43 +786,36 @@ int run_verify(const Args& a) {
   return 0;
 }
 
+// A message on one line whatever a library put in it: control characters escaped (values quoted
+// in messages went through detail::visible() already, which also escapes non-ASCII bytes).
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (const char ch : message) {
+    const auto u = static_cast<unsigned char>(ch);
+    out += u < 0x20 || u == 0x7F ? detail::visible(std::string(1, ch)) : std::string(1, ch);
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::set<std::string> prec{"digits", "type", "no-escalate", "area", "max-iterations", "max-levels",
-                                   "quadrature-tolerance"};
-  auto with = [&](std::set<std::string> s) {
-    s.insert(prec.begin(), prec.end());
-    return s;
-  };
-  const std::map<std::string, std::set<std::string>> allowed{
-      {"mu", with({"wave", "beta", "gamma", "profile", "format"})},
-      {"psi", with({"wave", "beta", "profile", "format"})},
-      {"sweep", with({"wave", "beta", "gamma", "threads", "profile", "quantity", "format"})},
-      {"physical", with({"wave", "E1", "nu1", "E2", "nu2", "G1", "G2", "radius", "v0", "f", "A", "u-mean", "F-N", "mu0", "shape",
-                         "R", "flat-radius", "half-angle", "format"})},
-      {"verify", {"digits", "claim", "format"}},
-      {"trace", {"wave", "beta", "gamma", "points", "digits"}},
-      {"version", {}},
-  };
   try {
-    const Args a = parse_args(argc, argv, allowed);
-    if (a.help) {
-      std::cout << (a.command == "physical" ? kPhysicalUsage : kUsage);
-      return 0;
-    }
+    const Args a = parse_args(argc, argv);
+    if (a.help) return 0;
     if (a.command == "mu") return run_mu_psi(a, Quantity::mu);
     if (a.command == "psi") return run_mu_psi(a, Quantity::psi);
     if (a.command == "sweep") return run_sweep(a);
     if (a.command == "physical") return run_physical(a);
     if (a.command == "trace") return run_trace(a);
+    if (a.command == "fit") return run_fit(a);
     if (a.command == "version") return run_version();
     return run_verify(a);
   } catch (const InputError& e) {
-    std::cerr << "vibrofric: " << e.what() << '\n';
+    std::cerr << "vibrofric: " << one_line(e.what()) << '\n';
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "vibrofric: error: " << e.what() << '\n';
+    std::cerr << "vibrofric: error: " << one_line(e.what()) << '\n';
     return 1;
   }
 }

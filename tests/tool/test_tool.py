@@ -1234,6 +1234,166 @@ def failure_tests():
     test("failure-is-error: generous budgets give the exact-area value (control)", generous_budget_agrees)
 
 
+# --------------------------------------------------------------------------------------------
+# 6. the command line (CLI11), physical sweeps, fit, --column, --diagnostics
+# --------------------------------------------------------------------------------------------
+
+# Every flag of every command, as the README documents them; --help must list each one, with its
+# default where it has one (CLI11 prints 'PLACEHOLDER=default').
+WAVE = ["--wave", "--column", "--diagnostics"]
+PRECISION = ["--digits", "--type", "--no-escalate"]
+SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
+HELP_FLAGS = {
+    "mu": (["--beta", "--gamma", "--profile", "--format"] + WAVE + PRECISION + SOLVER,
+           {"--profile": "flat", "--format": "text", "--digits": "50", "--type": "mpfr", "--area": "auto",
+            "--max-levels": "15"}),
+    "psi": (["--beta", "--profile", "--format"] + WAVE + PRECISION + SOLVER, {"--format": "text"}),
+    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format"] + WAVE + PRECISION + SOLVER,
+              {"--quantity": "mu", "--threads": "0", "--format": "csv"}),
+    "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
+                  "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--format"]
+                 + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
+    "trace": (["--beta", "--gamma", "--points", "--digits"] + WAVE, {"--points": "1000", "--digits": "17"}),
+    "fit": (["--harmonics", "--output"] + WAVE, {}),
+    "verify": (["--digits", "--claim", "--format"], {"--digits": "50"}),
+    "version": ([], {}),
+}
+
+
+def cli_tests():
+    def help_every_command():
+        for command, (flags, defaults) in HELP_FLAGS.items():
+            rc, out, err = run([command, "--help"])
+            if rc != 0 or err or not out.startswith("usage: vibrofric " + command):
+                raise Fail("%s --help: exit %d, stdout %r, stderr %r" % (command, rc, out[:80], err))
+            listing = out[out.find("\nOptions:"):] if "\nOptions:" in out else ""  # after the synopsis
+            lines = listing.splitlines()
+            for flag in flags:
+                row = [l for l in lines if re.match(r"\s+" + re.escape(flag) + r"(\s|$)", l)]
+                if len(row) != 1:
+                    raise Fail("%s --help lists %s %d times: %r" % (command, flag, len(row), out))
+                if flag in defaults and not re.search(r"=" + re.escape(defaults[flag]) + r"(\s|$)", row[0]):
+                    raise Fail("%s --help: %s without its default %s: %r" % (command, flag, defaults[flag], row[0]))
+            listed = re.findall(r"^\s+(--[\w-]+)", listing, re.M)
+            extra = set(listed) - set(flags) - {"--help"}
+            if extra:
+                raise Fail("%s --help lists flags the command does not document: %r" % (command, extra))
+    test("--help for every command lists every flag, with its default", help_every_command)
+
+    mu = ["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5"]
+    bad("--beta --gamma 0 (a flag where a value belongs)", ["mu", "--wave", "sine", "--beta", "--gamma", "0"],
+        [], ["--beta needs a value"])
+    bad("--beta= (empty)", ["mu", "--wave", "sine", "--beta=", "--gamma", "0"], [], ["--beta needs a value", "empty"])
+    bad("--no-escalate followed by a value", mu + ["--type", "double", "--no-escalate", "true"], ["'true'"])
+    # Values are quoted as typed, invisible characters escaped.
+    bad("--type with a CR", mu + ["--type", "double\r"], [], ["'double\\r'"])
+    bad("--format with a no-break space", mu + ["--format", "csv\u00a0"], [], ["'csv\\xC2\\xA0'"])
+    bad("--wave with a BOM", ["mu", "--wave", "\ufeffsine", "--beta", "1", "--gamma", "0"], [], ["\\xEF\\xBB\\xBF"])
+    # Not the double nearest to it (-1.0500000000000000444), nor the mpfr rounding of a radius.
+    for t in ("double", "long-double", "cpp_bin_float_50"):
+        bad("no contact in %s quoted as typed" % t,
+            ["mu", "--wave", "sine", "--beta", "1", "--gamma=-1.05", "--type", t], ["-1.05"], ["contact"])
+    bad("physical negative radius quoted as typed", physical_args(**{"--radius": "-0.001"}), ["-0.001"], ["--radius"])
+    bad("--digits with a tab", mu + ["--digits", "5\t"], [], ["'5\\t'"])
+    bad("samples: a directory", ["mu", "--wave", "samples:" + TMP, "--beta", "1", "--gamma", "0"], [], ["directory"])
+    bad("fit --output a directory", ["fit", "--wave", "samples:" + write("fit-dir.txt", "0\n1\n0\n-1\n"),
+                                     "--harmonics", "1", "--output", TMP], [], ["directory"])
+    bad("physical: two ranges", physical_args(**{"--v0": "1e-4:2e-4:2", "--f": "100:200:2"}), [],
+        ["--v0", "--f", "one swept"])
+    bad("physical sweep --format text", physical_args(**{"--v0": "1e-4:2e-4:2", "--format": "text"}), [], ["text"])
+    # A sweep decides its domain before the first row: no row for a sweep that holds a bad point.
+    bad("sweep with a no-contact gamma last", ["sweep", "--wave", "sine", "--beta", "1:2:3", "--gamma", "0.5,-1.5"],
+        ["-1.5"], ["contact"])
+    bad("sweep with beta < 0 last", ["sweep", "--wave", "sine", "--beta", "2:-1:4", "--gamma", "0.5"], [], ["beta"])
+
+    def physical_sweep():
+        # Each row of a --v0 (and --F-N) sweep is the single-point output at that value; the swept
+        # value leads the row; beta is proportional to v0 (Eq. 5).
+        import csv as csvmod, io
+        for flag, spec, values in (("--v0", "1e-4:3e-4:3", ["0.0001", "0.0002", "0.0003"]),
+                                   ("--F-N", "log:1:100:3", ["1", "10", "100"])):
+            args = physical_args(**{"--digits": "20"})
+            if flag == "--F-N":
+                args = replace_flag(args, "--u-mean", "--F-N", spec)
+            else:
+                args = replace_flag(args, flag, flag, spec)
+            rows = list(csvmod.reader(io.StringIO(ok_run(args))))
+            if rows[0][0] != flag[2:] or [r[0] for r in rows[1:]] != values:
+                raise Fail("physical sweep %s: %r" % (flag, rows))
+            for r in rows[1:]:
+                one = replace_flag(args, flag, flag, r[0])
+                pc = list(csvmod.reader(io.StringIO(ok_run(one + ["--format", "csv"]))))
+                if pc[0] != rows[0][1:] or pc[1] != r[1:]:
+                    raise Fail("physical sweep row %r differs from the single point %r" % (r, pc))
+            if flag == "--v0":
+                b = [F(r[rows[0].index("beta")]) for r in rows[1:]]
+                if abs(b[1] / b[0] - 2) > Fraction(1, 10 ** 18) or abs(b[2] / b[0] - 3) > Fraction(1, 10 ** 18):
+                    raise Fail("physical --v0 sweep: beta not proportional to v0: %r" % b)
+        js = json.loads(ok_run(physical_args(**{"--A": "1e-6:2e-6:2", "--format": "json"})))
+        if [d["A"] for d in js] != ["1e-06", "2e-06"]:
+            raise Fail("physical --A sweep as json: %r" % js)
+    test("physical: one input swept (--v0, --F-N, --A), each row the single-point output", physical_sweep)
+
+    def fit_sine():
+        # 64 uniform samples of 3 + 2 sin(2 pi phi) - 0.5 cos(4 pi phi): the DFT gives these coefficients
+        # to rounding (bound: 64 terms of size <= 3, 1e-14); a fit of the pure sine's samples is the sine
+        # wave: the same mu as the catalogue's closed form evaluated by the solver (Eq. 15), to 1e-13.
+        ys = [3 + 2 * math.sin(2 * math.pi * j / 64) - 0.5 * math.cos(4 * math.pi * j / 64) for j in range(64)]
+        path = write("fit-in.txt", "\n".join(repr(y) for y in ys) + "\n")
+        out = ok_run(["fit", "--wave", "samples:" + path, "--harmonics", "3"])
+        coef = {}
+        for line in out.splitlines():
+            fields = line.split()
+            if len(fields) == 3 and fields[0].isdigit():  # not a comment, not the header 'k a_k b_k'
+                coef[int(fields[0])] = (float(fields[1]), float(fields[2]))
+        want = {1: (0, 2), 2: (-0.5, 0), 3: (0, 0)}
+        for k, (a, b) in want.items():
+            if k not in coef or abs(coef[k][0] - a) > 1e-14 or abs(coef[k][1] - b) > 1e-14:
+                raise Fail("fit: harmonic %d is %r, expected %r; file %r" % (k, coef.get(k), (a, b), out))
+        sine = write("fit-sine.txt", "\n".join(repr(math.sin(2 * math.pi * j / 64)) for j in range(64)) + "\n")
+        fitted = os.path.join(TMP, "fit-sine.fourier")
+        rc, o, e = run(["fit", "--wave", "samples:" + sine, "--harmonics", "2", "--output", fitted])
+        if rc != 0 or o or "rms residual" not in e:
+            raise Fail("fit --output: exit %d, stdout %r, stderr %r" % (rc, o, e))
+        for g in ("0.5", "-0.3"):
+            got = Decimal(ok_run(["mu", "--wave", "fourier:" + fitted, "--beta", "2", "--gamma", g, "--digits", "20"]))
+            ref = Decimal(ok_run(["mu", "--wave", "sine", "--beta", "2", "--gamma", g, "--digits", "20"]))
+            if abs(got - ref) > Decimal("1e-13"):
+                raise Fail("mu of the fitted sine %s, of the sine %s (gamma %s)" % (got, ref, g))
+    test("fit: DFT coefficients of a trigonometric polynomial; the fitted sine is the sine", fit_sine)
+    bad("fit: 2K >= samples", ["fit", "--wave", "samples:" + write("fit-4.txt", "0\n1\n0\n-1\n"), "--harmonics", "2"],
+        ["2"], ["harmonics"])
+    bad("fit: a catalogue wave", ["fit", "--wave", "sine", "--harmonics", "2"], ["sine"], ["samples"])
+
+    def column_and_diagnostics():
+        # A three-column file with a time column: --column picks the value column by name or index,
+        # and gives the two-column file's value; --diagnostics shows the normalisation on stderr:
+        # y = 1, 3, 2, 0 (uniform stamps 0..4 s): mean 1.5, min 0, max 3, scale 2/3, period 4.
+        three = write("three.csv", "time,x,y\n0,5,1\n1,6,3\n2,7,2\n3,4,0\n4,5,1\n")
+        two = write("two.csv", "time,y\n0,1\n1,3\n2,2\n3,0\n4,1\n")
+        ref = ok_run(["mu", "--wave", "samples:" + two, "--beta", "1", "--gamma", "0.2", "--digits", "25"])
+        for col in ("y", "3"):
+            got = ok_run(["mu", "--wave", "samples:" + three, "--column", col, "--beta", "1", "--gamma", "0.2",
+                          "--digits", "25"])
+            if got != ref:
+                raise Fail("--column %s: %r, the two-column file %r" % (col, got, ref))
+        rc, out, err = run(["mu", "--wave", "samples:" + two, "--diagnostics", "--beta", "1", "--gamma", "0.2",
+                            "--digits", "25"])
+        if rc != 0 or out != ref:
+            raise Fail("--diagnostics changed the output: %r, %r" % (out, err))
+        diag = dict(re.findall(r"normalisation: (\S+) = (.*)", err))
+        checks = {"raw_mean": Fraction(3, 2), "raw_min": 0, "raw_max": 3, "scale": Fraction(3, 2), "factor": Fraction(2, 3),
+                  "period": 4}
+        for name, want in checks.items():
+            if name not in diag or abs(F(diag[name].split()[0]) - want) > Fraction(1, 10 ** 15):
+                raise Fail("--diagnostics %s = %r, expected %s; stderr %r" % (name, diag.get(name), want, err))
+    test("--column by name and index; --diagnostics prints the normalisation on stderr", column_and_diagnostics)
+    bad("--column unknown name", ["mu", "--wave", "samples:" + write("three-b.csv", "time,x,y\n0,5,1\n1,6,3\n2,7,2\n3,5,1\n"),
+                                  "--column", "z", "--beta", "1", "--gamma", "0"], ["'z'"], ["column"])
+    bad("--column on a catalogue wave", mu + ["--column", "2"], [], ["column"])
+
+
+
 def main():
     t0 = time.time()
     bad_input_tests()
@@ -1242,6 +1402,7 @@ def main():
     physical_tests()
     double_accuracy_tests()
     failure_tests()
+    cli_tests()
     print("# %.1f s" % (time.time() - t0))
     print("%d passed, %d failed" % (passed, failed))
     return 1 if failed else 0

@@ -81,7 +81,7 @@ template <class Real>
 class PowerProfile final : public Profile<Real> {
  public:
   PowerProfile(const Real& n, std::string name) : Profile<Real>(std::move(name), ProfileKind::power), n_(n) {
-    if (!(n >= 1)) throw InputError("profile power:N needs N ≥ 1 (got " + detail::short_str(n) + ")");
+    if (!(n >= 1)) throw InputError("profile power:N needs N >= 1 (got " + detail::short_str(n) + ")");
   }
   const Real& exponent() const { return n_; }
   Real sigma_at_x(const Real& x) const override {

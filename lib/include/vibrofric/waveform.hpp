@@ -379,7 +379,7 @@ class Power final : public Waveform<Real> {
   explicit Power(const Real& p, std::string name)
       : Waveform<Real>(std::move(name)), p_(p), pd_(static_cast<double>(p)) {
     if (!(p >= 1))
-      throw InputError("power:p needs p ≥ 1 (got " + detail::short_str(p) + ")");
+      throw InputError("power:p needs p >= 1 (got " + detail::short_str(p) + ")");
     const Real q = Real(1) / 4;
     this->set_pieces({Real(0), q, 2 * q, 3 * q});
   }
