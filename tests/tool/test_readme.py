@@ -6,7 +6,8 @@ An example is a line `$ vibrofric ARGS` in a fenced block (continued by a traili
 followed by its output up to the next `$ ` line or the end of the block. A block that ends in `…`
 shows the beginning of the output only: those lines must be the output's first lines. Output
 that starts with `vibrofric: ` is a bad-input message: it is stderr, stdout is empty and the exit
-status is 2. Usage:
+status is 2. A command ending in `2>&1` shows stderr and stdout together. Examples run in the
+repository's root (README paths such as tests/tool/data/rig.csv). Usage:
 test_readme.py TOOL [README]."""
 import os
 import re
@@ -69,10 +70,15 @@ def main():
     found = examples(open(readme, encoding="utf-8").read())
     failures = 0
     for line, args, expected, complete in found:
-        r = subprocess.run([tool] + args, capture_output=True, text=True, timeout=600)
+        # `2>&1` at the end shows stderr with stdout (e.g. --diagnostics): one pipe for both.
+        merged = args[-1:] == ["2>&1"]
+        if merged:
+            args = args[:-1]
+        r = subprocess.run([tool] + args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT if merged else subprocess.PIPE,
+                           text=True, timeout=600)
         # An example of bad input shows the message (stderr) and stands for exit status 2.
         error = bool(expected) and expected[0].startswith("vibrofric: ")
-        got = (r.stderr if error else r.stdout).splitlines()
+        got = (r.stderr if error and not merged else r.stdout).splitlines()
         shown = got if complete else got[:len(expected)]
         if r.returncode != (2 if error else 0) or shown != expected or (error and r.stdout):
             failures += 1
@@ -82,7 +88,7 @@ def main():
                 have = shown[k] if k < len(shown) else "<nothing>"
                 if want != have:
                     print("  line %d: README %r\n          tool   %r" % (k + 1, want, have))
-            if r.stderr and not error:
+            if r.stderr and not error and not merged:
                 print("  stderr: " + r.stderr.strip())
         else:
             print("ok   README.md:%d: vibrofric %s" % (line, " ".join(args)))
