@@ -650,10 +650,15 @@ int run_physical(const Args& a) {
   if (format == Format::text) throw InputError("--format text: a physical sweep writes csv (the default) or json");
   // A range of u_mean may start below contact (gamma < -1 for the sine): such rows are errors, as at one point.
   const auto range = value_range(a.flags.at(swept), "--" + swept, swept == "u-mean");
+  // Every input's domain is monotone along a range: its two ends decide it before the first row.
   Args point = a;
-  for (std::size_t i = 0; i < range.size(); ++i) {
+  auto at = [&](std::size_t i) {
     point.flags[swept] = range[i];
-    PhysicalOutputs rec = physical_record(point, wave);
+    return physical_record(point, wave);
+  };
+  const PhysicalOutputs first = at(0), last = at(range.size() - 1);
+  for (std::size_t i = 0; i < range.size(); ++i) {
+    PhysicalOutputs rec = i == 0 ? first : i + 1 == range.size() ? last : at(i);
     rec.insert(rec.begin(), {swept, range[i]});  // the swept input leads each row, under its flag's name
     if (format == Format::csv) {
       if (i == 0) write_csv_row(names_of(rec));

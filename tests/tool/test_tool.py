@@ -1300,6 +1300,7 @@ def cli_tests():
                                      "--harmonics", "1", "--output", TMP], [], ["directory"])
     bad("physical: two ranges", physical_args(**{"--v0": "1e-4:2e-4:2", "--f": "100:200:2"}), [],
         ["--v0", "--f", "one swept"])
+    bad("physical sweep into no contact: no row", physical_args(**{"--u-mean": "5e-7:-2e-5:3"}), [], ["contact"])
     bad("physical sweep --format text", physical_args(**{"--v0": "1e-4:2e-4:2", "--format": "text"}), [], ["text"])
     # A sweep decides its domain before the first row: no row for a sweep that holds a bad point.
     bad("sweep with a no-contact gamma last", ["sweep", "--wave", "sine", "--beta", "1:2:3", "--gamma", "0.5,-1.5"],
