@@ -7,18 +7,24 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <charconv>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <vector>
 
 #include "vibrofric/arrays.hpp"
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/claims.hpp"
+#include "vibrofric/commands.hpp"
 #include "vibrofric/errors.hpp"
 #include "vibrofric/evaluate.hpp"
+#include "vibrofric/fit.hpp"
 #include "vibrofric/profile.hpp"
 
 namespace py = pybind11;
@@ -27,9 +33,13 @@ using namespace vibrofric;
 
 namespace {
 
-// A wave or profile built from arrays (vibrofric.samples, vibrofric.fourier, vibrofric.profile).
+// A wave (vibrofric.wave, samples, fourier, fit) or a profile built from arrays (vibrofric.profile).
+// A fitted wave keeps its fit (coefficients as written, method, residuals) and the name of what
+// was fitted, for fourier_text().
 struct PyWave {
   WaveSpec spec;
+  std::shared_ptr<const FourierFit> fit;
+  std::string fitted;
 };
 struct PyProfile {
   ProfileSpec spec;
@@ -162,7 +172,210 @@ Real read_decimal(const std::string& s) {
   return x;
 }
 
-// Values of `quantity` at the broadcast of beta and gamma (gamma None for psi).
+// How values come back: float64 and numpy.longdouble for the hardware types (from_chars: the
+// nearest value of the library's round-trip text), otherwise mpmath.mpf (created at the printed
+// digits + 3) when mpmath is importable, else the library's decimal strings; strings=True gives the
+// strings for every type.
+enum class Form { float64, float80, mpf, text };
+
+Form result_form(const Precision& p, bool strings) {
+  if (strings) return Form::text;
+  if (p.type == NumberType::float64) return Form::float64;
+  if (p.type == NumberType::float80) return Form::float80;
+  try {
+    py::module_::import("mpmath");
+    return Form::mpf;
+  } catch (const py::error_already_set&) {
+    return Form::text;
+  }
+}
+
+// Python objects for the library's decimal texts in one Form; for mpf, mpmath's working precision
+// while this lives. Constructed, used and destroyed with the GIL held.
+class Converter {
+ public:
+  Converter(Form form, const Precision& p) : form_(form) {
+    if (form != Form::mpf) return;
+    const py::module_ mpmath = py::module_::import("mpmath");
+    mpf_ = mpmath.attr("mpf");
+    context_ = mpmath.attr("workdps")(output_digits(p) + 3);
+    context_.attr("__enter__")();
+  }
+  ~Converter() {
+    if (!context_) return;
+    try {
+      context_.attr("__exit__")(py::none(), py::none(), py::none());
+    } catch (const py::error_already_set&) {  // a destructor cannot throw; mpmath's __exit__ does not fail
+    }
+  }
+  Converter(const Converter&) = delete;
+  Converter& operator=(const Converter&) = delete;
+
+  Form form() const { return form_; }
+
+  py::object operator()(const std::string& s) const {
+    switch (form_) {
+      case Form::float64: return py::float_(read_decimal<double>(s));
+      case Form::float80: {
+        py::array_t<long double> one(1);
+        one.mutable_data()[0] = read_decimal<long double>(s);
+        return one[py::int_(0)];
+      }
+      case Form::mpf: return mpf_(s);
+      case Form::text: break;
+    }
+    return py::str(s);
+  }
+
+ private:
+  Form form_;
+  py::object mpf_, context_;
+};
+
+// One argument of a batch (beta or gamma) as numpy gives it, before broadcasting: its values in C
+// order, read by index as the decimal text a file would hold (decimal_text for floats, exact
+// integers, strings as given). text() reads only C++ memory: the worker threads call it without
+// the GIL. Texts are made ahead (on the calling thread, one per element of the argument, not of
+// the broadcast) only for strings and Python objects.
+class Column {
+ public:
+  Column(const py::array& a, const std::string& what) {
+    for (py::ssize_t k = 0; k < a.ndim(); ++k) shape_.push_back(static_cast<std::size_t>(a.shape(k)));
+    const char kind = a.dtype().kind();
+    if (kind == 'f') {
+      const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+      holder_ = d;
+      reals_ = d.data();
+    } else if (kind == 'u' && a.dtype().itemsize() == 8) {
+      const auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+      holder_ = u;
+      unsigneds_ = u.data();
+    } else if (kind == 'i' || kind == 'u') {
+      const auto d = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+      holder_ = d;
+      integers_ = d.data();
+    } else if (kind == 'U' || kind == 'S' || kind == 'O') {
+      const py::array flat = py::module_::import("numpy").attr("ravel")(a.attr("astype")("object"));
+      for (const auto& x : flat) texts_.push_back(scalar_text(x, what));
+    } else {
+      throw py::type_error(what + " of dtype " + py::str(a.dtype()).cast<std::string>() +
+                           ": expected real numbers or decimal strings");
+    }
+  }
+  const std::vector<std::size_t>& shape() const { return shape_; }
+  std::string text(std::size_t j) const {
+    if (reals_) return decimal_text(reals_[j]);
+    if (integers_) return std::to_string(integers_[j]);
+    if (unsigneds_) return std::to_string(unsigneds_[j]);
+    return texts_[j];
+  }
+
+ private:
+  std::vector<std::size_t> shape_;
+  py::array holder_;  // keeps the converted data alive
+  const double* reals_ = nullptr;
+  const std::int64_t* integers_ = nullptr;
+  const std::uint64_t* unsigneds_ = nullptr;
+  std::vector<std::string> texts_;
+};
+
+// Point i of the broadcast (C order over the result's shape) to the flat indices of beta and gamma
+// in their own arrays: numpy's broadcasting rules (shapes aligned at the right, size 1 repeats).
+class BroadcastIndex {
+ public:
+  BroadcastIndex(const std::vector<std::size_t>& shape, const std::vector<std::size_t>& a,
+                 const std::vector<std::size_t>& b)
+      : shape_(shape), strides_(shape.size(), {0, 0}) {
+    place(a, 0);
+    place(b, 1);
+  }
+  std::array<std::size_t, 2> operator()(std::size_t i) const {
+    std::array<std::size_t, 2> at{0, 0};
+    for (std::size_t k = shape_.size(); k-- > 0;) {
+      const std::size_t index = i % shape_[k];
+      i /= shape_[k];
+      at[0] += index * strides_[k][0];
+      at[1] += index * strides_[k][1];
+    }
+    return at;
+  }
+
+ private:
+  void place(const std::vector<std::size_t>& s, int which) {
+    std::size_t stride = 1;
+    for (std::size_t k = s.size(); k-- > 0;) {
+      const std::size_t out = shape_.size() - s.size() + k;
+      strides_[out][which] = s[k] == 1 ? 0 : stride;
+      stride *= s[k];
+    }
+  }
+  std::vector<std::size_t> shape_;
+  std::vector<std::array<std::size_t, 2>> strides_;
+};
+
+// The result array of a batch, filled by evaluate_stream's sink (index order, calling thread) while
+// the GIL is released: float64 and long double straight into the array; Python objects (mpf, str)
+// gathered a few hundred at a time and stored under the GIL. Nothing holds all the values' texts.
+class Output {
+ public:
+  Output(const Converter& convert, std::size_t n) : convert_(convert) {
+    switch (convert.form()) {
+      case Form::float64: {
+        py::array_t<double> a(static_cast<py::ssize_t>(n));
+        doubles_ = a.mutable_data();
+        array_ = a;
+        break;
+      }
+      case Form::float80: {
+        py::array_t<long double> a(static_cast<py::ssize_t>(n));
+        long_doubles_ = a.mutable_data();
+        array_ = a;
+        break;
+      }
+      default: {
+        array_ = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");  // None each
+        objects_ = static_cast<PyObject**>(array_.mutable_data());
+        pending_.reserve(batch);
+      }
+    }
+  }
+  // Without the GIL.
+  void put(std::size_t i, const std::string& value) {
+    if (doubles_) {
+      doubles_[i] = read_decimal<double>(value);
+    } else if (long_doubles_) {
+      long_doubles_[i] = read_decimal<long double>(value);
+    } else {
+      pending_.emplace_back(i, value);
+      if (pending_.size() == batch) flush();
+    }
+  }
+  // Stores the gathered objects, taking the GIL for it.
+  void flush() {
+    if (pending_.empty()) return;
+    py::gil_scoped_acquire acquire;
+    for (const auto& [i, value] : pending_) {
+      PyObject* old = objects_[i];
+      objects_[i] = convert_(value).release().ptr();
+      Py_XDECREF(old);
+    }
+    pending_.clear();
+  }
+  const py::array& array() const { return array_; }
+
+ private:
+  static constexpr std::size_t batch = 512;
+  const Converter& convert_;
+  py::array array_;
+  double* doubles_ = nullptr;
+  long double* long_doubles_ = nullptr;
+  PyObject** objects_ = nullptr;
+  std::vector<std::pair<std::size_t, std::string>> pending_;
+};
+
+// Values of `quantity` at the broadcast of beta and gamma (gamma None for psi): one evaluate_stream
+// over the points, each made from the arguments by index on the worker threads, each value stored
+// into the result as it arrives, the GIL released throughout.
 py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta, const py::object& gamma,
                               const Evaluation& e) {
   const py::module_ np = py::module_::import("numpy");
@@ -178,74 +391,42 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
     options.solver.max_root_iterations = static_cast<std::uintmax_t>(*e.max_iterations);
   }
 
-  const py::array b = np.attr("asarray")(beta);
   const bool with_gamma = e.quantity == Quantity::mu;
-  py::array g = with_gamma ? py::array(np.attr("asarray")(gamma)) : py::array(np.attr("asarray")(0.0));
-  const py::tuple both = np.attr("broadcast_arrays")(b, g);  // ValueError if the shapes do not broadcast
-  const py::array bb = both[0], gb = both[1];
-  const py::tuple shape = bb.attr("shape");
-  const bool scalar = bb.ndim() == 0;
-
-  std::vector<std::string> betas = column_texts(np.attr("ascontiguousarray")(bb), "beta");
-  std::vector<std::string> gammas = with_gamma ? column_texts(np.attr("ascontiguousarray")(gb), "gamma")
-                                               : std::vector<std::string>();
-  std::vector<Point> points(betas.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    points[i].beta = std::move(betas[i]);
-    if (with_gamma) points[i].gamma = std::move(gammas[i]);
+  const py::array b = np.attr("asarray")(beta);
+  const py::array g = np.attr("asarray")(with_gamma ? gamma : py::object(py::float_(0.0)));
+  const py::tuple shape = np.attr("broadcast")(b, g).attr("shape");  // ValueError if they do not broadcast
+  std::vector<std::size_t> dims;
+  std::size_t n = 1;
+  for (const auto& d : shape) {
+    dims.push_back(d.cast<std::size_t>());
+    n *= dims.back();
   }
+  const Column betas(b, "beta");
+  const Column gammas(g, "gamma");  // psi: 0.0, never read
+  const BroadcastIndex index(dims, betas.shape(), gammas.shape());
 
-  std::vector<std::string> values;
+  const Converter convert(result_form(precision, e.strings), precision);
+  Output out(convert, n);
   {
     py::gil_scoped_release release;
-    values = evaluate(wave, e.quantity, points, precision, options);
+    evaluate_stream(
+        wave, e.quantity, n,
+        [&](std::size_t i) {
+          const auto at = index(i);
+          Point p;
+          p.beta = betas.text(at[0]);
+          if (with_gamma) p.gamma = gammas.text(at[1]);
+          return p;
+        },
+        precision, options, [&](std::size_t i, const std::string& value) { out.put(i, value); });
+    out.flush();
   }
-
-  const std::size_t n = values.size();
-  const auto as_scalar_or_shaped = [&](py::array flat) -> py::object {
-    if (scalar) return flat[py::int_(0)];
-    return flat.attr("reshape")(shape);
-  };
-  if (!e.strings && precision.type == NumberType::float64) {
-    py::array_t<double> out(static_cast<py::ssize_t>(n));
-    double* p = out.mutable_data();
-    for (std::size_t i = 0; i < n; ++i) p[i] = read_decimal<double>(values[i]);
-    if (scalar) return py::float_(p[0]);
-    return out.attr("reshape")(shape);
+  const py::array& flat = out.array();
+  if (dims.empty()) {
+    if (convert.form() == Form::float64) return py::float_(static_cast<const double*>(flat.data())[0]);
+    return flat[py::int_(0)];
   }
-  if (!e.strings && precision.type == NumberType::float80) {
-    py::array_t<long double> out(static_cast<py::ssize_t>(n));
-    long double* p = out.mutable_data();
-    for (std::size_t i = 0; i < n; ++i) p[i] = read_decimal<long double>(values[i]);
-    return as_scalar_or_shaped(out);
-  }
-  // Decimal strings, or mpmath.mpf holding every digit when mpmath is importable.
-  py::object mpf, workdps;
-  if (!e.strings) {
-    try {
-      const py::module_ mpmath = py::module_::import("mpmath");
-      mpf = mpmath.attr("mpf");
-      workdps = mpmath.attr("workdps");
-    } catch (const py::error_already_set&) {
-      mpf = py::none();
-    }
-  }
-  py::array out = np.attr("empty")(n, "dtype"_a = "object");
-  auto set = [&](std::size_t i, py::object v) { out[py::int_(i)] = std::move(v); };
-  if (mpf && !mpf.is_none()) {
-    const py::object context = workdps(output_digits(precision) + 3);
-    context.attr("__enter__")();
-    try {
-      for (std::size_t i = 0; i < n; ++i) set(i, mpf(values[i]));
-    } catch (...) {
-      context.attr("__exit__")(py::none(), py::none(), py::none());
-      throw;
-    }
-    context.attr("__exit__")(py::none(), py::none(), py::none());
-  } else {
-    for (std::size_t i = 0; i < n; ++i) set(i, py::str(values[i]));
-  }
-  return as_scalar_or_shaped(out);
+  return flat.attr("reshape")(shape);
 }
 
 py::dict claim_dict(const ClaimCheck& c) {
@@ -298,7 +479,8 @@ the paper) for sliding velocity beta (Eq. 5) and mean indentation gamma = u/A (E
 periodic steady state; curved indenters (profile) by the method of dimensionality reduction.
 
 wave      a name -- 'sine' (harmonic), 'triangle', 'sawtooth-right', 'sawtooth-left', 'square',
-          'power:P', 'samples:FILE', 'fourier:FILE' -- or a Wave from samples() / fourier().
+          'power:P', 'samples:FILE', 'fourier:FILE' -- or a Wave from wave(), samples(), fourier()
+          or fit().
 beta      > 0; gamma: contact requires gamma + max w > 0 (gamma > -1 for the catalogue waves).
           Scalars, arrays or nested sequences; they broadcast like numpy ufunc arguments.
           Floats mean their shortest decimal text (0.1 is the decimal 0.1, as on the tool's
@@ -327,6 +509,179 @@ triangle Psi = (4 - beta)/(4 + beta) (Eq. 17). Arguments and results as mu(); be
 Flat punch only (Psi does not exist for curved profiles).
 )doc";
 
+BatchOptions solver_controls(const py::object& max_iterations, bool escalate) {
+  BatchOptions options;
+  options.escalate = escalate;
+  if (const auto mi = optional_int(max_iterations, "max_iterations")) {
+    if (*mi < 1 || *mi > 100000) throw InputError("max_iterations = " + std::to_string(*mi) + ": expected 1 to 100000");
+    options.solver.max_root_iterations = static_cast<std::uintmax_t>(*mi);
+  }
+  return options;
+}
+
+std::string kind_name(WaveKind k) {
+  switch (k) {
+    case WaveKind::sine: return "sine";
+    case WaveKind::triangle: return "triangle";
+    case WaveKind::sawtooth_right: return "sawtooth-right";
+    case WaveKind::sawtooth_left: return "sawtooth-left";
+    case WaveKind::square: return "square";
+    case WaveKind::power: return "power";
+    case WaveKind::fourier: return "fourier";
+    case WaveKind::samples: return "samples";
+  }
+  return "unknown";
+}
+
+bool is_decimal(const std::string& s) {
+  try {
+    check_decimal(s, "value");
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// `physical` (commands.hpp): the tool's inputs by flag name, as decimal texts of the Python values;
+// the tool's outputs by name, shape a string and the rest in the Form of the precision.
+py::dict physical_dict(const WaveSpec& wave, const std::map<std::string, std::string>& inputs,
+                       const Precision& precision, const BatchOptions& options, bool strings) {
+  PhysicalOutputs record;
+  {
+    py::gil_scoped_release release;
+    record = physical_point(wave, inputs, precision, options);
+  }
+  const Converter convert(result_form(precision, strings), precision);
+  py::dict d;
+  for (const auto& [name, value] : record)
+    d[py::str(name)] = name == "shape" ? py::object(py::str(value)) : convert(value);
+  return d;
+}
+
+// trace_rows as three arrays, phi, n and s: float64, or decimal strings (object arrays).
+py::tuple trace_arrays(const std::vector<std::array<std::string, 3>>& rows, bool strings) {
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  py::list columns;
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (strings) {
+      py::array out = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
+      for (py::ssize_t i = 0; i < n; ++i) out[py::int_(i)] = py::str(rows[static_cast<std::size_t>(i)][c]);
+      columns.append(out);
+    } else {
+      py::array_t<double> out(n);
+      double* p = out.mutable_data();
+      for (py::ssize_t i = 0; i < n; ++i) p[i] = read_decimal<double>(rows[static_cast<std::size_t>(i)][c]);
+      columns.append(out);
+    }
+  }
+  return py::tuple(columns);
+}
+
+// describe_normalisation as a dict: counts as int, decimal values as float (digits None), mpf or
+// strings (digits D), descriptions ("none", "1 (uniform phases)", the column) as str.
+py::dict normalisation_dict(const WaveSpec& spec, const py::object& digits_obj, bool strings) {
+  const auto digits = optional_int(digits_obj, "digits");
+  Precision p;
+  p.type = NumberType::mpfr;
+  p.digits = digits ? *digits : 17;
+  std::vector<std::pair<std::string, std::string>> rows;
+  {
+    py::gil_scoped_release release;
+    rows = describe_normalisation(spec, p.digits);
+  }
+  const Converter convert(strings ? Form::text : digits ? result_form(p, false) : Form::float64, p);
+  py::dict d;
+  for (const auto& [name, value] : rows) {
+    if (!strings && (name == "samples" || name == "harmonics"))
+      d[py::str(name)] = py::int_(std::stoull(value));
+    else if (name == "column" || name == "time_column" || name == "end_point" || !is_decimal(value))
+      d[py::str(name)] = py::str(value);
+    else
+      d[py::str(name)] = convert(value);
+  }
+  return d;
+}
+
+// The least-squares Fourier fit (fit.hpp) of samples given as arrays or as a samples Wave.
+PyWave fit_wave(const py::object& y, const py::object& harmonics, const py::object& t) {
+  WaveSpec samples;
+  if (py::isinstance<PyWave>(y)) {
+    if (!t.is_none()) throw InputError("t given with a Wave: the wave's own phases are fitted (expected t = None)");
+    samples = y.cast<const PyWave&>().spec;
+  } else {
+    samples = samples_wave(array_texts(y, "y"), t.is_none() ? std::vector<std::string>() : array_texts(t, "t"), "samples");
+  }
+  const auto k = optional_int(harmonics, "harmonics");
+  if (!k) throw py::type_error("harmonics = None: expected an integer K, 1 to 10000");
+  if (*k < 0) throw InputError("harmonics = " + std::to_string(*k) + ": expected 1 to 10000");  // 0, > 10000: fit_fourier
+  PyWave out;
+  {
+    py::gil_scoped_release release;
+    auto fit = std::make_shared<FourierFit>(fit_fourier(samples, static_cast<unsigned>(*k)));
+    out.spec = fitted_wave(*fit, "fit");
+    out.fit = std::move(fit);
+  }
+  out.fitted = samples.name;
+  return out;
+}
+
+std::string wave_repr(const PyWave& w) {
+  const WaveSpec& s = w.spec;
+  if (w.fit)
+    return "<vibrofric.Wave fit: " + std::to_string(w.fit->harmonics.empty() ? 0U : w.fit->harmonics.back().k) + " harmonics to " +
+           std::to_string(w.fit->samples) + " samples, rms residual " + w.fit->rms_residual + ">";
+  if (s.kind == WaveKind::samples)
+    return "<vibrofric.Wave samples: " + std::to_string(s.samples.size()) + " values" +
+           (s.times.empty() ? std::string("") : std::string(", time column")) + ">";
+  if (s.kind == WaveKind::fourier) return "<vibrofric.Wave fourier: " + std::to_string(s.harmonics.size()) + " harmonics>";
+  return "<vibrofric.Wave " + s.name + ">";
+}
+
+constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False) -> dict
+
+The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
+(mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given
+mean normal load -- then mu/mu0 (Eq. 15), mu, the mean forces, beta_c (Eq. 6) and, for the flat
+punch, the fractions of the period in contact and in stick. Curved indenters by MDR (model.md).
+
+E1, E2 Pa > 0; nu1, nu2 in (-1, 0.5]; G1, G2 Pa (default E/(2(1 + nu))); v0 m/s; f Hz; A m
+(zero-to-peak); mu0 > 0; exactly one of u_mean (m, mean indentation) and F_N (N, mean load).
+shape 'flat' (radius m), 'sphere' (R m), 'cone' (half_angle degrees), 'wearflat' (R, flat_radius m)
+or 'profile:FILE' (heights in m). Numbers as for mu() (floats by their shortest decimal text).
+
+Returns a dict with exactly the tool's output names, in its order: shape, E_star_Pa, G_star_Pa,
+k_z_N_per_m and k_x_N_per_m (flat) or contact_radius_max_m (curved), lambda (wearflat), beta,
+gamma, u_mean_m (given F_N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, beta_c (inf: stick at every
+beta), contact_fraction and stick_fraction (flat). Values as float (type None/'double': the
+nearest double of the tool's --type double text), numpy.longdouble, or for digits=D mpmath.mpf /
+decimal strings equal to `vibrofric physical --digits D --format json`; strings=True gives the
+tool's strings for every type. ValueError with the library's message (naming the input as --NAME).
+)doc";
+
+constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False) -> (phi, n, s)
+
+The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
+in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
+points + 1 equally spaced phases 0, 1/points, ..., 1, both ends of every stick phase and the
+contact boundaries (where n = s = 0 exactly), phi ascending. Each value to `digits` significant
+digits (computed at digits plus guard digits); three float64 arrays, or arrays of decimal strings
+with strings=True. points 2 to 1000000.
+)doc";
+
+constexpr const char* fit_doc = R"doc(fit(y, harmonics, t=None) -> Wave
+
+The least-squares trigonometric polynomial of degree K = harmonics through a sampled signal, as
+the tool's `fit` (model.md, "Waveform catalogue"): y and t as for samples() (or y a samples Wave),
+in the signal's units. Uniform phases (no t): the DFT, exact least squares, needs 2K < N. With
+time stamps: Householder QR on the phases (t - t0)/T in mpfr, needs N >= 2K + 1 and a condition
+number at most 1e12. Coefficients are written to 17 significant digits.
+
+Returns the fitted Fourier wave (normalised like any fourier wave), usable wherever a wave is,
+with .harmonics [(k, a_k, b_k)] (floats, k = 0 the mean), .method, .rms_residual and
+.max_residual (of y_j - fit(phi_j), in y's units) and .fourier_text(), the fourier file the tool
+writes (fourier:FILE reads it back to the same wave).
+)doc";
+
 }  // namespace
 
 PYBIND11_MODULE(vibrofric, m) {
@@ -336,8 +691,10 @@ PYBIND11_MODULE(vibrofric, m) {
 
 The contact-mechanical theory of M. Popov, "Friction under large-amplitude normal oscillations",
 on the C++ library vibrofric: mu() is mu/mu0 (Eq. 15), psi() the reduction function Psi_w(beta)
-(Eq. 12), samples() / fourier() user waves from arrays, profile() a measured indenter, verify()
-the paper's claims. Results are correctly rounded doubles, or exact decimals at any precision.
+(Eq. 12), physical() the same from SI inputs (Eqs. 1, 5, 14), trace() n and s over a period
+(Fig. 2); wave() a wave by name, samples() / fourier() user waves from arrays, fit() a Fourier
+series through samples, profile() a measured indenter, verify() the paper's claims. Results are
+correctly rounded doubles, or exact decimals at any precision.
 )doc";
 #ifdef VIBROFRIC_VERSION
   m.attr("__version__") = VIBROFRIC_VERSION;
@@ -357,20 +714,71 @@ the paper's claims. Results are correctly rounded doubles, or exact decimals at 
     }
   });
 
-  py::class_<PyWave>(m, "Wave", "A waveform built from arrays by vibrofric.samples or vibrofric.fourier.")
+  py::class_<PyWave>(m, "Wave",
+                     "A waveform: vibrofric.wave(text), or built from arrays by vibrofric.samples, vibrofric.fourier "
+                     "or vibrofric.fit. Accepted wherever a wave name is.")
       .def_property_readonly("name", [](const PyWave& w) { return w.spec.name; })
-      .def_property_readonly("kind", [](const PyWave& w) {
-        return w.spec.kind == WaveKind::samples ? std::string("samples") : std::string("fourier");
-      })
-      .def("__len__", [](const PyWave& w) {
-        return w.spec.kind == WaveKind::samples ? w.spec.samples.size() : w.spec.harmonics.size();
-      })
-      .def("__repr__", [](const PyWave& w) {
-        return w.spec.kind == WaveKind::samples
-                   ? "<vibrofric.Wave samples: " + std::to_string(w.spec.samples.size()) + " values" +
-                         (w.spec.times.empty() ? std::string("") : std::string(", time column")) + ">"
-                   : "<vibrofric.Wave fourier: " + std::to_string(w.spec.harmonics.size()) + " harmonics>";
-      });
+      .def_property_readonly("kind", [](const PyWave& w) { return kind_name(w.spec.kind); },
+                             "sine, triangle, sawtooth-right, sawtooth-left, square, power, fourier or samples")
+      .def("__len__",
+           [](const PyWave& w) {
+             if (w.spec.kind == WaveKind::samples) return w.spec.samples.size();
+             if (w.spec.kind == WaveKind::fourier) return w.spec.harmonics.size();
+             throw py::type_error("a catalogue wave (" + w.spec.name + ") has no samples or harmonics");
+           })
+      .def_property_readonly(
+          "harmonics",
+          [](const PyWave& w) -> py::object {
+            if (w.spec.kind != WaveKind::fourier) return py::none();
+            py::list out;
+            for (const auto& h : w.spec.harmonics)
+              out.append(py::make_tuple(h.k, read_decimal<double>(h.a), read_decimal<double>(h.b)));
+            return out;
+          },
+          "fourier waves: [(k, a_k, b_k)] as given or fitted (floats, the raw coefficients before the "
+          "normalisation; k = 0 is the mean, when given); None for other waves")
+      .def_property_readonly(
+          "method", [](const PyWave& w) -> py::object { return w.fit ? py::object(py::str(w.fit->method)) : py::none(); },
+          "fit(): how the coefficients were computed (DFT or least squares, with the digits); else None")
+      .def_property_readonly(
+          "rms_residual",
+          [](const PyWave& w) -> py::object {
+            return w.fit ? py::object(py::float_(read_decimal<double>(w.fit->rms_residual))) : py::none();
+          },
+          "fit(): root mean square of y_j - fit(phi_j) over the samples (3 digits, y's units); else None")
+      .def_property_readonly(
+          "max_residual",
+          [](const PyWave& w) -> py::object {
+            return w.fit ? py::object(py::float_(read_decimal<double>(w.fit->max_residual))) : py::none();
+          },
+          "fit(): largest |y_j - fit(phi_j)| (3 digits, y's units); else None")
+      .def(
+          "fourier_text",
+          [](const PyWave& w, const py::object& source) {
+            if (!w.fit) throw InputError("fourier_text() of '" + w.spec.name + "': only a Wave from vibrofric.fit has a fit to write");
+            return fourier_file_text(*w.fit, source.is_none() ? w.fitted : scalar_text(source, "source"));
+          },
+          "source"_a = py::none(),
+          R"doc(fourier_text(source=None) -> str
+
+The fit as the fourier file the tool's `fit` writes ('#' comments: source -- default the fitted
+wave's name --, method, K, N, residuals; then 'k a_k b_k' and one line per harmonic, 17 digits).
+Written to a file, fourier:FILE is this wave. ValueError for a wave that is not a fit.
+)doc")
+      .def("normalisation", [](const PyWave& w, const py::object& digits, bool strings) {
+             return normalisation_dict(w.spec, digits, strings);
+           },
+           "digits"_a = py::none(), "strings"_a = false,
+           R"doc(normalisation(digits=None, strings=False) -> dict
+
+The normalisation the wave went through (model.md, "Waveform catalogue": user waves have zero
+mean and max w - min w = 2, w = (raw - offset)/scale), as the tool's --diagnostics. Samples:
+samples, end_point, time_column, period, column, raw_mean, raw_min, raw_max, scale
+(= (raw_max - raw_min)/2) and factor (= 1/scale). Fourier: harmonics, mean_removed,
+peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. Numbers as float
+(17 digits), or to `digits` significant digits as mpmath.mpf / strings; descriptions as str.
+)doc")
+      .def("__repr__", wave_repr);
   py::class_<PyProfile>(m, "Profile", "A measured axisymmetric indenter profile built by vibrofric.profile.")
       .def_property_readonly("name", [](const PyProfile& p) { return p.spec.name; })
       .def("__len__", [](const PyProfile& p) { return p.spec.r.size(); })
@@ -383,7 +791,7 @@ the paper's claims. Results are correctly rounded doubles, or exact decimals at 
       [](const py::object& y, const py::object& t) {
         const auto ys = array_texts(y, "y");
         const auto ts = t.is_none() ? std::vector<std::string>() : array_texts(t, "t");
-        return PyWave{samples_wave(ys, ts, "samples")};
+        return PyWave{samples_wave(ys, ts, "samples"), nullptr, ""};
       },
       "y"_a, "t"_a = py::none(),
       R"doc(samples(y, t=None) -> Wave
@@ -402,7 +810,7 @@ file would be refused for (NaN, ragged t and y, a constant signal, repeated peri
         const auto bs = array_texts(b, "b");
         const std::string a0s = a0.is_none() ? std::string() : scalar_text(a0, "a0");
         if (!a0.is_none() && a0s.empty()) throw InputError("a0 is empty: expected a decimal number");
-        return PyWave{fourier_wave(as, bs, a0s, "fourier")};
+        return PyWave{fourier_wave(as, bs, a0s, "fourier"), nullptr, ""};
       },
       "a"_a, "b"_a, "a0"_a = py::none(),
       R"doc(fourier(a, b, a0=None) -> Wave
@@ -423,6 +831,80 @@ A measured axisymmetric indenter f(r) (MDR, model.md "Curved contacts"): r from 
 f(0) = 0, non-decreasing and convex; heights in units of the amplitude A. Exactly as a
 profile:FILE of lines 'r f'.
 )doc");
+
+  m.def(
+      "wave",
+      [](const py::object& text, const py::object& column) {
+        if (!py::isinstance<py::str>(text))
+          throw py::type_error("wave = " + py_repr(text) + ": expected a name such as 'sine' or 'samples:FILE'");
+        WaveReadOptions options;
+        if (!column.is_none()) {
+          if (py::isinstance<py::str>(column))
+            options.column = column.cast<std::string>();
+          else if (const auto c = optional_int(column, "column"))
+            options.column = std::to_string(*c);
+        }
+        return PyWave{parse_wave(text.cast<std::string>(), options), nullptr, ""};
+      },
+      "text"_a, py::kw_only(), "column"_a = py::none(),
+      R"doc(wave(text, *, column=None) -> Wave
+
+A wave by name, as the tool's --wave: 'sine', 'triangle', 'sawtooth-right', 'sawtooth-left',
+'square', 'power:P', 'fourier:FILE' or 'samples:FILE'. column (the tool's --column): the value
+column of a samples file with a header, by its name or 1-based index (a column named 'time' or 't'
+still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file is read once, here.
+)doc");
+
+  m.def(
+      "physical",
+      [](const py::object& wave, const py::object& E1, const py::object& nu1, const py::object& E2,
+         const py::object& nu2, const py::object& v0, const py::object& f, const py::object& A, const py::object& mu0,
+         const py::object& u_mean, const py::object& F_N, const py::object& G1, const py::object& G2,
+         const py::object& shape, const py::object& radius, const py::object& R, const py::object& half_angle,
+         const py::object& flat_radius, const py::object& digits, const py::object& type,
+         const py::object& max_iterations, bool escalate, bool strings) {
+        const WaveSpec w = to_wave(wave);
+        const Precision precision = to_precision(optional_int(digits, "digits"), type);
+        const BatchOptions options = solver_controls(max_iterations, escalate);
+        if (!py::isinstance<py::str>(shape))
+          throw py::type_error("shape = " + py_repr(shape) + ": expected 'flat', 'sphere', 'cone', 'wearflat' or 'profile:FILE'");
+        // The tool's flag names (commands.hpp), Python's argument names.
+        const std::vector<std::tuple<const char*, const char*, const py::object*>> given{
+            {"E1", "E1", &E1},        {"nu1", "nu1", &nu1},         {"E2", "E2", &E2},
+            {"nu2", "nu2", &nu2},     {"G1", "G1", &G1},            {"G2", "G2", &G2},
+            {"v0", "v0", &v0},        {"f", "f", &f},               {"A", "A", &A},
+            {"u-mean", "u_mean", &u_mean}, {"F-N", "F_N", &F_N},    {"mu0", "mu0", &mu0},
+            {"radius", "radius", &radius}, {"R", "R", &R},          {"half-angle", "half_angle", &half_angle},
+            {"flat-radius", "flat_radius", &flat_radius}};
+        std::map<std::string, std::string> inputs{{"shape", shape.cast<std::string>()}};
+        for (const auto& [flag, name, value] : given)
+          if (!value->is_none()) inputs[flag] = scalar_text(*value, name);
+        return physical_dict(w, inputs, precision, options, strings);
+      },
+      "wave"_a, py::kw_only(), "E1"_a, "nu1"_a, "E2"_a, "nu2"_a, "v0"_a, "f"_a, "A"_a, "mu0"_a,
+      "u_mean"_a = py::none(), "F_N"_a = py::none(), "G1"_a = py::none(), "G2"_a = py::none(), "shape"_a = "flat",
+      "radius"_a = py::none(), "R"_a = py::none(), "half_angle"_a = py::none(), "flat_radius"_a = py::none(),
+      "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
+      "strings"_a = false, physical_doc);
+
+  m.def(
+      "trace",
+      [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& points,
+         const py::object& digits, bool strings) {
+        const WaveSpec w = to_wave(wave);
+        const std::string b = scalar_text(beta, "beta"), g = scalar_text(gamma, "gamma");
+        const auto n = optional_int(points, "points");
+        const auto d = optional_int(digits, "digits");
+        std::vector<std::array<std::string, 3>> rows;
+        {
+          py::gil_scoped_release release;
+          rows = trace_rows(w, b, g, n ? *n : 1000, d ? *d : 17);
+        }
+        return trace_arrays(rows, strings);
+      },
+      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false, trace_doc);
+
+  m.def("fit", fit_wave, "y"_a, "harmonics"_a, "t"_a = py::none(), fit_doc);
 
   m.def(
       "mu",

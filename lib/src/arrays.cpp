@@ -129,6 +129,20 @@ WaveSpec fourier_wave(const std::vector<std::string>& a, const std::vector<std::
   return spec;
 }
 
+WaveSpec fitted_wave(const FourierFit& fit, const std::string& label) {
+  const std::string text = fourier_file_text(fit, label);
+  int header_lines = 0;  // the comment lines and the 'k a_k b_k' header: label[k] is harmonic k
+  for (std::size_t at = 0; at < text.size() && (text[at] == '#' || text[at] == 'k'); ++header_lines) {
+    at = text.find('\n', at);
+    if (at == std::string::npos) break;
+    ++at;
+  }
+  WaveSpec spec = read_through_file(text, label, header_lines,
+                                    [](const std::string& path) { return parse_wave("fourier:" + path); });
+  spec.name = label;
+  return spec;
+}
+
 ProfileSpec profile_arrays(const std::vector<std::string>& r, const std::vector<std::string>& f, const std::string& label) {
   if (r.size() != f.size())
     throw InputError(label + ": r has " + std::to_string(r.size()) + " values and f " + std::to_string(f.size()) +

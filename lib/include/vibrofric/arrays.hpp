@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vibrofric/catalogue.hpp"
+#include "vibrofric/fit.hpp"
 #include "vibrofric/profile.hpp"
 
 namespace vibrofric {
@@ -32,6 +33,11 @@ WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::
 // in length, and for everything the file reader refuses.
 WaveSpec fourier_wave(const std::vector<std::string>& a, const std::vector<std::string>& b, const std::string& a0 = "",
                       const std::string& label = "fourier");
+
+// The wave of a fit (fit.hpp): parse_wave's WaveSpec for the fourier:FILE that fourier_file_text
+// writes for it (the same coefficients, normalised by the same reader), named `label`; what a
+// front end that keeps the fit in memory evaluates, equal to the tool's fit output read back.
+WaveSpec fitted_wave(const FourierFit& fit, const std::string& label = "fit");
 
 // A measured axisymmetric profile from samples r_j, f_j: parse_profile's ProfileSpec for a
 // profile:FILE with lines 'r f', named `label` (the same conditions: r from 0, increasing, f(0) = 0,

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """A ball on a flat under harmonic oscillation (MDR, model.md "Curved contacts"): mu/mu0 against beta
-for several gamma, sphere (solid) against the paper's flat punch (dashed).
+for several gamma, sphere (solid) against the paper's flat punch (dashed); then one rig in SI
+units (vibrofric.physical): a steel ball of radius 5 mm on aluminium pressed with 2 N mean load.
 
     PYTHONPATH=build/release/lib/python /usr/bin/python3 lib/python/examples/sphere.py sphere.png
 """
@@ -34,6 +35,11 @@ def main(out):
     fig.tight_layout()
     fig.savefig(out)
     print(f"wrote {out}: {sphere.size + flat.size} points")
+    rig = vibrofric.physical("sine", E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, shape="sphere", R=5e-3,
+                             v0=1e-4, f=200, A=1e-6, mu0=0.3, F_N=2.0)
+    print("steel ball R = 5 mm on aluminium, F_N = 2 N, A = 1 um at 200 Hz, v0 = 0.1 mm/s:")
+    for name in ("beta", "gamma", "u_mean_m", "contact_radius_max_m", "mu_over_mu0", "mu", "F_x_mean_N"):
+        print(f"  {name:22} {rig[name]:.6g}")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,160 @@
+"""vibrofric.physical against the tool's `physical --format json` (string for string, same keys in
+the same order) and against Eqs. 1, 5 and 14 computed here in exact rationals; bad inputs.
+
+The tool is the one this build made: ctest passes its path in VIBROFRIC_TOOL (tests/python's
+CMakeLists.txt); without it (pytest by hand) the comparisons with the tool are skipped.
+"""
+import json
+import os
+import subprocess
+from decimal import Decimal
+from fractions import Fraction
+
+import pytest
+
+import vibrofric
+from closed_forms import exact, rounded
+
+TOOL = os.environ.get("VIBROFRIC_TOOL")
+needs_tool = pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL (the tool's path) not set")
+
+# Steel on aluminium, a 1 mm punch, 100 Hz at 1 um: beta = 1.0096 (Eq. 5).
+BASE = dict(E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, v0=5e-5, f=100, A=1e-6, mu0=0.4)
+CASES = {
+    "flat": dict(BASE, radius=1e-3, u_mean=0.3e-6),
+    "sphere": dict(BASE, shape="sphere", R=0.01, u_mean=0.2e-6),
+    "flat_load": dict(BASE, radius=1e-3, F_N=20),
+    "sphere_load": dict(BASE, shape="sphere", R=0.01, F_N=0.5),
+    "flat_shear_moduli": dict(BASE, G1=80e9, G2=26e9, radius=2e-3, u_mean=-0.4e-6),
+}
+FLAGS = {"u_mean": "u-mean", "F_N": "F-N", "half_angle": "half-angle", "flat_radius": "flat-radius"}
+
+
+def tool_json(wave, inputs, precision):
+    cmd = [TOOL, "physical", "--wave", wave, "--format", "json"] + precision
+    for name, value in inputs.items():
+        # The text the module reads for a float: its shortest round-trip decimal (repr).
+        cmd += ["--" + FLAGS.get(name, name), value if isinstance(value, str) else repr(value)]
+    out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    return json.loads(out, object_pairs_hook=list)  # keeps the order of the keys
+
+
+@needs_tool
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_equals_tool_double(case):
+    inputs = CASES[case]
+    want = tool_json("sine", inputs, ["--type", "double"])
+    got = vibrofric.physical("sine", strings=True, **inputs)
+    assert list(got.items()) == want
+    floats = vibrofric.physical("sine", **inputs)
+    assert list(floats) == [k for k, _ in want]
+    for k, v in want:
+        if k == "shape":
+            assert floats[k] == v
+        else:
+            assert type(floats[k]) is float and floats[k] == float(v), (k, floats[k], v)
+
+
+@needs_tool
+@pytest.mark.parametrize("case", ["flat", "sphere", "flat_load"])
+def test_equals_tool_digits(case):
+    inputs = CASES[case]
+    want = tool_json("triangle", inputs, ["--digits", "25"])
+    got = vibrofric.physical("triangle", digits=25, strings=True, **inputs)
+    assert list(got.items()) == want
+
+
+@needs_tool
+def test_equals_tool_for_decimal_strings_and_other_shapes():
+    inputs = dict(BASE, shape="wearflat", R="0.01", flat_radius="3e-5", u_mean="0.1e-6", E1="2.1e11")
+    assert list(vibrofric.physical("square", digits=20, strings=True, **inputs).items()) == \
+        tool_json("square", inputs, ["--digits", "20"])
+    inputs = dict(BASE, shape="cone", half_angle=80, u_mean=0.5e-6)
+    assert list(vibrofric.physical("sine", strings=True, **inputs).items()) == \
+        tool_json("sine", inputs, ["--type", "double"])
+
+
+def eq1_eq5(i):
+    """Eq. 1: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, 1/G* = (2 - nu1)/(4 G1) + (2 - nu2)/(4 G2)
+    with G = E/(2(1 + nu)) unless given, k_z = 2 E* a, k_x = 2 G* a; Eq. 5: beta = G* v0/(mu0 E* A f);
+    Eq. 14: gamma = u_mean/A. Exact rationals of the decimals the module reads."""
+    E1, nu1, E2, nu2 = (exact(i[k]) for k in ("E1", "nu1", "E2", "nu2"))
+    G1 = exact(i["G1"]) if "G1" in i else E1 / (2 * (1 + nu1))
+    G2 = exact(i["G2"]) if "G2" in i else E2 / (2 * (1 + nu2))
+    E = 1 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
+    G = 1 / ((2 - nu1) / (4 * G1) + (2 - nu2) / (4 * G2))
+    a = exact(i["radius"])
+    beta = G * exact(i["v0"]) / (exact(i["mu0"]) * E * exact(i["A"]) * exact(i["f"]))
+    return {"E_star_Pa": E, "G_star_Pa": G, "k_z_N_per_m": 2 * E * a, "k_x_N_per_m": 2 * G * a, "beta": beta,
+            "gamma": exact(i["u_mean"]) / exact(i["A"])}
+
+
+@pytest.mark.parametrize("case", ["flat", "flat_shear_moduli"])
+def test_eq1_eq5_eq14_closed_forms(case):
+    inputs = CASES[case]
+    want = eq1_eq5(inputs)
+    # 40 digits: each value is the exact one correctly rounded to 40 significant digits.
+    got = vibrofric.physical("sine", digits=40, strings=True, **inputs)
+    for k, q in want.items():
+        assert Decimal(got[k]) == rounded(q, 40), (k, got[k], rounded(q, 40))
+    # double: the nearest double of the 17-digit rounding (the tool's --type double text)
+    floats = vibrofric.physical("sine", **inputs)
+    for k, q in want.items():
+        assert floats[k] == float(rounded(q, 17)), (k, floats[k])
+        assert abs(Fraction(floats[k]) - q) <= abs(q) * Fraction(1, 10 ** 16), k
+
+
+def test_relations_between_outputs():
+    d = vibrofric.physical("sine", digits=30, strings=True, **CASES["flat_load"])
+    F_N, mu0, A = Decimal(20), Decimal("0.4"), Decimal("1e-6")
+    tol = Decimal("1e-28")
+    assert abs(Decimal(d["F_N_mean_N"]) - F_N) <= tol * F_N  # gamma solves <F_N>(gamma) = F_N
+    assert abs(Decimal(d["u_mean_m"]) - Decimal(d["gamma"]) * A) <= tol * abs(Decimal(d["u_mean_m"]))
+    assert abs(Decimal(d["mu"]) - mu0 * Decimal(d["mu_over_mu0"])) <= tol
+    assert abs(Decimal(d["F_x_mean_N"]) - Decimal(d["mu"]) * F_N) <= tol * 10
+    # mu/mu0 at the same beta and gamma as mu() computes it
+    m = vibrofric.mu("sine", d["beta"], d["gamma"], digits=25, strings=True)
+    assert abs(Decimal(m) - Decimal(d["mu_over_mu0"])) <= Decimal("1e-24")
+    assert 0 <= Decimal(d["stick_fraction"]) <= Decimal(d["contact_fraction"]) <= 1
+
+
+def test_mpf_and_types():
+    d = vibrofric.physical("sine", digits=30, **CASES["flat"])
+    try:
+        import mpmath
+    except ImportError:
+        assert isinstance(d["beta"], str)
+    else:
+        assert isinstance(d["beta"], mpmath.mpf)
+    assert d["shape"] == "flat"
+    inf = vibrofric.physical("square", **CASES["flat"])["beta_c"]  # an upward jump of n: stick at every beta
+    assert inf == float("inf")
+
+
+def raises(names, **kw):
+    with pytest.raises(ValueError) as info:
+        vibrofric.physical("sine", **kw)
+    msg = str(info.value)
+    assert "\n" not in msg and msg
+    for n in names:
+        assert n in msg, (n, msg)
+    return msg
+
+
+def test_bad_inputs():
+    inputs = dict(BASE, radius=1e-3)
+    raises(("u-mean", "F-N", "missing"), **inputs)
+    raises(("u-mean", "F-N", "both"), u_mean=1e-7, F_N=3, **inputs)
+    raises(("E1", "-1", "> 0"), **dict(inputs, E1=-1.0, u_mean=1e-7))
+    raises(("nu2", "0.7"), **dict(inputs, nu2=0.7, u_mean=1e-7))
+    raises(("radius", "missing"), **dict(BASE, u_mean=1e-7))  # the punch needs its radius
+    raises(("radius", "sphere"), **dict(BASE, shape="sphere", radius=1e-3, R=0.01, u_mean=1e-7))
+    raises(("ball",), **dict(inputs, shape="ball", u_mean=1e-7))
+    raises(("gamma",), **dict(inputs, u_mean=-2e-6))  # no contact: gamma = -2
+    raises(("v0", "nan"), **dict(inputs, v0=float("nan"), u_mean=1e-7))
+    with pytest.raises(TypeError):
+        vibrofric.physical("sine", **dict(inputs, E1=True, u_mean=1e-7))
+    with pytest.raises(TypeError):
+        vibrofric.physical("sine", **dict(inputs, shape=3, u_mean=1e-7))
+    with pytest.raises(TypeError):  # keyword-only, E1 required
+        vibrofric.physical("sine", nu1=0.3)
