@@ -429,32 +429,6 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   return flat.attr("reshape")(shape);
 }
 
-py::dict claim_dict(const ClaimCheck& c) {
-  py::dict d;
-  d["key"] = c.key;
-  d["id"] = c.id;
-  d["source"] = c.source;
-  d["statement"] = c.statement;
-  d["method"] = c.method;
-  d["how"] = c.how;
-  d["criterion"] = c.criterion;
-  d["proof"] = c.proof;
-  d["worst"] = c.worst;
-  d["verdict"] = verdict_name(c.verdict);
-  d["scope"] = c.scope;
-  d["fails_where"] = c.fails_where;
-  d["corrected"] = c.corrected;
-  d["cases"] = c.cases;
-  d["deviation"] = c.deviation_text;
-  d["deviation_unit"] = c.deviation_unit;
-  d["corrected_deviation"] = c.corrected_deviation ? py::object(py::str(c.corrected_deviation_text)) : py::object(py::none());
-  py::list measured;
-  for (const auto& m : c.measured) measured.append(py::make_tuple(m.name, m.value));
-  d["measured"] = measured;
-  d["digits"] = c.digits;
-  return d;
-}
-
 std::optional<int> optional_int(const py::object& x, const char* what) {
   if (x.is_none()) return std::nullopt;
   if (py::isinstance<py::bool_>(x) || !(py::isinstance<py::int_>(x) || py::hasattr(x, "__index__")))
@@ -961,8 +935,14 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
           else
             checks.push_back(check_claim(key, d));
         }
-        py::list out;
-        for (const auto& c : checks) out.append(claim_dict(c));
+        // The tool's JSON (claims_json), as dicts; measured as (name, value) tuples, plus digits.
+        py::list out = py::module_::import("json").attr("loads")(claims_json(checks, d))["claims"];
+        for (std::size_t i = 0; i < checks.size(); ++i) {
+          py::list measured;
+          for (const auto& m : checks[i].measured) measured.append(py::make_tuple(m.name, m.value));
+          out[i]["measured"] = measured;
+          out[i]["digits"] = checks[i].digits;
+        }
         return out;
       },
       "claim"_a = py::none(), "digits"_a = 50,

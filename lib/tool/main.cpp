@@ -721,39 +721,6 @@ int run_version() {
   return 0;
 }
 
-// The catalogue's results for the report generator (reports/generate.py). Deviations are decimal
-// strings at the working precision (a JSON number would pass through a double and underflow
-// beyond 300 digits); null where a claim has no corrected statement.
-void print_claims_json(const std::vector<ClaimCheck>& checks, int digits) {
-  nlohmann::ordered_json doc;
-  doc["digits"] = digits;
-  doc["claims"] = nlohmann::json::array();
-  for (const auto& c : checks) {
-    nlohmann::ordered_json j;
-    j["key"] = c.key;
-    j["id"] = c.id;
-    j["source"] = c.source;
-    j["statement"] = c.statement;
-    j["method"] = c.method;
-    j["how"] = c.how;
-    j["criterion"] = c.criterion;
-    j["proof"] = c.proof;
-    j["worst"] = c.worst;
-    j["verdict"] = verdict_name(c.verdict);
-    j["scope"] = c.scope;
-    j["fails_where"] = c.fails_where;
-    j["corrected"] = c.corrected;
-    j["cases"] = c.cases;
-    j["deviation"] = c.deviation_text;
-    j["deviation_unit"] = c.deviation_unit;
-    j["corrected_deviation"] = c.corrected_deviation ? nlohmann::json(c.corrected_deviation_text) : nlohmann::json(nullptr);
-    j["measured"] = nlohmann::json::array();
-    for (const auto& m : c.measured) j["measured"].push_back({m.name, m.value});
-    doc["claims"].push_back(std::move(j));
-  }
-  std::cout << doc.dump(1) << '\n';
-}
-
 int run_verify(const Args& a) {
   const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", 10, 300) : 50;
   if (a.flags.count("format") && a.flags.at("format") != "json" && a.flags.at("format") != "text")
@@ -764,7 +731,7 @@ int run_verify(const Args& a) {
   else
     checks = verify_claims(digits);
   if (a.flags.count("format") && a.flags.at("format") == "json") {
-    print_claims_json(checks, digits);
+    std::cout << claims_json(checks, digits) << '\n';
     return 0;
   }
   std::printf("%-28s %-8s %-20s %-9s %s\n", "claim", "cases", "verdict", "deviation", "statement");

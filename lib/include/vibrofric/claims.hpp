@@ -72,4 +72,12 @@ ClaimCheck check_claim(const std::string& key, int digits);
 // to be the same; more digits work but the curved-contact claims then take hours).
 std::vector<ClaimCheck> verify_claims(int digits);
 
+// The checks as one JSON document (`verify --format json`, the report generator, the Python
+// module): {"digits": D, "claims": [{key, id, source, statement, method, how, criterion, proof,
+// worst, verdict, scope, fails_where, corrected, cases, deviation, deviation_unit,
+// corrected_deviation, measured: [[name, value], ...]}, ...]}. Deviations are decimal strings at
+// the working precision (a JSON number would pass through a double and underflow beyond 300
+// digits); corrected_deviation is null where a claim has no corrected statement.
+std::string claims_json(const std::vector<ClaimCheck>& checks, int digits);
+
 }  // namespace vibrofric
