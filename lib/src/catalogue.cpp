@@ -22,8 +22,9 @@ using detail::visible;
 
 // A user waveform file as a table (README, "File formats"): a UTF-8 byte-order mark and CR line
 // ends are dropped, '#' starts a comment, blank lines are skipped; a line with ',' or ';' has its
-// fields between them (so a header may hold spaces: 'time [s], value'), any other line between
-// runs of whitespace. A first line without any number is the header.
+// fields between them (so a header may hold spaces: 'time [s], value'), a line with tabs between
+// runs of tabs, any other line between runs of whitespace. A first line without any number is
+// the header.
 struct Table {
   std::vector<std::string> header;
   std::vector<std::pair<int, std::vector<std::string>>> rows;  // line number, fields
@@ -61,6 +62,17 @@ Table read_table(const std::string& path, const std::string& wave) {
         std::size_t lead = 0;
         while (lead < f.size() && space(f[lead])) ++lead;
         f.erase(0, lead);
+        // A field in double quotes (RFC 4180, as spreadsheets export headers) is its contents, a
+        // doubled quote one quote; a separator inside quotes is not supported (the columns then
+        // disagree with the header: an error, never a shifted column).
+        if (f.size() >= 2 && f.front() == '"' && f.back() == '"') {
+          std::string inner;
+          for (std::size_t k = 1; k + 1 < f.size(); ++k) {
+            inner += f[k];
+            if (f[k] == '"' && f[k + 1] == '"') ++k;
+          }
+          f = inner;
+        }
         if (end == std::string::npos) {
           if (!f.empty()) fields.push_back(f);
           break;
@@ -69,6 +81,18 @@ Table read_table(const std::string& path, const std::string& wave) {
           throw InputError(path + ":" + std::to_string(number) + ": empty field before " +
                            quoted(std::string(1, line[end])) + ": expected a value between separators");
         fields.push_back(f);
+        start = end + 1;
+      }
+    } else if (line.find('\t') != std::string::npos) {
+      // Tab-separated (a rig's export): fields between runs of tabs, so that a header name may
+      // hold spaces ('time [s]<TAB>displacement [um]'); spaces around them trimmed.
+      std::size_t start = 0;
+      while (start < line.size()) {
+        const std::size_t end = std::min(line.find('\t', start), line.size());
+        std::string f = line.substr(start, end - start);
+        while (!f.empty() && f.back() == ' ') f.pop_back();
+        f.erase(0, std::min(f.find_first_not_of(' '), f.size()));
+        if (!f.empty()) fields.push_back(f);
         start = end + 1;
       }
     } else {
@@ -87,9 +111,10 @@ Table read_table(const std::string& path, const std::string& wave) {
   return t;
 }
 
-// "time", "t", "Time [s]", "t (ms)": the name of a time column.
+// The name of a time column, as rigs export it: "time", "t", "timestamp", with a unit in brackets
+// ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("time in ms").
 bool is_time_name(const std::string& name) {
-  static const std::regex re(R"((t|time)\s*([\[(].*[\])])?)", std::regex::icase);
+  static const std::regex re(R"((t|time|timestamp)(\s*[\[(].*[\])]|\s*[_/]\s*\w+|\s+in\s+\w+)?)", std::regex::icase);
   return std::regex_match(name, re);
 }
 
@@ -283,7 +308,7 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
       if (tok.size() != 3)
         throw InputError(where + ": expected three fields 'k a_k b_k', got " + std::to_string(tok.size()));
       if (!std::regex_match(tok[0], std::regex("[0-9]{1,6}")))
-        throw InputError(where + ": harmonic k = " + quoted(visible(tok[0])) + ": expected an integer 0 ≤ k ≤ 999999");
+        throw InputError(where + ": harmonic k = " + quoted(visible(tok[0])) + ": expected an integer 0 ≤ k ≤ 100000");
       const auto k = static_cast<unsigned>(std::stoul(tok[0]));
       if (k > 100000) throw InputError(where + ": harmonic k = " + tok[0] + ": expected k ≤ 100000");
       if (!seen.insert(k).second) throw InputError(where + ": harmonic k = " + tok[0] + " given twice");
@@ -348,8 +373,11 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
         tc = t0 ? 0 : 1;
         vc = 1 - tc;
       } else if (columns > 2) {
-        throw InputError(arg + ": " + std::to_string(columns) +
-                         " columns: expected one column of values, or two named 'time' and 'value', or a chosen value column");
+        std::string names;
+        for (const auto& h : header) names += (names.empty() ? " (" : ", ") + quoted(visible(h));
+        throw InputError(arg + ": " + std::to_string(columns) + " columns" + (names.empty() ? "" : names + ")") +
+                         ": expected one column of values, two with one named 'time', or a value column chosen by name or "
+                         "1-based index (--column)");
       }
       for (const auto& [line, tok] : rows) {
         if (tc != std::string::npos) s.times.push_back(tok[tc]);
