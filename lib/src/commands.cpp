@@ -84,6 +84,11 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string,
   // not depend on β. Also the largest contact radius (curved) in units of L.
   const auto w = make_waveform<mpfr>(wave);
   const auto p = kind == "flat" ? nullptr : make_profile<mpfr>(options.profile);
+  // Contact needs gamma + max w > 0 (Eq. 14: u_mean > -A max w), said in the inputs' own terms.
+  if (!by_load && !(g.gamma + w->maximum() > 0))
+    throw DomainError("--u-mean = " + inputs.at("u-mean") + " with --A = " + inputs.at("A") + " gives no contact for wave " +
+                      wave.name + ": expected u_mean > -A max w = " + format_significant(mpfr(-A * w->maximum()), 6) +
+                      " m (gamma = u_mean/A > " + format_significant(mpfr(-w->maximum()), 6) + ")");
   auto load = [&](const mpfr& gam, mpfr* edge_out) {
     if (!(gam + w->maximum() > 0)) return mpfr(0);  // no contact, no load
     mpfr normal;

@@ -64,9 +64,10 @@ const char* const kWaves =
     "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
     "  fourier FILE: lines 'k a_k b_k' for w = sum a_k cos(2 pi k phi) + b_k sin(2 pi k phi)\n"
     "  samples FILE: one period of values y_j at phi = j/N (one column, or one line), linear\n"
-    "  between; or columns under a header, one named 'time' or 't' giving the time stamps (the\n"
-    "  last line repeats the first value one period later); --column picks the value column.\n"
-    "  Fields: whitespace, or ',' / ';' where a line has them; '#' starts a comment (README,\n"
+    "  between; or columns under a header, one named 'time', 't' or 'timestamp' (any case, a unit\n"
+    "  allowed: 'time [s]', 'time_s', 't/s') giving the time stamps (the last line repeats the\n"
+    "  first value one period later); --column picks the value column. Fields: ',' / ';' where a\n"
+    "  line has them, else tabs, else spaces; '#' starts a comment (README,\n"
     "  \"File formats\"). User waves are normalised to zero mean and max - min = 2\n"
     "  (--diagnostics shows how).\n";
 
@@ -112,7 +113,7 @@ struct FlagSpec {
 const std::vector<FlagSpec> kWaveFlags{
     {"wave", "W", "the wave (required): catalogue name, power:P, fourier:FILE or samples:FILE", ""},
     {"column", "C", "samples FILE: the value column, by header name or 1-based index", "the one value column"},
-    {"diagnostics", "", "print the normalisation of a user wave (offset, scale, period) on stderr", ""},
+    {"diagnostics", "", "print on stderr the normalisation of a user wave: raw mean, min, max, scale, period, end point", ""},
 };
 const std::vector<FlagSpec> kPrecisionFlags{
     {"digits", "D", "significant digits, 1 to 10000 (mpfr, with guard digits)", "50"},
@@ -139,14 +140,14 @@ struct CommandSpec {
 const std::vector<CommandSpec>& commands() {
   static const std::vector<CommandSpec> specs{
       {"mu", "mu --wave W --beta B --gamma G [--profile P]: mu/mu0 = g_w(beta, gamma) (Eq. 15)",
-       {{"beta", "B", "beta (Eq. 5), a decimal >= 0 (required)", ""},
-        {"gamma", "G", "gamma = u_mean/A (Eq. 14), a decimal (required)", ""},
+       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", ""},
+        {"gamma", "G", "gamma = u_mean/A (Eq. 14), a decimal with contact, gamma > -max w (required)", ""},
         {"profile", "P", "the indenter (model.md MDR)", "flat"},
         {"format", "F", "text | csv | json", "text"}},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
        std::string(kWaves) + kProfiles},
       {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
-       {{"beta", "B", "beta (Eq. 5), a decimal >= 0 (required)", ""},
+       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", ""},
         {"profile", "P", "flat only: in a curved contact the outer springs always jump", "flat"},
         {"format", "F", "text | csv | json", "text"}},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
@@ -183,21 +184,22 @@ const std::vector<CommandSpec>& commands() {
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
        std::string(kPhysicalAbout) + kWaves},
       {"trace", "trace --wave W --beta B --gamma G: CSV phi,n,s over one period (Fig. 2)",
-       {{"beta", "B", "beta (required)", ""},
-        {"gamma", "G", "gamma (required)", ""},
-        {"points", "N", "equally spaced phases, 2 to 1000000, plus every stick phase's ends and the contact "
+       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", ""},
+        {"gamma", "G", "gamma = u_mean/A (Eq. 14), with contact (required)", ""},
+        {"points", "N", "N + 1 equally spaced phases i/N (0 and 1 both), N from 2 to 1000000, plus every stick phase's ends and the contact "
                         "boundaries (where n = 0 exactly)", "1000"},
-        {"digits", "D", "significant digits", "17"}},
+        {"digits", "D", "significant digits, 1 to 10000", "17"}},
        {&kWaveFlags},
        kWaves},
       {"fit", "fit --wave samples:FILE --harmonics K [--output FILE]: a fourier file from samples",
        {{"harmonics", "K", "harmonics of the fit, 1 to 10000, 2K < samples (required)", ""},
         {"output", "FILE", "write the fourier file here", "stdout"}},
        {&kWaveFlags},
-       "The fit is the DFT for uniform phases (one column) and linear least squares (QR) on t/period for\n"
-       "time stamps; the file's comments give the rms and largest residual. Use the fit when the signal\n"
-       "is noisy (samples:FILE follows every wiggle: slopes enter beta_c, Eq. 6) and the samples when\n"
-       "its kinks are real (a clipped or triangular drive).\n"},
+       "--wave takes a samples:FILE (--column for a table). The fit is the DFT for uniform phases and\n"
+       "linear least squares (QR) on t/period for time stamps; the file's comments give the rms and\n"
+       "largest residual. Use the fit when the signal is noisy (samples:FILE follows every wiggle:\n"
+       "slopes enter beta_c, Eq. 6) and the samples when its kinks are real (a clipped or triangular\n"
+       "drive).\n"},
       {"verify", "verify [--digits D] [--claim KEY] [--format json]: every claim of the paper and model.md",
        {{"digits", "D", "working digits, 10 to 300 (the same verdicts over the range)", "50"},
         {"claim", "KEY", "one claim (e.g. eq24)", "all"},
@@ -367,6 +369,7 @@ std::vector<std::string> value_range(const std::string& spec, const std::string&
   const mpfr from(parts[0]), to(parts[1]);
   if (!descending && to < from) throw InputError(flag + " '" + detail::visible(spec) + "': empty range, expected FROM <= TO");
   if (n > 1 && from == to) throw InputError(flag + " '" + detail::visible(spec) + "': empty range for N > 1, expected FROM != TO");
+  if (n == 1 && from != to) throw InputError(flag + " '" + detail::visible(spec) + "': one point (N = 1) from FROM to TO, expected FROM = TO");
   if (log && !(from > 0 && to > 0))
     throw InputError(flag + " '" + detail::visible(spec) + "': a log range needs FROM > 0 and TO > 0");
   std::vector<std::string> out;

@@ -1389,6 +1389,31 @@ def cli_tests():
             if name not in diag or abs(F(diag[name].split()[0]) - want) > Fraction(1, 10 ** 15):
                 raise Fail("--diagnostics %s = %r, expected %s; stderr %r" % (name, diag.get(name), want, err))
     test("--column by name and index; --diagnostics prints the normalisation on stderr", column_and_diagnostics)
+    def time_names_and_tabs():
+        # A rig's export names its time column in many ways; every one must give the stamps (the
+        # non-uniform phases), not uniform phases read silently: the same mu as the plain 'time'.
+        rows = [(0, 5, 0.1), (0.7, 6, 1.0), (1.1, 7, 0.3), (2.9, 4, -1.0), (3.3, 5, -0.2), (4, 5, 0.1)]
+        def table(names, sep=","):
+            return sep.join(names) + "\n" + "".join(sep.join(str(v) for v in r) + "\n" for r in rows)
+        ref = ok_run(["mu", "--wave", "samples:" + write("names-plain.csv", table(["time", "x", "y"])), "--column", "y",
+                      "--beta", "1", "--gamma", "0.1", "--digits", "25"])
+        for k, name in enumerate(["time_s", "Time/s", "t/s", "timestamp", '"time [s]"', "Time (ms)", "t in ms", "TIME [s]"]):
+            path = write("names-%d.csv" % k, table([name, "x", "y"]))
+            got = ok_run(["mu", "--wave", "samples:" + path, "--column", "y", "--beta", "1", "--gamma", "0.1", "--digits", "25"])
+            if got != ref:
+                raise Fail("time column named %r: mu %r, with 'time' %r" % (name, got, ref))
+        tsv = write("names-tab.tsv", table(["time [s]", "force [N]", "displacement [um]"], "\t"))
+        got = ok_run(["mu", "--wave", "samples:" + tsv, "--column", "displacement [um]", "--beta", "1", "--gamma", "0.1",
+                      "--digits", "25"])
+        if got != ref:
+            raise Fail("tab-separated table with spaces in its names: mu %r, the comma table %r" % (got, ref))
+    test("samples tables: time columns named as rigs export them, tab-separated names with spaces", time_names_and_tabs)
+    bad("three columns without --column names them", ["mu", "--wave", "samples:" + write("three-c.csv", "time,x,y\n0,5,1\n1,6,3\n2,7,2\n3,5,1\n"),
+                                                     "--beta", "1", "--gamma", "0"], ["'x'", "'y'"], ["--column"])
+    bad("physical u-mean into no contact, named as typed", physical_args(**{"--u-mean": "-2e-5"}), ["-2e-5"], ["--u-mean", "contact"])
+    bad("range N = 1 with FROM != TO", ["sweep", "--wave", "sine", "--beta", "1:3:1", "--gamma", "0.5"], [], ["N = 1", "FROM = TO"])
+    bad("fourier k not an integer: the limit is 100000",
+        ["mu", "--wave", "fourier:" + write("k15.txt", "1.5 0 5\n"), "--beta", "1", "--gamma", "0"], ["'1.5'"], ["100000"])
     bad("--column unknown name", ["mu", "--wave", "samples:" + write("three-b.csv", "time,x,y\n0,5,1\n1,6,3\n2,7,2\n3,5,1\n"),
                                   "--column", "z", "--beta", "1", "--gamma", "0"], ["'z'"], ["column"])
     bad("--column on a catalogue wave", mu + ["--column", "2"], [], ["column"])
