@@ -457,8 +457,9 @@ wave      a name -- 'sine' (harmonic), 'triangle', 'sawtooth-right', 'sawtooth-l
           or fit().
 beta      > 0; gamma: contact requires gamma + max w > 0 (gamma > -1 for the catalogue waves).
           Scalars, arrays or nested sequences; they broadcast like numpy ufunc arguments.
-          Floats mean their shortest decimal text (0.1 is the decimal 0.1, as on the tool's
-          command line); decimal strings are exact at any precision.
+          Floats mean the shortest decimal text of their float64 value (0.1 is the decimal 0.1,
+          as on the tool's command line; a numpy.float32 is widened to float64 first, so
+          float32(1.1) is 1.100000023841858); decimal strings are exact at any precision.
 profile   'flat' (the paper's punch), 'sphere', 'cone', 'power:N', 'wearflat:LAMBDA',
           'profile:FILE', or a Profile from profile().
 type      None/'double' (float64 ndarray, correctly rounded: the nearest double of the exact
