@@ -243,7 +243,7 @@ TEST(Waveforms, ColumnSelection) {
       EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
     }
   };
-  refused([&] { parse_wave("samples:" + path); }, "3 columns: expected one column of values");
+  refused([&] { parse_wave("samples:" + path); }, "3 columns ('t', 'a', 'b'): expected one column of values");
   refused([&] { parse_wave("samples:" + path, {"c"}); },
           "column 'c' is not in the header of '" + path + "': expected one of 't', 'a', 'b' or an index 1 to 3");
   refused([&] { parse_wave("samples:" + path, {"4"}); },
