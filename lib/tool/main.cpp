@@ -453,15 +453,19 @@ nlohmann::ordered_json json_record(const std::vector<std::string>& names, const 
   return j;
 }
 
+// --diagnostics lines, written to stderr only when the command succeeds: bad input after the wave
+// was read stays one line.
+std::string pending_diagnostics;
+
 // The wave of --wave, its value column (--column) and, with --diagnostics, the normalisation a
-// user wave went through (model.md, user waveforms), on stderr so that stdout stays data.
+// user wave went through (model.md, user waveforms), for stderr so that stdout stays data.
 WaveSpec read_wave(const Args& a) {
   WaveReadOptions options;
   if (a.flags.count("column")) options.column = a.flags.at("column");
   WaveSpec wave = parse_wave(need(a, "wave"), options);
   if (switch_on(a, "diagnostics"))
     for (const auto& [name, value] : describe_normalisation(wave, 17))
-      std::cerr << "normalisation: " << name << " = " << value << '\n';
+      pending_diagnostics += "normalisation: " + name + " = " + value + "\n";
   return wave;
 }
 
@@ -775,17 +779,29 @@ std::string one_line(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  pending_diagnostics.clear();
   try {
     const Args a = parse_args(argc, argv);
     if (a.help) return 0;
-    if (a.command == "mu") return run_mu_psi(a, Quantity::mu);
-    if (a.command == "psi") return run_mu_psi(a, Quantity::psi);
-    if (a.command == "sweep") return run_sweep(a);
-    if (a.command == "physical") return run_physical(a);
-    if (a.command == "trace") return run_trace(a);
-    if (a.command == "fit") return run_fit(a);
-    if (a.command == "version") return run_version();
-    return run_verify(a);
+    int rc = 0;
+    if (a.command == "mu")
+      rc = run_mu_psi(a, Quantity::mu);
+    else if (a.command == "psi")
+      rc = run_mu_psi(a, Quantity::psi);
+    else if (a.command == "sweep")
+      rc = run_sweep(a);
+    else if (a.command == "physical")
+      rc = run_physical(a);
+    else if (a.command == "trace")
+      rc = run_trace(a);
+    else if (a.command == "fit")
+      rc = run_fit(a);
+    else if (a.command == "version")
+      rc = run_version();
+    else
+      rc = run_verify(a);
+    std::cerr << pending_diagnostics;
+    return rc;
   } catch (const InputError& e) {
     std::cerr << "vibrofric: " << one_line(e.what()) << '\n';
     return 2;

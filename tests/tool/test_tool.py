@@ -1414,6 +1414,9 @@ def cli_tests():
     bad("range N = 1 with FROM != TO", ["sweep", "--wave", "sine", "--beta", "1:3:1", "--gamma", "0.5"], [], ["N = 1", "FROM = TO"])
     bad("fourier k not an integer: the limit is 100000",
         ["mu", "--wave", "fourier:" + write("k15.txt", "1.5 0 5\n"), "--beta", "1", "--gamma", "0"], ["'1.5'"], ["100000"])
+    bad("--diagnostics then a bad gamma: still one line, no normalisation lines",
+        ["mu", "--wave", "samples:" + write("diag-bad.txt", "0\n1\n0.5\n-1\n"), "--diagnostics", "--beta", "1",
+         "--gamma", "0.x"], ["'0.x'"], ["--gamma"])
     bad("--column unknown name", ["mu", "--wave", "samples:" + write("three-b.csv", "time,x,y\n0,5,1\n1,6,3\n2,7,2\n3,5,1\n"),
                                   "--column", "z", "--beta", "1", "--gamma", "0"], ["'z'"], ["column"])
     bad("--column on a catalogue wave", mu + ["--column", "2"], [], ["column"])
