@@ -1,0 +1,294 @@
+#!/usr/bin/env python3
+"""Mutation testing of lib/: apply each mutant of tests/mutation/patches to a clean copy of the
+committed tree, rebuild incrementally, run ctest, and record whether the suite kills it.
+
+    tests/mutation/run.py                      # every mutant of the index (hours on 2 cores)
+    tests/mutation/run.py --only m03-events-wrap-shift,m17-rounding-test-one-sided
+    tests/mutation/run.py --smoke              # the two smoke mutants (ctest: mutation.smoke)
+
+The copy is HEAD of this repository (`git archive`), in WORK/src with its build in WORK/build
+(default WORK = build/mutation): -O1, no benchmarks. A later run at another commit updates only
+the files that changed, so the build stays incremental. Per mutant: patch, build, ctest (the
+release preset's selection: everything but label `slow`), patch -R. A mutant is
+
+  killed          some test failed or timed out (listed, with the time),
+  survived        every test passed,
+  does-not-build  the build failed (not counted in the score),
+  equivalent      survived, and the index's equivalence list argues no input changes any output.
+
+The unmutated tree must build and pass first (the baseline); its slowest test sets the per-test
+timeout. Results go to WORK/results.jsonl (one line per mutant, appended as they finish) and, for a
+full run, to tests/mutation/results/latest.json and latest.md (the report's mutation section).
+"""
+import argparse
+import datetime
+import filecmp
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+INDEX = os.path.join(HERE, "README.md")
+PATCHES = os.path.join(HERE, "patches")
+RESULTS = os.path.join(HERE, "results")
+
+# The smoke mutants: cheap to rebuild (one .cpp each) and killed by one quick test of the tool.
+SMOKE = ["m25-tool-range-linear-step", "m28-physical-cone-length-factor"]
+SMOKE_TARGETS = ["vibrofric-tool"]
+SMOKE_TESTS = "^tool\\.cli$"
+
+
+def fail(msg):
+    print("run.py: " + msg, file=sys.stderr)
+    sys.exit(2)
+
+
+def read_index():
+    """Rows `| id | area | what it breaks | regime |` of the mutant table, and the equivalence
+    arguments `- id: why` under the heading "Equivalent mutants"."""
+    rows, equivalent, section = [], {}, ""
+    for line in open(INDEX, encoding="utf-8"):
+        if line.startswith("#"):
+            section = line.strip("# \n").lower()
+            continue
+        m = re.match(r"\|\s*(m\d\d-[a-z0-9-]+)\s*\|\s*([a-z-]+)\s*\|(.*)\|(.*)\|\s*$", line)
+        if m and section.startswith("mutants"):
+            rows.append({"id": m.group(1), "area": m.group(2), "breaks": m.group(3).strip(),
+                         "regime": m.group(4).strip()})
+        m = re.match(r"-\s*`?(m\d\d-[a-z0-9-]+)`?:\s*(.*)", line)
+        if m and section.startswith("equivalent"):
+            equivalent[m.group(1)] = m.group(2).strip()
+    ids = [r["id"] for r in rows]
+    if len(set(ids)) != len(ids):
+        fail("the index lists a mutant twice")
+    files = sorted(f[:-6] for f in os.listdir(PATCHES) if f.endswith(".patch"))
+    if sorted(ids) != files:
+        fail("index and patches differ: only in the index %s, only as patches %s" %
+             (sorted(set(ids) - set(files)), sorted(set(files) - set(ids))))
+    for e in equivalent:
+        if e not in ids:
+            fail("equivalence argued for unknown mutant " + e)
+    return rows, equivalent
+
+
+def sh(cmd, cwd=None, timeout=None, log=None):
+    t0 = time.time()
+    try:
+        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                           timeout=timeout)
+        code, out = p.returncode, p.stdout
+    except subprocess.TimeoutExpired as e:
+        code, out = "timeout", (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
+    if log:
+        with open(log, "a") as f:
+            f.write("$ %s\n%s\n" % (" ".join(cmd), out))
+    return code, out, time.time() - t0
+
+
+def sync_copy(src_dir):
+    """WORK/src := HEAD, rewriting only files whose content changed (keeps the build incremental)."""
+    commit = subprocess.check_output(["git", "rev-parse", "HEAD"], cwd=ROOT, text=True).strip()
+    dirty = subprocess.run(["git", "diff", "--quiet", "HEAD", "--", "lib", "tests", "CMakeLists.txt"],
+                           cwd=ROOT).returncode != 0
+    with tempfile.TemporaryDirectory() as tmp:
+        tar = os.path.join(tmp, "head.tar")
+        subprocess.check_call(["git", "archive", "-o", tar, "HEAD"], cwd=ROOT)
+        fresh = os.path.join(tmp, "tree")
+        with tarfile.open(tar) as t:
+            t.extractall(fresh)
+        os.makedirs(src_dir, exist_ok=True)
+        for base, dirs, files in os.walk(fresh):
+            rel = os.path.relpath(base, fresh)
+            os.makedirs(os.path.join(src_dir, rel), exist_ok=True)
+            for f in files:
+                a, b = os.path.join(base, f), os.path.join(src_dir, rel, f)
+                if not os.path.exists(b) or not filecmp.cmp(a, b, shallow=False):
+                    shutil.copy2(a, b)
+                    os.utime(b)  # newer than any object built from the old content
+        for base, dirs, files in os.walk(src_dir):
+            rel = os.path.relpath(base, src_dir)
+            for f in files:
+                if not os.path.exists(os.path.join(fresh, rel, f)):
+                    os.remove(os.path.join(base, f))
+    return commit, dirty
+
+
+def failed_tests(build):
+    path = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
+    if not os.path.exists(path):
+        return []
+    return [line.strip().split(":", 1)[1] for line in open(path) if ":" in line]
+
+
+def test_times(output):
+    """name -> seconds, from ctest's progress lines."""
+    times = {}
+    for m in re.finditer(r"Test\s+#\d+: (\S+) \.+.*?([\d.]+) sec", output):
+        times[m.group(1)] = float(m.group(2))
+    return times
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--work", default=os.path.join(ROOT, "build", "mutation"))
+    ap.add_argument("--only", default="", help="comma-separated mutant ids")
+    ap.add_argument("--smoke", action="store_true", help="the two smoke mutants, the tool only")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--stop-on-failure", action="store_true",
+                    help="stop a mutant's ctest at its first failing test (faster; lists one killer)")
+    a = ap.parse_args()
+
+    rows, equivalent = read_index()
+    by_id = {r["id"]: r for r in rows}
+    chosen = SMOKE if a.smoke else ([s for s in a.only.split(",") if s] or [r["id"] for r in rows])
+    for c in chosen:
+        if c not in by_id:
+            fail("unknown mutant '%s': expected an id of %s" % (c, os.path.relpath(INDEX, ROOT)))
+    full = not a.smoke and not a.only
+
+    work = os.path.abspath(a.work)
+    src, build = os.path.join(work, "src"), os.path.join(work, "build")
+    os.makedirs(work, exist_ok=True)
+    log = os.path.join(work, "run.log")
+    open(log, "w").close()
+    commit, dirty = sync_copy(src)
+    started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    print("mutation run at %s%s, %d mutant(s), work %s" % (commit[:12], " (lib/tests differ from HEAD: "
+          "the run tests HEAD)" if dirty else "", len(chosen), work), flush=True)
+
+    configure = ["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                 "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG", "-DVIBROFRIC_BUILD_BENCHMARKS=OFF"]
+    if a.smoke:
+        configure += ["-DVIBROFRIC_BUILD_PROOFS=OFF", "-DVIBROFRIC_PYTHON=OFF"]
+    code, out, _ = sh(configure, log=log)
+    if code != 0:
+        fail("configure failed (see %s)" % log)
+    build_cmd = ["cmake", "--build", build, "-j", str(a.jobs)]
+    if a.smoke:
+        build_cmd += ["--target"] + SMOKE_TARGETS
+    ctest = ["ctest", "--test-dir", build, "-j", str(a.jobs), "-LE", "^(slow|mutation)$"]
+    if a.smoke:
+        ctest += ["-R", SMOKE_TESTS]
+
+    # Baseline: the unmutated copy builds and passes, and gives each test's time.
+    code, out, t_build = sh(build_cmd, log=log)
+    if code != 0:
+        fail("the unmutated tree does not build (see %s)" % log)
+    code, out, t_test = sh(ctest + ["--timeout", "1800"], log=log)
+    if code != 0:
+        fail("the unmutated tree fails its tests: %s (see %s)" % (", ".join(failed_tests(build)), log))
+    base_times = test_times(out)
+    timeout = max(120, int(5 * max(base_times.values() or [60])))
+    print("baseline: build %.0f s, %d tests pass in %.0f s; per-test timeout %d s" %
+          (t_build, len(base_times), t_test, timeout), flush=True)
+
+    results_path = os.path.join(work, "results.jsonl")
+    results = []
+    for k, mid in enumerate(chosen):
+        patch = os.path.join(PATCHES, mid + ".patch")
+        r = dict(by_id[mid])
+        code, out, _ = sh(["patch", "-p1", "-s", "-N", "-i", patch], cwd=src, log=log)
+        if code != 0:
+            fail("%s does not apply to %s: %s" % (mid, commit[:12], out.strip()))
+        try:
+            code, out, r["build_s"] = sh(build_cmd, timeout=3600, log=log)
+            if code != 0:
+                r["status"], r["killed_by"], r["test_s"] = "does-not-build", [], 0
+            else:
+                cmd = ctest + ["--timeout", str(timeout)] + (["--stop-on-failure"] if a.stop_on_failure else [])
+                code, out, r["test_s"] = sh(cmd, timeout=4 * 3600, log=log)
+                killers = failed_tests(build) if code != 0 else []
+                if code != 0 and not killers:
+                    killers = ["(ctest: %s)" % code]
+                timed_out = re.findall(r"Test\s+#\d+: (\S+) \.+\*\*\*Timeout", out)
+                r["killed_by"] = killers
+                r["timed_out"] = timed_out
+                if killers:
+                    r["status"] = "killed"
+                elif mid in equivalent:
+                    r["status"], r["why_equivalent"] = "equivalent", equivalent[mid]
+                else:
+                    r["status"] = "survived"
+        finally:
+            code, out, _ = sh(["patch", "-p1", "-s", "-R", "-i", patch], cwd=src, log=log)
+            if code != 0:
+                fail("could not revert %s: %s (remove %s and rerun)" % (mid, out.strip(), work))
+        results.append(r)
+        with open(results_path, "a") as f:
+            f.write(json.dumps(dict(r, commit=commit)) + "\n")
+        print("[%d/%d] %-42s %-14s build %4.0f s, tests %4.0f s  %s" % (
+            k + 1, len(chosen), mid, r["status"], r["build_s"], r["test_s"],
+            ", ".join(r.get("killed_by", [])[:4]) + (" …" if len(r.get("killed_by", [])) > 4 else "")), flush=True)
+
+    counted = [r for r in results if r["status"] in ("killed", "survived")]
+    killed = sum(r["status"] == "killed" for r in results)
+    score = 100.0 * killed / len(counted) if counted else 0.0
+    print("score: %d of %d non-equivalent mutants killed (%.1f %%); %d equivalent, %d do not build" % (
+        killed, len(counted), score, sum(r["status"] == "equivalent" for r in results),
+        sum(r["status"] == "does-not-build" for r in results)))
+    if a.smoke:
+        bad = [r["id"] for r in results if r["status"] != "killed"]
+        if bad:
+            fail("smoke mutants not killed: " + ", ".join(bad))
+        return
+    if full:
+        summary = {"commit": commit, "dirty": dirty, "started": started,
+                   "finished": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+                   "baseline": {"build_s": round(t_build), "test_s": round(t_test), "tests": len(base_times)},
+                   "stop_on_failure": a.stop_on_failure, "score": score, "mutants": results}
+        os.makedirs(RESULTS, exist_ok=True)
+        with open(os.path.join(RESULTS, "latest.json"), "w") as f:
+            json.dump(summary, f, indent=1)
+        with open(os.path.join(RESULTS, "latest.md"), "w") as f:
+            f.write(markdown(summary))
+        print("wrote %s" % os.path.relpath(os.path.join(RESULTS, "latest.md"), ROOT))
+
+
+def markdown(s):
+    """The summary that the report includes: score, per-area table, survivors and equivalents."""
+    ms = s["mutants"]
+    L = ["Mutation run of commit `%s`%s, %s to %s: %d mutants, per-mutant ctest of the release selection "
+         "(all but labels `slow` and `mutation`)%s." % (s["commit"][:12], " (dirty)" if s["dirty"] else "", s["started"],
+                                        s["finished"], len(ms),
+                                        ", stopped at the first failing test" if s["stop_on_failure"] else ""),
+         ""]
+    counted = [m for m in ms if m["status"] in ("killed", "survived")]
+    L.append("**Score: %d of %d non-equivalent mutants killed (%.1f %%)**; %d argued equivalent, %d do not build." % (
+        sum(m["status"] == "killed" for m in ms), len(counted), s["score"],
+        sum(m["status"] == "equivalent" for m in ms), sum(m["status"] == "does-not-build" for m in ms)))
+    L += ["", "| area | mutants | killed | survived | equivalent |", "|---|---|---|---|---|"]
+    areas = []
+    for m in ms:
+        if m["area"] not in areas:
+            areas.append(m["area"])
+    for area in areas:
+        sub = [m for m in ms if m["area"] == area]
+        L.append("| %s | %d | %d | %d | %d |" % (area, len(sub), sum(m["status"] == "killed" for m in sub),
+                                               sum(m["status"] == "survived" for m in sub),
+                                               sum(m["status"] == "equivalent" for m in sub)))
+    L += ["", "| mutant | what it breaks | status | killed by | build / tests (s) |", "|---|---|---|---|---|"]
+    for m in ms:
+        killers = m.get("killed_by", [])
+        shown = ", ".join("`%s`" % k for k in killers[:3]) + (" and %d more" % (len(killers) - 3) if len(killers) > 3 else "")
+        L.append("| `%s` | %s | %s | %s | %.0f / %.0f |" % (m["id"], m["breaks"], m["status"], shown or "—",
+                                                          m["build_s"], m["test_s"]))
+    eq = [m for m in ms if m["status"] == "equivalent"]
+    if eq:
+        L += ["", "Equivalent mutants (no input changes any output):", ""]
+        L += ["- `%s`: %s" % (m["id"], m["why_equivalent"]) for m in eq]
+    sv = [m for m in ms if m["status"] == "survived"]
+    if sv:
+        L += ["", "Survivors (not yet killed):", ""]
+        L += ["- `%s`: %s (%s)" % (m["id"], m["breaks"], m["regime"]) for m in sv]
+    return "\n".join(L) + "\n"
+
+
+if __name__ == "__main__":
+    main()
