@@ -1423,6 +1423,110 @@ def cli_tests():
 
 
 
+# --------------------------------------------------------------------------------------------
+# 8. What verify publishes besides verdicts: case counts, measured details, both output formats
+# --------------------------------------------------------------------------------------------
+
+def claim_detail_tests():
+    def claim(key):
+        return json.loads(ok_run(["verify", "--digits", "12", "--claim", key, "--format", "json"]))["claims"][0]
+
+    def text_and_json_agree():
+        # Two printers of one record: every field the text format shows must be the JSON's.
+        labels = {"method": "method", "checked": "how", "criterion": "criterion", "worst": "worst",
+                  "scope": "scope", "fails": "fails_where", "corrected": "corrected"}
+        for key in ("eq23", "eq24", "entanglement", "sec3", "eq6-jumping"):
+            c = claim(key)
+            c["method"] += " (%s)" % c["proof"] if c["proof"] else ""  # the text names the proof file
+            shown = {}
+            for line in ok_run(["verify", "--digits", "12", "--claim", key]).splitlines():
+                m = re.match(r"  (\w+):\s+(.*)$", line)
+                if m and m.group(1) in labels and m.group(1) not in shown:
+                    shown[m.group(1)] = m.group(2)
+            for label, field in labels.items():
+                if c[field] and shown.get(label) != c[field]:
+                    raise Fail("verify --claim %s: text %s %r, JSON %s %r" % (key, label, shown.get(label), field, c[field]))
+                if not c[field] and label in shown:
+                    raise Fail("verify --claim %s: text shows %s %r, JSON %s is empty" % (key, label, shown[label], field))
+    test("verify: the text and JSON formats publish the same fields", text_and_json_agree)
+
+    def sec3_cases():
+        # The case count is the grid the claim states: "WAVES (gamma = LIST)" groups in `how`.
+        c = claim("sec3")
+        groups = re.findall(r"((?:[\w:.]+, )*[\w:.]+) \(gamma = ([-\d., ]+)\)", c["how"])
+        stated = sum(len(w.split(", ")) * len(g.split(", ")) for w, g in groups)
+        if len(groups) != 2 or stated != 5 * 6 + 2 * 3 or c["cases"] != stated:
+            raise Fail("verify sec3: %d cases, its grid %r states %d" % (c["cases"], groups, stated))
+    test("verify sec3: the case count is the stated grid (power caps at gamma <= 0, including 0)", sec3_cases)
+
+    def eq23_order():
+        # The published order is log(d1/d2)/log(h1/h2) of the two published deviations it names: with
+        # both printed to 3 digits, the order from their rounding intervals must meet the printed order's.
+        c = claim("eq23")
+        dev = {float(re.search(r"gamma0 = (\S+)$", n).group(1)): v for n, v in c["measured"]
+               if n.startswith("largest deviation for gamma0")}
+        name, order = [(n, Decimal(v)) for n, v in c["measured"] if n.startswith("order of the deviation")][0]
+        g1, g2 = [float(x) for x in re.search(r"from gamma0 = (\S+), (\S+)$", name).groups()]
+        d1, d2 = F(dev[g1]), F(dev[g2])
+        h = math.log((1 + g1) / (1 + g2))
+        u1, u2 = half_ulp(dev[g1]), half_ulp(dev[g2])
+        lo, hi = math.log((d1 - u1) / (d2 + u2)) / h, math.log((d1 + u1) / (d2 - u2)) / h
+        half = Decimal(10) ** (order.as_tuple().exponent) / 2
+        if not (float(order - half) <= hi and lo <= float(order + half)) or (g1, g2) != (-0.99, -0.999):
+            raise Fail("verify eq23: order %s from gamma0 = %s, %s; the deviations %s, %s give %.4f to %.4f" % (
+                order, g1, g2, d1, d2, lo, hi))
+    test("verify eq23: the published order follows from the published deviations", eq23_order)
+
+    def entanglement_range():
+        # |D| = |mu - (1 - Psi/gamma)| over the stated grid, recomputed from mu and psi at 20 digits.
+        c = claim("entanglement")
+        lines = dict(c["measured"])
+        for wave, name in (("sine", "sine"), ("square", "square")):
+            psi = {b: Decimal(ok_run(["psi", "--wave", wave, "--beta", b, "--digits", "20"]))
+                   for b in ("0.1", "0.5", "1", "1.5")}
+            ds = [abs(F(ok_run(["mu", "--wave", wave, "--beta", b, "--gamma", g, "--digits", "20"]).strip())
+                      - (1 - F(str(psi[b])) / F(g)))
+                  for b in psi for g in ("0.9", "0.5", "0.2", "-0.3", "-0.7")]
+            got = re.match(r"(\S+) to (\S+);", lines["%s: |D| over the grid (in mu0); separability defect E" % name])
+            for printed, want in zip(got.groups(), (min(ds), max(ds))):
+                if abs(F(printed) - want) > half_ulp(printed):
+                    raise Fail("verify entanglement %s: |D| range %s, recomputed %s to %s" % (
+                        wave, got.groups(), dec(min(ds), 6), dec(max(ds), 6)))
+    test("verify entanglement: the published |D| range is the grid's, recomputed from mu and psi", entanglement_range)
+
+
+def range_and_fit_detail_tests():
+    for spec in ("log:1:0:3", "log:1:-0.5:3"):
+        bad("--gamma %s (a log range through or past zero)" % spec,
+            ["sweep", "--wave", "tri", "--beta", "1:1:1", "--gamma", spec], ["'%s'" % spec], ["TO > 0"])
+
+    def range_values_17_digits():
+        # Interior points of a range are FROM + (TO - FROM) i/(N - 1) rounded to 17 significant digits
+        # (the round-trip digits of a double), then evaluated: 1/3 and 2/3 here, exact references.
+        out = ok_run(["sweep", "--wave", "tri", "--beta", "1:1:1", "--gamma", "0:1:4", "--digits", "20"])
+        betas = [line.split(",")[2] for line in out.strip().splitlines()[1:]]
+        want = ["0", dec(Fraction(1, 3), 17), dec(Fraction(2, 3), 17), "1"]
+        if betas != want:
+            raise Fail("sweep --gamma 0:1:4 printed gamma %r, expected %r" % (betas, want))
+    test("sweep: interior range points carry 17 significant digits", range_values_17_digits)
+
+    def fit_condition_number():
+        # Time stamps j/N over one period: the design [1, cos 2 pi k phi, sin 2 pi k phi] has orthogonal
+        # columns of squared norms N, N/2, ..., so ||A||_F ||A^+||_F = sqrt((1 + K)(1 + 4K)) exactly.
+        n = 12
+        rows = ["t,y"] + ["%r,%r" % (j / n, math.sin(2 * math.pi * (j % n) / n) + 0.3 * math.cos(4 * math.pi * (j % n) / n))
+                          for j in range(n + 1)]
+        path = write("fit-stamped.csv", "\n".join(rows) + "\n")
+        for k in (1, 2, 3):
+            out = ok_run(["fit", "--wave", "samples:" + path, "--harmonics", str(k)])
+            got = re.search(r"condition number (\S+)", out)
+            want = Fraction(Decimal((1 + k) * (1 + 4 * k)).sqrt(decimal.Context(prec=40)))
+            if not got:
+                raise Fail("fit --harmonics %d of time stamps: no condition number in %r" % (k, out[:300]))
+            expect_digits(got.group(1), want, 3, "fit --harmonics %d: condition number" % k)
+    test("fit: the condition number of a uniform stamped design is sqrt((1 + K)(1 + 4K))", fit_condition_number)
+
+
 def main():
     t0 = time.time()
     bad_input_tests()
@@ -1432,6 +1536,8 @@ def main():
     double_accuracy_tests()
     failure_tests()
     cli_tests()
+    claim_detail_tests()
+    range_and_fit_detail_tests()
     print("# %.1f s" % (time.time() - t0))
     print("%d passed, %d failed" % (passed, failed))
     return 1 if failed else 0
