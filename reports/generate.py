@@ -602,6 +602,7 @@ def main():
     w("")
     curved_section(w, claims, figs, a.bench_json)
     bench_section(w, a.bench_json, r)
+    mutation_section(w, os.path.join(ROOT, "tests", "mutation", "results", "latest.md"))
     w("## Reproduce")
     w("")
     w("On Debian 12, from a clone (the README's main command):")
@@ -807,6 +808,23 @@ plot %s
         w("")
         w("*Cost of one solver evaluation in mpfr against digits, per wave (log–log).*")
         w("")
+
+
+def mutation_section(w, path):
+    w("## The suite's power (mutation testing)")
+    w("")
+    w("Each mutant of [`tests/mutation/`](../tests/mutation/README.md) is one small bug patched into `lib/`; "
+      "`tests/mutation/run.py` rebuilds a copy of the tree with it and runs `ctest`. A mutant is killed when a "
+      "test fails. The run takes hours, so it is not part of this report's command; this is the last run's "
+      "summary, written by `run.py`, with its own commit and dates.")
+    w("")
+    if not os.path.exists(path):
+        w("No mutation results at `%s`: run `tests/mutation/run.py`." % os.path.relpath(path, ROOT))
+        w("")
+        return
+    for line in open(path).read().splitlines():
+        w("#" + line if line.startswith("#") else line)
+    w("")
 
 
 if __name__ == "__main__":

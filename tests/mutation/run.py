@@ -17,8 +17,10 @@ release preset's selection: everything but label `slow`), patch -R. A mutant is
   equivalent      survived, and the index's equivalence list argues no input changes any output.
 
 The unmutated tree must build and pass first (the baseline); its slowest test sets the per-test
-timeout. Results go to WORK/results.jsonl (one line per mutant, appended as they finish) and, for a
-full run, to tests/mutation/results/latest.json and latest.md (the report's mutation section).
+timeout. Results go to WORK/results.jsonl (one line per mutant, appended as they finish) and to
+tests/mutation/results/latest.json and latest.md (the report's mutation section): a full run
+replaces them, a run of some mutants (--only) replaces those mutants' records, each record keeping
+the commit it was run at.
 """
 import argparse
 import datetime
@@ -230,7 +232,7 @@ def main():
     counted = [r for r in results if r["status"] in ("killed", "survived")]
     killed = sum(r["status"] == "killed" for r in results)
     score = 100.0 * killed / len(counted) if counted else 0.0
-    print("score: %d of %d non-equivalent mutants killed (%.1f %%); %d equivalent, %d do not build" % (
+    print("this run's score: %d of %d non-equivalent mutants killed (%.1f %%); %d equivalent, %d do not build" % (
         killed, len(counted), score, sum(r["status"] == "equivalent" for r in results),
         sum(r["status"] == "does-not-build" for r in results)))
     if a.smoke:
@@ -238,27 +240,50 @@ def main():
         if bad:
             fail("smoke mutants not killed: " + ", ".join(bad))
         return
+    for r in results:
+        r["commit"] = commit
+    latest = os.path.join(RESULTS, "latest.json")
     if full:
-        summary = {"commit": commit, "dirty": dirty, "started": started,
-                   "finished": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-                   "baseline": {"build_s": round(t_build), "test_s": round(t_test), "tests": len(base_times)},
-                   "stop_on_failure": a.stop_on_failure, "score": score, "mutants": results}
-        os.makedirs(RESULTS, exist_ok=True)
-        with open(os.path.join(RESULTS, "latest.json"), "w") as f:
-            json.dump(summary, f, indent=1)
-        with open(os.path.join(RESULTS, "latest.md"), "w") as f:
-            f.write(markdown(summary))
-        print("wrote %s" % os.path.relpath(os.path.join(RESULTS, "latest.md"), ROOT))
+        summary = {"runs": [], "mutants": results}
+    elif os.path.exists(latest):
+        # A rerun of some mutants (after a test was added for a survivor) replaces their records;
+        # each record keeps the commit it was run at, and the summary lists every run.
+        summary = json.load(open(latest))
+        if "runs" not in summary:  # written by the first version of this script: one run
+            summary["runs"] = [{k: summary.pop(k) for k in ("commit", "dirty", "started", "finished", "baseline",
+                                                            "stop_on_failure")}]
+            summary["runs"][0]["mutants"] = len(summary["mutants"])
+        done = {r["id"]: r for r in results}
+        summary["mutants"] = [done.get(m["id"], m) for m in summary["mutants"]]
+    else:
+        return
+    summary["runs"].append({"commit": commit, "dirty": dirty, "started": started, "mutants": len(results),
+                            "finished": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+                            "baseline": {"build_s": round(t_build), "test_s": round(t_test), "tests": len(base_times)},
+                            "stop_on_failure": a.stop_on_failure})
+    ms = summary["mutants"]
+    counted = [m for m in ms if m["status"] in ("killed", "survived")]
+    summary["score"] = 100.0 * sum(m["status"] == "killed" for m in ms) / len(counted) if counted else 0.0
+    os.makedirs(RESULTS, exist_ok=True)
+    with open(latest, "w") as f:
+        json.dump(summary, f, indent=1)
+    with open(os.path.join(RESULTS, "latest.md"), "w") as f:
+        f.write(markdown(summary))
+    print("wrote %s (score over the recorded mutants %.1f %%)" % (
+        os.path.relpath(os.path.join(RESULTS, "latest.md"), ROOT), summary["score"]))
 
 
 def markdown(s):
     """The summary that the report includes: score, per-area table, survivors and equivalents."""
     ms = s["mutants"]
-    L = ["Mutation run of commit `%s`%s, %s to %s: %d mutants, per-mutant ctest of the release selection "
-         "(all but labels `slow` and `mutation`)%s." % (s["commit"][:12], " (dirty)" if s["dirty"] else "", s["started"],
-                                        s["finished"], len(ms),
-                                        ", stopped at the first failing test" if s["stop_on_failure"] else ""),
-         ""]
+    L = ["Per mutant: an incremental -O1 build and the release ctest selection (all but labels `slow` and "
+         "`mutation`). Runs recorded here:", ""]
+    for run in s["runs"]:
+        L.append("- commit `%s`%s, %s to %s: %d mutant(s); baseline %d tests pass in %d s%s." % (
+            run["commit"][:12], " (dirty)" if run["dirty"] else "", run["started"], run["finished"], run["mutants"],
+            run["baseline"]["tests"], run["baseline"]["test_s"],
+            "; each mutant's ctest stopped at its first failing test" if run["stop_on_failure"] else ""))
+    L.append("")
     counted = [m for m in ms if m["status"] in ("killed", "survived")]
     L.append("**Score: %d of %d non-equivalent mutants killed (%.1f %%)**; %d argued equivalent, %d do not build." % (
         sum(m["status"] == "killed" for m in ms), len(counted), s["score"],
@@ -273,12 +298,12 @@ def markdown(s):
         L.append("| %s | %d | %d | %d | %d |" % (area, len(sub), sum(m["status"] == "killed" for m in sub),
                                                sum(m["status"] == "survived" for m in sub),
                                                sum(m["status"] == "equivalent" for m in sub)))
-    L += ["", "| mutant | what it breaks | status | killed by | build / tests (s) |", "|---|---|---|---|---|"]
+    L += ["", "| mutant | what it breaks | status | killed by | commit | build / tests (s) |", "|---|---|---|---|---|---|"]
     for m in ms:
         killers = m.get("killed_by", [])
         shown = ", ".join("`%s`" % k for k in killers[:3]) + (" and %d more" % (len(killers) - 3) if len(killers) > 3 else "")
-        L.append("| `%s` | %s | %s | %s | %.0f / %.0f |" % (m["id"], m["breaks"], m["status"], shown or "—",
-                                                          m["build_s"], m["test_s"]))
+        L.append("| `%s` | %s | %s | %s | `%s` | %.0f / %.0f |" % (m["id"], m["breaks"], m["status"], shown or "—",
+                                                                  m["commit"][:8], m["build_s"], m["test_s"]))
     eq = [m for m in ms if m["status"] == "equivalent"]
     if eq:
         L += ["", "Equivalent mutants (no input changes any output):", ""]

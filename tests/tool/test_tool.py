@@ -1526,6 +1526,15 @@ def range_and_fit_detail_tests():
             expect_digits(got.group(1), want, 3, "fit --harmonics %d: condition number" % k)
     test("fit: the condition number of a uniform stamped design is sqrt((1 + K)(1 + 4K))", fit_condition_number)
 
+    def power_far_beyond_the_digits():
+        # power:p tends to the square wave with a distance O(1/p) (Eq. 21-22): at p = 1e150 and 1e250 the
+        # 20-digit value is Eq. 22's beta/(4(1 + gamma)) = 1/6. Resolving the flanks (width ~1/p) takes
+        # ~p digits of working precision, far above the 20 asked for: the ladder must get there.
+        for p in ("1e150", "1e250"):
+            expect_digits(ok_run(["mu", "--wave", "power:" + p, "--beta", "1", "--gamma", "0.5", "--digits", "20"]).strip(),
+                          Fraction(1, 6), 20, "power:%s at 20 digits (Eq. 22 limit)" % p)
+    test("mu: power:p with p far above 10^digits reaches the square wave's value (Eq. 22)", power_far_beyond_the_digits)
+
 
 def main():
     t0 = time.time()

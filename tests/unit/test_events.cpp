@@ -1,0 +1,113 @@
+// Returned quantities besides μ̄, at the working precision: event phases (Eqs. 4 and 8) against the
+// same solver at twice the digits, the sine's value and slope next to its extrema against mpfr, and
+// Ziv's rounding test of the precision ladder (evaluate_impl.hpp) on values next to a midpoint.
+#include <gtest/gtest.h>
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include "vibrofric/catalogue.hpp"
+#include "vibrofric/detail/evaluate_impl.hpp"
+#include "vibrofric/solver.hpp"
+
+namespace {
+
+using namespace vibrofric;
+
+struct Case {
+  const char* wave;
+  const char* beta;
+  const char* gamma;
+};
+
+// Sticks ending on curved flanks (root finders, not closed forms): without jumping across φ = 1,
+// in the jumping range, a power-law cap and the wrap of a stick past argmin w.
+const Case cases[] = {{"sine", "1", "1.5"}, {"sine", "3", "-0.5"}, {"sine", "0.7", "0.2"},
+                      {"power:3", "2", "0.2"}, {"power:3", "5", "-0.4"}};
+
+// Event phases of Real against mpfr at 2·digits + 20: each stick end is a root of d = n − ramp,
+// whose evaluation carries a rounding of about 8 eps (|γ| + 2 + |level| + β) (solver.hpp), so the
+// root is determined to that over |d'| = |n' − β| at the end, plus a few eps of the phase itself.
+// Stick begins by n' = β come from closed forms or the same root finders.
+template <class Real>
+void event_phases_at_working_precision() {
+  const int d = working_digits10<Real>();
+  for (const Case& c : cases) {
+    std::vector<StickPhase<Real>> got;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real beta = parse_real<Real>(c.beta, "beta"), gamma = parse_real<Real>(c.gamma, "gamma");
+    {
+      const auto w = make_waveform<Real>(parse_wave(c.wave));
+      got = solve(*w, beta, gamma).stick_phases;
+    }
+    PrecisionScope scope(static_cast<unsigned>(2 * d + 20));
+    const auto w = make_waveform<mpfr>(parse_wave(c.wave));
+    const mpfr b(c.beta), g(c.gamma);
+    const auto ref = solve(*w, b, g).stick_phases;
+    ASSERT_FALSE(ref.empty()) << c.wave << " beta " << c.beta << " gamma " << c.gamma;
+    ASSERT_EQ(got.size(), ref.size()) << c.wave << " beta " << c.beta << " gamma " << c.gamma;
+    for (std::size_t k = 0; k < ref.size(); ++k) {
+      const mpfr e(eps);
+      const mpfr end = ref[k].end;
+      const mpfr at = end - floor(end);
+      std::size_t piece = 0;
+      while (piece + 1 < w->piece_count() && w->piece_begin(piece + 1) <= at) ++piece;
+      const mpfr slope_gap = abs(w->slope(piece, at) - b);
+      const mpfr noise = 16 * e * (abs(g) + 2 + abs(mpfr(ref[k].level)) + b);
+      const mpfr end_tol = noise / slope_gap + 8 * e * (1 + abs(end));
+      const mpfr begin_tol = 8 * e * (1 + abs(mpfr(ref[k].begin)));
+      const std::string where = std::string(c.wave) + " beta " + c.beta + " gamma " + c.gamma + ", stick " +
+                                std::to_string(k) + " at " + std::to_string(d) + " digits";
+      EXPECT_LE(abs(mpfr(got[k].begin) - ref[k].begin), begin_tol) << where << ": begin";
+      EXPECT_LE(abs(mpfr(got[k].end) - end), end_tol) << where << ": end";
+      EXPECT_LE(abs(mpfr(got[k].level) - ref[k].level), 8 * e * (abs(g) + 2)) << where << ": level";
+    }
+  }
+}
+
+TEST(Events, StickPhasesDouble) { event_phases_at_working_precision<double>(); }
+TEST(Events, StickPhasesLongDouble) { event_phases_at_working_precision<long double>(); }
+TEST(Events, StickPhasesBin50) { event_phases_at_working_precision<boost::multiprecision::cpp_bin_float_50>(); }
+TEST(Events, StickPhasesMpfr40) {
+  PrecisionScope scope(40);
+  event_phases_at_working_precision<mpfr>();
+}
+
+// sin 2πφ and 2π cos 2πφ of the double sine within 4 ulp (relative) at phases 2^-j from the
+// quarters, where one of them is small: the reduction to the nearest quarter keeps them accurate.
+TEST(Events, SineValueAndSlopeNextToTheQuarters) {
+  const auto w = make_waveform<double>(parse_wave("sine"));
+  PrecisionScope scope(60);
+  const mpfr two_pi = 2 * boost::math::constants::pi<mpfr>();
+  for (int q = 0; q < 4; ++q) {
+    for (int j = 8; j <= 44; j += 4) {
+      for (double side : {-1.0, 1.0}) {
+        const double phi = q / 4.0 + side * std::ldexp(1.0, -j);
+        if (phi < 0) continue;
+        std::size_t piece = 0;
+        while (piece + 1 < w->piece_count() && w->piece_begin(piece + 1) <= phi) ++piece;
+        const mpfr x = two_pi * mpfr(phi);
+        const mpfr v = sin(x), s = two_pi * cos(x);
+        const double eps = std::numeric_limits<double>::epsilon();
+        EXPECT_LE(abs(mpfr(w->value(piece, phi)) - v), 4 * eps * abs(v)) << "value at " << phi;
+        EXPECT_LE(abs(mpfr(w->slope(piece, phi)) - s), 4 * eps * abs(s)) << "slope at " << phi;
+      }
+    }
+  }
+}
+
+// A long double x just above the midpoint of two doubles with an error bound e reaching below it:
+// the double is not decided, whichever side x itself rounds to. Clear of the midpoint it is.
+TEST(Events, RoundingTestSeesBothSidesOfTheInterval) {
+  using detail::rounds_alike;
+  const long double mid = 1.0L + std::ldexp(1.0L, -53);  // between 1 and 1 + 2^-52
+  const long double above = mid + std::ldexp(1.0L, -60), below = mid - std::ldexp(1.0L, -60);
+  const long double e = std::ldexp(1.0L, -58);
+  EXPECT_FALSE((rounds_alike<double, long double>(above, e)));
+  EXPECT_FALSE((rounds_alike<double, long double>(below, e)));
+  const long double clear = 1.0L + std::ldexp(1.0L, -55);  // a quarter ulp of double above 1
+  EXPECT_TRUE((rounds_alike<double, long double>(clear, e)));
+  EXPECT_TRUE((rounds_alike<double, long double>(-clear, e)));
+  EXPECT_FALSE((rounds_alike<double, long double>(-above, e)));
+}
+
+}  // namespace
