@@ -158,3 +158,42 @@ def test_bad_inputs():
         vibrofric.physical("sine", **dict(inputs, shape=3, u_mean=1e-7))
     with pytest.raises(TypeError):  # keyword-only, E1 required
         vibrofric.physical("sine", nu1=0.3)
+
+
+# Wear-flat sphere against the MDR of model.md ("Curved contacts"), computed here with mpmath:
+# f(r) = max(0, (r^2 - b^2)/2R) maps to g(x) = 0 for |x| <= b, (|x|/R) sqrt(x^2 - b^2) beyond. At
+# indentation d > 0 the contact radius a solves g(a) = d, i.e. a^2 = (b^2 + sqrt(b^4 + 4 R^2 d^2))/2,
+# and F(d) = 2 E* int_0^a (d - g(x)) dx = 2 E* [d a - (a^2 - b^2)^(3/2)/(3R)]. Triangle wave at
+# gamma = u_mean/A <= 1 (Eq. 14): d = A (gamma + w), w uniform on [-1, 1], so
+# <F_N> = (1/2) int_{-gamma}^{1} F(A (gamma + w)) dw; mu/mu0 = 2 beta/(4 + beta) on every profile
+# (Eq. 19, model.md MDR: every spring is a punch at the same beta), <F_x> = mu0 (mu/mu0) <F_N>;
+# largest contact radius a(A (1 + gamma)). b = 1 mm: b^2 = 100 R A (near the punch); b = 10 um:
+# b^2 = R A/100 (near Hertz). The outputs are homogeneous of degree 1 in the MDR length unit
+# (<F_N> = 2 E* A L int N dxi, radius = L xi_max, with L = b), so L = sqrt(R A) instead of b would
+# scale all three by sqrt(R A)/b = 0.1 and 10 here.
+@pytest.mark.parametrize("b", [1e-3, 1e-5])
+def test_wearflat_forces_and_contact_radius_against_mdr(b):
+    mpmath = pytest.importorskip("mpmath")
+    inputs = dict(E1=210e9, nu1=0.3, E2=210e9, nu2=0.3, v0=1e-4, f=100, A=1e-6, mu0=0.5, u_mean=5e-7,
+                  shape="wearflat", R=0.01, flat_radius=b)  # steel on steel, beta = 28/17
+    with mpmath.workdps(45):
+        q = eq1_eq5(dict(inputs, radius=1))  # E*, beta, gamma exact (the radius only enters k_z, k_x)
+        E, beta, gamma = (mpmath.mpf(q[k].numerator) / q[k].denominator for k in ("E_star_Pa", "beta", "gamma"))
+        A, R, b_ = (mpmath.mpf(repr(inputs[k])) for k in ("A", "R", "flat_radius"))
+        assert -1 < gamma <= 1 and beta < 4
+
+        def radius(d):
+            return mpmath.sqrt((b_ ** 2 + mpmath.sqrt(b_ ** 4 + 4 * R ** 2 * d ** 2)) / 2)
+
+        def F(d):
+            a = radius(d)
+            return 2 * E * (d * a - (a * a - b_ * b_) ** mpmath.mpf(1.5) / (3 * R))
+
+        want = {"F_N_mean_N": mpmath.quad(lambda w: F(A * (gamma + w)), [-gamma, 1]) / 2}
+        want["F_x_mean_N"] = mpmath.mpf("0.5") * 2 * beta / (4 + beta) * want["F_N_mean_N"]
+        want["contact_radius_max_m"] = radius(A * (1 + gamma))
+        floats = vibrofric.physical("triangle", **inputs)
+        fine = vibrofric.physical("triangle", digits=30, strings=True, **inputs)
+        for k, v in want.items():
+            assert abs(floats[k] - v) <= 1e-14 * v, (k, floats[k], v)  # measured: 1e-16
+            assert abs(mpmath.mpf(fine[k]) - v) <= mpmath.mpf("1e-28") * v, (k, fine[k], v)  # measured: 1e-30
