@@ -328,6 +328,30 @@ TEST(MeasuredProfile, SampledParaboloidConvergesToTheSphere) {
   }
 }
 
+// A measured profile with kinks beyond its flat (slopes 0, 1, 2, 3: g has a square-root onset at
+// r = 0.5, 1 and 1.5, each a breakpoint of the spring integral): 25 digits against 50, as for the
+// closed-form profiles above, with contacts that reach past one, two and all three kinks.
+TEST(MeasuredProfile, KinkedProfileAt25DigitsAgreesWith50) {
+  const auto path = write_profile("kinked.txt", "0 0\n0.5 0\n1 0.5\n1.5 1.5\n3 6\n");
+  for (const char* wave : {"sine", "square"})
+    for (const char* gamma : {"0.3", "1.5", "4"}) {
+      CurvedResult<mpfr> lo, hi;
+      {
+        PrecisionScope scope(25);
+        lo = curved<mpfr>(wave, "profile:" + path, M("0.8"), M(gamma));
+      }
+      PrecisionScope scope(50);
+      hi = curved<mpfr>(wave, "profile:" + path, M("0.8"), M(gamma));
+      SCOPED_TRACE(std::string(wave) + " gamma " + gamma);
+      const mpfr eps25 = pow(mpfr(10), -24);
+      EXPECT_LE(abs(lo.mu - hi.mu), lo.relative_error * hi.mu);
+      EXPECT_LE(lo.relative_error, 1e6 * eps25);  // the stall of the estimate measured above
+      EXPECT_LE(abs(lo.friction_integral - hi.friction_integral), 1e4 * eps25 * hi.friction_integral);
+      EXPECT_LE(abs(lo.normal_integral - hi.normal_integral), 1e4 * eps25 * hi.normal_integral);
+      EXPECT_LE(abs(lo.contact_radius - hi.contact_radius), 10 * eps25 * hi.contact_radius);
+    }
+}
+
 // The tool's layer: correctly rounded double through the precision ladder, against 40 digits.
 TEST(CurvedEvaluate, GuaranteedDoubleIsCorrectlyRounded) {
   BatchOptions opt;
