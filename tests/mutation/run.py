@@ -17,10 +17,10 @@ release preset's selection: everything but label `slow`), patch -R. A mutant is
   equivalent      survived, and the index's equivalence list argues no input changes any output.
 
 The unmutated tree must build and pass first (the baseline); its slowest test sets the per-test
-timeout. Results go to WORK/results.jsonl (one line per mutant, appended as they finish) and to
-tests/mutation/results/latest.json and latest.md (the report's mutation section): a full run
-replaces them, a run of some mutants (--only) replaces those mutants' records, each record keeping
-the commit it was run at.
+timeout. Every run appends to WORK/results.jsonl (its baseline, then one line per mutant as it
+finishes); after each mutant tests/mutation/results/latest.json and latest.md (the report's
+mutation section) are rewritten from it: each mutant's latest record, with the commit it was run
+at, so a rerun of some mutants (--only, after a test was added for a survivor) replaces theirs.
 """
 import argparse
 import datetime
@@ -45,6 +45,13 @@ RESULTS = os.path.join(HERE, "results")
 SMOKE = ["m25-tool-range-linear-step", "m28-physical-cone-length-factor"]
 SMOKE_TARGETS = ["vibrofric-tool"]
 SMOKE_TESTS = "^tool\\.cli$"
+
+# Stage 1 of a mutant: the library, the tool and the core test programs, and their tests (a third
+# of the build). Most mutants die here; one that survives is built in full and put through the
+# whole selection, so the verdict is the whole suite's either way.
+STAGE1_TARGETS = ["vibrofric-tool", "test_solver", "test_events", "test_waveforms", "test_claims", "test_curved",
+                  "test_spring_row"]
+STAGE1_TOOL_TESTS = ("tool.", "verification.mpmath")
 
 
 def fail(msg):
@@ -153,7 +160,6 @@ def main():
     for c in chosen:
         if c not in by_id:
             fail("unknown mutant '%s': expected an id of %s" % (c, os.path.relpath(INDEX, ROOT)))
-    full = not a.smoke and not a.only
 
     def patched_file(mid):
         for line in open(os.path.join(PATCHES, mid + ".patch")):
@@ -200,29 +206,41 @@ def main():
           (t_build, len(base_times), t_test, timeout), flush=True)
 
     results_path = os.path.join(work, "results.jsonl")
+    with open(results_path, "a") as f:
+        f.write(json.dumps({"type": "run", "commit": commit, "dirty": dirty, "started": started,
+                            "baseline": {"build_s": round(t_build), "test_s": round(t_test), "tests": len(base_times)},
+                            "stop_on_failure": a.stop_on_failure, "staged": not a.smoke}) + "\n")
+    stage1 = [] if a.smoke else stage1_tests(build)
     results = []
     for k, mid in enumerate(chosen):
         patch = os.path.join(PATCHES, mid + ".patch")
-        r = dict(by_id[mid])
+        r = dict(by_id[mid], build_s=0.0, test_s=0.0, killed_by=[], timed_out=[])
         code, out, _ = sh(["patch", "-p1", "-s", "-N", "-i", patch], cwd=src, log=log)
         if code != 0:
             fail("%s does not apply to %s: %s" % (mid, commit[:12], out.strip()))
         try:
-            code, out, r["build_s"] = sh(build_cmd, timeout=3600, log=log)
-            if code != 0:
-                r["status"], r["killed_by"], r["test_s"] = "does-not-build", [], 0
-            else:
-                cmd = ctest + ["--timeout", str(timeout)] + (["--stop-on-failure"] if a.stop_on_failure else [])
-                code, out, r["test_s"] = sh(cmd, timeout=4 * 3600, log=log)
+            stages = [(build_cmd + ["--target"] + STAGE1_TARGETS, ctest + ["-R", "^(%s)$" % "|".join(map(re.escape, stage1))])] \
+                if stage1 else []
+            stages.append((build_cmd, ctest))
+            for b, c in stages:
+                code, out, dt = sh(b, timeout=3600, log=log)
+                r["build_s"] += dt
+                if code != 0:
+                    r["status"] = "does-not-build"
+                    break
+                cmd = c + ["--timeout", str(timeout)] + (["--stop-on-failure"] if a.stop_on_failure else [])
+                code, out, dt = sh(cmd, timeout=4 * 3600, log=log)
+                r["test_s"] += dt
                 killers = failed_tests(build) if code != 0 else []
                 if code != 0 and not killers:
                     killers = ["(ctest: %s)" % code]
-                timed_out = re.findall(r"Test\s+#\d+: (\S+) \.+\*\*\*Timeout", out)
                 r["killed_by"] = killers
-                r["timed_out"] = timed_out
+                r["timed_out"] = re.findall(r"Test\s+#\d+: (\S+) \.+\*\*\*Timeout", out)
                 if killers:
                     r["status"] = "killed"
-                elif mid in equivalent:
+                    break
+            else:
+                if mid in equivalent:
                     r["status"], r["why_equivalent"] = "equivalent", equivalent[mid]
                 else:
                     r["status"] = "survived"
@@ -230,12 +248,15 @@ def main():
             code, out, _ = sh(["patch", "-p1", "-s", "-R", "-i", patch], cwd=src, log=log)
             if code != 0:
                 fail("could not revert %s: %s (remove %s and rerun)" % (mid, out.strip(), work))
+        r["commit"] = commit
         results.append(r)
         with open(results_path, "a") as f:
-            f.write(json.dumps(dict(r, commit=commit)) + "\n")
+            f.write(json.dumps(dict(r, type="mutant")) + "\n")
         print("[%d/%d] %-42s %-14s build %4.0f s, tests %4.0f s  %s" % (
             k + 1, len(chosen), mid, r["status"], r["build_s"], r["test_s"],
-            ", ".join(r.get("killed_by", [])[:4]) + (" …" if len(r.get("killed_by", [])) > 4 else "")), flush=True)
+            ", ".join(r["killed_by"][:4]) + (" …" if len(r["killed_by"]) > 4 else "")), flush=True)
+        if not a.smoke:
+            summarise(results_path, rows)
 
     counted = [r for r in results if r["status"] in ("killed", "survived")]
     killed = sum(r["status"] == "killed" for r in results)
@@ -247,38 +268,41 @@ def main():
         bad = [r["id"] for r in results if r["status"] != "killed"]
         if bad:
             fail("smoke mutants not killed: " + ", ".join(bad))
-        return
-    for r in results:
-        r["commit"] = commit
-    latest = os.path.join(RESULTS, "latest.json")
-    if full:
-        summary = {"runs": [], "mutants": results}
-    elif os.path.exists(latest):
-        # A rerun of some mutants (after a test was added for a survivor) replaces their records;
-        # each record keeps the commit it was run at, and the summary lists every run.
-        summary = json.load(open(latest))
-        if "runs" not in summary:  # written by the first version of this script: one run
-            summary["runs"] = [{k: summary.pop(k) for k in ("commit", "dirty", "started", "finished", "baseline",
-                                                            "stop_on_failure")}]
-            summary["runs"][0]["mutants"] = len(summary["mutants"])
-        done = {r["id"]: r for r in results}
-        summary["mutants"] = [done.get(m["id"], m) for m in summary["mutants"]]
-    else:
-        return
-    summary["runs"].append({"commit": commit, "dirty": dirty, "started": started, "mutants": len(results),
-                            "finished": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-                            "baseline": {"build_s": round(t_build), "test_s": round(t_test), "tests": len(base_times)},
-                            "stop_on_failure": a.stop_on_failure})
-    ms = summary["mutants"]
+
+
+def stage1_tests(build):
+    """Names of the tests that stage 1 builds for: those of its programs, and the tool's scripts."""
+    out = subprocess.check_output(["ctest", "--test-dir", build, "--show-only=json-v1"], text=True)
+    names = []
+    for test in json.loads(out)["tests"]:
+        program = os.path.basename((test.get("command") or ["?"])[0])
+        if program in STAGE1_TARGETS or (program.startswith("python") and test["name"].startswith(STAGE1_TOOL_TESTS)):
+            names.append(test["name"])
+    return names
+
+
+def summarise(results_path, rows):
+    """tests/mutation/results/latest.json and .md from WORK/results.jsonl, which every run appends
+    to: each mutant's latest record (with the commit it was run at) and the runs those come from."""
+    runs, last = {}, {}
+    for line in open(results_path):
+        rec = json.loads(line)
+        if rec.get("type") == "run":
+            runs.setdefault(rec["commit"], []).append(rec)
+        else:
+            last[rec["id"]] = rec
+    ms = [last[r["id"]] for r in rows if r["id"] in last]
+    used = sorted({m["commit"] for m in ms})
     counted = [m for m in ms if m["status"] in ("killed", "survived")]
-    summary["score"] = 100.0 * sum(m["status"] == "killed" for m in ms) / len(counted) if counted else 0.0
+    summary = {"runs": [run for c in used for run in runs.get(c, [])], "mutants": ms,
+               "not_run": [r["id"] for r in rows if r["id"] not in last],
+               "score": 100.0 * sum(m["status"] == "killed" for m in ms) / len(counted) if counted else 0.0,
+               "written": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
     os.makedirs(RESULTS, exist_ok=True)
-    with open(latest, "w") as f:
+    with open(os.path.join(RESULTS, "latest.json"), "w") as f:
         json.dump(summary, f, indent=1)
     with open(os.path.join(RESULTS, "latest.md"), "w") as f:
         f.write(markdown(summary))
-    print("wrote %s (score over the recorded mutants %.1f %%)" % (
-        os.path.relpath(os.path.join(RESULTS, "latest.md"), ROOT), summary["score"]))
 
 
 def markdown(s):
@@ -287,10 +311,15 @@ def markdown(s):
     L = ["Per mutant: an incremental -O1 build and the release ctest selection (all but labels `slow` and "
          "`mutation`). Runs recorded here:", ""]
     for run in s["runs"]:
-        L.append("- commit `%s`%s, %s to %s: %d mutant(s); baseline %d tests pass in %d s%s." % (
-            run["commit"][:12], " (dirty)" if run["dirty"] else "", run["started"], run["finished"], run["mutants"],
+        n = sum(m["commit"] == run["commit"] for m in ms)
+        L.append("- commit `%s`%s, started %s: %d of the mutants below; unmutated, %d tests pass in %d s%s%s." % (
+            run["commit"][:12], " (dirty)" if run["dirty"] else "", run["started"], n,
             run["baseline"]["tests"], run["baseline"]["test_s"],
-            "; each mutant's ctest stopped at its first failing test" if run["stop_on_failure"] else ""))
+            "; a mutant's ctest stops at its first failing test" if run["stop_on_failure"] else "",
+            "; stage 1 (library, tool, core test programs) first, the full build and selection for what "
+            "survives it" if run.get("staged") else ""))
+    if s["not_run"]:
+        L.append("- not run yet: %s" % ", ".join("`%s`" % m for m in s["not_run"]))
     L.append("")
     counted = [m for m in ms if m["status"] in ("killed", "survived")]
     L.append("**Score: %d of %d non-equivalent mutants killed (%.1f %%)**; %d argued equivalent, %d do not build." % (
