@@ -136,6 +136,11 @@ def failed_tests(build):
     return [line.strip().split(":", 1)[1] for line in open(path) if ":" in line]
 
 
+def first_failure(output):
+    m = re.search(r"Test\s+#\d+: (\S+) \.+\*\*\*(?:Failed|Timeout|Exception)", output)
+    return [m.group(1)] if m else []
+
+
 def test_times(output):
     """name -> seconds, from ctest's progress lines."""
     times = {}
@@ -232,6 +237,10 @@ def main():
                 code, out, dt = sh(cmd, timeout=4 * 3600, log=log)
                 r["test_s"] += dt
                 killers = failed_tests(build) if code != 0 else []
+                if a.stop_on_failure and killers:
+                    # ctest interrupts the tests still running at the first failure and lists them
+                    # as failed too: only the first to fail in completion order is a killer.
+                    killers = first_failure(out) or killers[:1]
                 if code != 0 and not killers:
                     killers = ["(ctest: %s)" % code]
                 r["killed_by"] = killers
