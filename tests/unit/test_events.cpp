@@ -95,6 +95,33 @@ TEST(Events, SineValueAndSlopeNextToTheQuarters) {
   }
 }
 
+// The tanh-sinh path against the exact one, every area it returns, in double: within the sum of
+// the two paths' own bounds. Sticks that cross φ = 1 (after the sweep wraps past argmin w) and a
+// loose tolerance (1e-3: the last levels' difference, not rounding, is then the error) included.
+TEST(Events, QuadratureAreasWithinTheirBoundsOfTheExactOnes) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (const Case& c : cases)
+    for (double tolerance : {0.0, 1e-3}) {
+      const auto w = make_waveform<double>(parse_wave(c.wave));
+      const double beta = std::stod(c.beta), gamma = std::stod(c.gamma);
+      Options exact, quad;
+      exact.area = AreaMethod::exact;
+      quad.area = AreaMethod::quadrature;
+      quad.quadrature_tolerance = tolerance;
+      const auto e = solve(*w, beta, gamma, exact), q = solve(*w, beta, gamma, quad);
+      const std::string where = std::string(c.wave) + " beta " + c.beta + " gamma " + c.gamma + ", tolerance " +
+                                std::to_string(tolerance);
+      ASSERT_GT(q.quadratures, 0u) << where;
+      EXPECT_LE(std::abs(q.mu - e.mu), (q.relative_error + e.relative_error) * e.mu + eps) << where << ": mu";
+      EXPECT_LE(std::abs(q.lost_area - e.lost_area),
+                q.lost_relative_error * q.lost_area + e.lost_relative_error * e.lost_area + eps)
+          << where << ": lost area";
+      EXPECT_LE(std::abs(q.normal_area - e.normal_area), q.area_error + e.area_error + eps) << where << ": normal area";
+      EXPECT_LE(std::abs(q.retained_area - e.retained_area), q.area_error + e.area_error + eps)
+          << where << ": retained area";
+    }
+}
+
 // A long double x just above the midpoint of two doubles with an error bound e reaching below it:
 // the double is not decided, whichever side x itself rounds to. Clear of the midpoint it is.
 TEST(Events, RoundingTestSeesBothSidesOfTheInterval) {
