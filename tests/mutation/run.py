@@ -293,15 +293,19 @@ def stage1_tests(build):
 def summarise(results_path, rows):
     """tests/mutation/results/latest.json and .md from WORK/results.jsonl, which every run appends
     to: each mutant's latest record (with the commit it was run at) and the runs those come from."""
-    runs, last = {}, {}
+    runs, last, earlier = {}, {}, {}
     for line in open(results_path):
         rec = json.loads(line)
         if rec.get("type") == "run":
             runs.setdefault(rec["commit"], []).append(rec)
         else:
-            last[rec["id"]] = rec
+            if rec["id"] in last and last[rec["id"]]["commit"] != rec["commit"]:
+                earlier.setdefault(rec["id"], []).append("%s at `%s`" % (last[rec["id"]]["status"],
+                                                                         last[rec["id"]]["commit"][:8]))
+            last[rec["id"]] = dict(rec, earlier=earlier.get(rec["id"], []))
     ms = [last[r["id"]] for r in rows if r["id"] in last]
-    used = sorted({m["commit"] for m in ms})
+    used = sorted({m["commit"] for m in ms} | {e.split("`")[1] for m in ms for e in m["earlier"]})
+    used = [c for c in runs if any(c.startswith(u) for u in used)]
     counted = [m for m in ms if m["status"] in ("killed", "survived")]
     summary = {"runs": [run for c in used for run in runs.get(c, [])], "mutants": ms,
                "not_run": [r["id"] for r in rows if r["id"] not in last],
@@ -321,7 +325,7 @@ def markdown(s):
          "`mutation`). Runs recorded here:", ""]
     for run in s["runs"]:
         n = sum(m["commit"] == run["commit"] for m in ms)
-        L.append("- commit `%s`%s, started %s: %d of the mutants below; unmutated, %d tests pass in %d s%s%s." % (
+        L.append("- commit `%s`%s, started %s: %d of the verdicts below; unmutated, %d tests pass in %d s%s%s." % (
             run["commit"][:12], " (dirty)" if run["dirty"] else "", run["started"], n,
             run["baseline"]["tests"], run["baseline"]["test_s"],
             "; a mutant's ctest stops at its first failing test" if run["stop_on_failure"] else "",
@@ -331,7 +335,9 @@ def markdown(s):
         L.append("- not run yet: %s" % ", ".join("`%s`" % m for m in s["not_run"]))
     L.append("")
     counted = [m for m in ms if m["status"] in ("killed", "survived")]
-    L.append("**Score: %d of %d non-equivalent mutants killed (%.1f %%)**; %d argued equivalent, %d do not build." % (
+    L.append("**Score%s: %d of %d non-equivalent mutants killed (%.1f %%)**; %d argued equivalent, %d do not build." % (
+        " so far (%d of %d mutants run; the score of the index needs all)" % (len(ms), len(ms) + len(s["not_run"]))
+        if s["not_run"] else "",
         sum(m["status"] == "killed" for m in ms), len(counted), s["score"],
         sum(m["status"] == "equivalent" for m in ms), sum(m["status"] == "does-not-build" for m in ms)))
     L += ["", "| area | mutants | killed | survived | equivalent |", "|---|---|---|---|---|"]
@@ -348,7 +354,9 @@ def markdown(s):
     for m in ms:
         killers = m.get("killed_by", [])
         shown = ", ".join("`%s`" % k for k in killers[:3]) + (" and %d more" % (len(killers) - 3) if len(killers) > 3 else "")
-        L.append("| `%s` | %s | %s | %s | `%s` | %.0f / %.0f |" % (m["id"], m["breaks"], m["status"], shown or "—",
+        status = m["status"] + "".join(" (before: %s)" % e for e in m.get("earlier", []))
+        L.append("| `%s` | %s | %s | %s | `%s` | %.0f / %.0f |" % (m["id"], m["breaks"].replace("\\|", "|").replace("|", "\\|"),
+                                                                  status, shown or "—",
                                                                   m["commit"][:8], m["build_s"], m["test_s"]))
     eq = [m for m in ms if m["status"] == "equivalent"]
     if eq:
