@@ -161,7 +161,7 @@ def main():
 
     rows, equivalent = read_index()
     by_id = {r["id"]: r for r in rows}
-    chosen = SMOKE if a.smoke else ([s for s in a.only.split(",") if s] or [r["id"] for r in rows])
+    chosen = list(SMOKE) if a.smoke else ([s for s in a.only.split(",") if s] or [r["id"] for r in rows])
     for c in chosen:
         if c not in by_id:
             fail("unknown mutant '%s': expected an id of %s" % (c, os.path.relpath(INDEX, ROOT)))
@@ -299,13 +299,13 @@ def summarise(results_path, rows):
         if rec.get("type") == "run":
             runs.setdefault(rec["commit"], []).append(rec)
         else:
-            if rec["id"] in last and last[rec["id"]]["commit"] != rec["commit"]:
-                earlier.setdefault(rec["id"], []).append("%s at `%s`" % (last[rec["id"]]["status"],
-                                                                         last[rec["id"]]["commit"][:8]))
+            before = last.get(rec["id"])
+            if before and before["commit"] != rec["commit"]:
+                earlier.setdefault(rec["id"], []).append({"status": before["status"], "commit": before["commit"]})
             last[rec["id"]] = dict(rec, earlier=earlier.get(rec["id"], []))
     ms = [last[r["id"]] for r in rows if r["id"] in last]
-    used = sorted({m["commit"] for m in ms} | {e.split("`")[1] for m in ms for e in m["earlier"]})
-    used = [c for c in runs if any(c.startswith(u) for u in used)]
+    used = {m["commit"] for m in ms} | {e["commit"] for m in ms for e in m["earlier"]}
+    used = [c for c in runs if c in used]
     counted = [m for m in ms if m["status"] in ("killed", "survived")]
     summary = {"runs": [run for c in used for run in runs.get(c, [])], "mutants": ms,
                "not_run": [r["id"] for r in rows if r["id"] not in last],
@@ -354,7 +354,7 @@ def markdown(s):
     for m in ms:
         killers = m.get("killed_by", [])
         shown = ", ".join("`%s`" % k for k in killers[:3]) + (" and %d more" % (len(killers) - 3) if len(killers) > 3 else "")
-        status = m["status"] + "".join(" (before: %s)" % e for e in m.get("earlier", []))
+        status = m["status"] + "".join(" (before: %s at `%s`)" % (e["status"], e["commit"][:8]) for e in m.get("earlier", []))
         L.append("| `%s` | %s | %s | %s | `%s` | %.0f / %.0f |" % (m["id"], m["breaks"].replace("\\|", "|").replace("|", "\\|"),
                                                                   status, shown or "—",
                                                                   m["commit"][:8], m["build_s"], m["test_s"]))
