@@ -55,6 +55,44 @@ TEST(Waveforms, PowerOneIsTheShiftedTriangle) {
   }
 }
 
+// power:p in a fixed type is refused above p = 2^-10/eps (waveform.hpp, Power::unresolved): the
+// flanks near u = 1 change n' by exp(16·p·eps) over a few ulp of phase, and the rounding bound is
+// first order. The edge is a power of two, exact in every type; at it the type's own bound must
+// cover its error against twice the digits, just above it the type refuses (the ladder then
+// escalates). Measured with the edge removed (double, 36 (β, γ)): error/bound ≤ 0.15 up to
+// p = 1e17, 3.5e15 at p = 1e18, so the edge keeps a margin of about 2^14 below the failure.
+template <class T>
+void check_power_flank_edge(unsigned bits, unsigned ref_digits) {
+  using std::abs;
+  using std::ldexp;
+  PrecisionScope scope(ref_digits);
+  const int e = static_cast<int>(bits) - 1 - 10;  // 2^-10/eps = 2^(bits - 1 - 10)
+  ASSERT_EQ(std::numeric_limits<T>::epsilon(), ldexp(T(1), 1 - static_cast<int>(bits)));
+  const T edge = ldexp(T(1), e), above = edge * (1 + ldexp(T(1), -20));
+  const Power<T> at(edge, "power:edge"), beyond(above, "power:above");
+  const Power<mpfr> at_ref(ldexp(mpfr(1), e), "power:edge");
+  struct Case {
+    const char *beta, *gamma;
+  };
+  for (const Case c : {Case{"1", "0.5"}, Case{"3", "2"}, Case{"0.5", "-0.5"}, Case{"0.2", "5"}}) {
+    const T b = detail::rounded<T>(mpfr(c.beta), ref_digits), g = detail::rounded<T>(mpfr(c.gamma), ref_digits);
+    const Result<T> r = solve(at, b, g);
+    const Result<mpfr> ref = solve(at_ref, mpfr(b), mpfr(g));  // the same inputs, exactly
+    EXPECT_LE(abs(mpfr(r.mu) - ref.mu), mpfr(r.relative_error) * abs(ref.mu))
+        << "2^" << e << " beta " << c.beta << " gamma " << c.gamma;
+    EXPECT_LE(abs(mpfr(r.lost_area) - ref.lost_area), mpfr(r.lost_relative_error) * abs(ref.lost_area))
+        << "2^" << e << " beta " << c.beta << " gamma " << c.gamma;
+    EXPECT_THROW(solve(beyond, b, g), PrecisionError) << "2^" << e << "(1 + 2^-20)";
+  }
+  EXPECT_THROW(psi(beyond, T(3)), PrecisionError);
+}
+
+TEST(Waveforms, PowerFlankEdgeInEveryFixedType) {
+  check_power_flank_edge<double>(53, 40);
+  check_power_flank_edge<long double>(64, 45);
+  check_power_flank_edge<bin50>(std::numeric_limits<bin50>::digits, 110);
+}
+
 TEST(Waveforms, ExtremaMeanAndBetaC) {
   for (const char* name : {"sine", "tri", "str", "stl", "sqr", "power:1", "power:1.5", "power:8"}) {
     const auto w = wave(name);
