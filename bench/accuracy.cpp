@@ -308,8 +308,8 @@ void BM_accuracy(benchmark::State& state, const std::string& wave, const PathInf
   if (failures) label += "; " + std::to_string(failures) + " failed, first " + first_failure;
   state.SetLabel(label);
   if (info.path == Path::guaranteed_double) {
-    std::vector<Input> grid;
-    for (const Reference& r : refs) grid.push_back({r.at.beta, r.at.gamma});
+    std::vector<Point> grid;
+    for (const Reference& r : refs) grid.push_back({exact_decimal(r.at.beta), exact_decimal(r.at.gamma)});
     rung_counters(state, wave, grid);
   }
 }

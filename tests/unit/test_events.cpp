@@ -7,6 +7,7 @@
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/detail/evaluate_impl.hpp"
+#include "vibrofric/evaluate.hpp"
 #include "vibrofric/solver.hpp"
 
 namespace {
@@ -135,6 +136,61 @@ TEST(Events, RoundingTestSeesBothSidesOfTheInterval) {
   EXPECT_TRUE((rounds_alike<double, long double>(clear, e)));
   EXPECT_TRUE((rounds_alike<double, long double>(-clear, e)));
   EXPECT_FALSE((rounds_alike<double, long double>(-above, e)));
+}
+
+// The first rung accepts a value as its own correct rounding when its error stays strictly inside
+// half the gap to each neighbour: 1.5 has gaps of 2^-52 on both sides, 1 has 2^-53 below it.
+template <class T>
+void check_rounds_to_itself(int bits) {
+  using detail::rounds_to_itself;
+  using std::ldexp;
+  const T x = T(3) / 2, gap = ldexp(T(1), 1 - bits);  // the ulp of 1.5
+  EXPECT_TRUE(rounds_to_itself(x, T(0)));
+  EXPECT_TRUE(rounds_to_itself(-x, gap / 4));
+  EXPECT_TRUE(rounds_to_itself(x, gap / 2 * (1 - ldexp(T(1), -20))));
+  EXPECT_FALSE(rounds_to_itself(x, gap / 2));  // its true value may be the midpoint
+  EXPECT_TRUE(rounds_to_itself(T(1), gap / 8));
+  EXPECT_FALSE(rounds_to_itself(T(1), gap / 4));  // half the gap below 1
+  EXPECT_TRUE(rounds_to_itself(T(1), T(0)));
+  EXPECT_FALSE(rounds_to_itself(std::numeric_limits<T>::quiet_NaN(), T(0)));
+  EXPECT_FALSE(rounds_to_itself(x, std::numeric_limits<T>::infinity()));
+  EXPECT_FALSE(rounds_to_itself(std::numeric_limits<T>::max(), T(0)));
+}
+
+TEST(Events, RoundsToItselfWithinHalfTheGapOnEachSide) {
+  check_rounds_to_itself<double>(53);
+  check_rounds_to_itself<long double>(64);
+  check_rounds_to_itself<boost::multiprecision::cpp_bin_float_50>(std::numeric_limits<boost::multiprecision::cpp_bin_float_50>::digits);
+}
+
+// Each point is counted once, on the rung that answered it. μ̄ = 1 for β ≥ β_c is exact (bound 0):
+// the double's own rung certifies it. Inside, the double bound is about 20 eps (sine, β = 1,
+// γ = 0.5), far above the half ulp the first rung needs, so a wider rung answers, and the value is
+// the 40-digit one correctly rounded.
+TEST(Events, LadderCountsTheRungThatAnswered) {
+  const WaveSpec sine = parse_wave("sine");
+  Precision precision;
+  precision.type = NumberType::float64;
+  LadderCounts counts;
+  BatchOptions options;
+  options.ladder = &counts;
+  EXPECT_EQ(evaluate(sine, Quantity::mu, {{"100", "0.5"}, {"7", "2"}}, precision, options),
+            (std::vector<std::string>{"1.0000000000000000", "1.0000000000000000"}));
+  EXPECT_EQ(counts.own, 2u);
+  EXPECT_EQ(counts.long_double + counts.mpfr, 0u);
+  const std::vector<Point> inside = {{"1", "0.5"}, {"0.25", "-0.5"}, {"3", "-0.5"}, {"0.25", "1"}};
+  const auto got = evaluate(sine, Quantity::mu, inside, precision, options);
+  EXPECT_EQ(counts.own, 2u);
+  EXPECT_EQ(counts.long_double + counts.mpfr, inside.size());
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    PrecisionScope scope(40);
+    const auto w = make_waveform<mpfr>(sine);
+    const double want = static_cast<double>(solve(*w, mpfr(inside[i].beta), mpfr(inside[i].gamma)).mu);
+    EXPECT_EQ(std::stod(got[i]), want) << inside[i].beta << " " << inside[i].gamma;
+  }
+  options.escalate = false;
+  evaluate(sine, Quantity::mu, inside, precision, options);
+  EXPECT_EQ(counts.own, 2u + inside.size());
 }
 
 }  // namespace

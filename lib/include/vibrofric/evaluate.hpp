@@ -5,6 +5,7 @@
 // For mpfr the working precision is the requested digits plus guard digits, raised
 // automatically while the solver's error estimate says the requested digits are not reached.
 #pragma once
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -41,6 +42,13 @@ struct Point {
   std::string gamma;  // ignored for Quantity::psi
 };
 
+// Which rung of the fixed types' ladder (detail::evaluate_fixed) answered each point: the value
+// computed in the type itself, the long double value (double only), or mpfr rounded to the type.
+// Points computed without escalation count as `own`.
+struct LadderCounts {
+  std::atomic<std::size_t> own{0}, long_double{0}, mpfr{0};
+};
+
 struct BatchOptions {
   Options solver;
   // The indenter (model.md, MDR): flat (the paper's flat punch) or a curved profile, whose μ̄
@@ -51,6 +59,7 @@ struct BatchOptions {
   // promote_double). Off: the value computed in the type, whatever its error.
   bool escalate = true;
   unsigned threads = 1;                               // 0: all cores
+  LadderCounts* ladder = nullptr;                     // counted where non-null (fixed types)
   std::function<void(std::size_t done)> progress;     // called from worker threads, may be empty
 };
 

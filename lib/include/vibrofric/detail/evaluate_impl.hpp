@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include <boost/math/special_functions/next.hpp>
+
 #include "vibrofric/curved.hpp"
 #include "vibrofric/evaluate.hpp"
 
@@ -146,6 +148,21 @@ bool rounds_alike(const X& x, const X& e) {
   return static_cast<T>(X(x - wide)) == static_cast<T>(X(x + wide));
 }
 
+// The first rung's test: x is itself a T, so every number within e of x rounds to x exactly when e
+// is below half the gap to each neighbour of x (strictly: a midpoint rounds to even). The gaps are
+// exact in T (below x they halve at a power of two); e, a product rounded once, is enlarged by
+// 4 ulp of itself to cover that rounding. rounds_alike's widening by 2 ulp of x would span both
+// neighbours, and no value of the type would ever be accepted as its own correct rounding.
+template <class T>
+bool rounds_to_itself(const T& x, const T& e) {
+  using std::abs;
+  using std::isfinite;
+  if (!isfinite(x) || !isfinite(e) || !(abs(x) < std::numeric_limits<T>::max())) return false;
+  const T up = boost::math::float_next(x) - x, down = x - boost::math::float_prior(x);
+  const T bound = e * (1 + 4 * std::numeric_limits<T>::epsilon());
+  return 2 * bound < up && 2 * bound < down;
+}
+
 // A fixed-precision type, correctly rounded: its own value where the rounding bound certifies it;
 // for double next the long double value where its bound does (as Boost.Math promotes double);
 // else mpfr at twice the type's digits and more, until the rounding is certified.
@@ -162,13 +179,21 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
       return std::nullopt;
     }
   };
-  if (const auto v = rung(waves); v && (!options.escalate || rounds_alike<Real>(v->value, Real(v->relative_error * abs(v->value)))))
+  const auto count = [&](std::atomic<std::size_t> LadderCounts::*rung_count) {
+    if (options.ladder) ++(options.ladder->*rung_count);
+  };
+  if (const auto v = rung(waves); v && (!options.escalate || rounds_to_itself<Real>(v->value, Real(v->relative_error * abs(v->value))))) {
+    count(&LadderCounts::own);
     return format_significant(v->value, digits);
+  }
   if constexpr (std::is_same_v<Real, double>) {
     const auto w = rung(wider);
-    if (w && rounds_alike<double>(w->value, static_cast<long double>(w->relative_error * abs(w->value))))
+    if (w && rounds_alike<double>(w->value, static_cast<long double>(w->relative_error * abs(w->value)))) {
+      count(&LadderCounts::long_double);
       return format_significant(static_cast<double>(w->value), digits);
+    }
   }
+  count(&LadderCounts::mpfr);
   // The decimal from evaluate_point is within half a unit of its last digit of the value.
   int d = 2 * std::numeric_limits<Real>::max_digits10 + 3;
   for (; d <= 8 * std::numeric_limits<Real>::max_digits10 + 3; d *= 2) {
