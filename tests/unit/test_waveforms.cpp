@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <random>
 
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/envelope.hpp"
@@ -361,6 +362,65 @@ TEST(Numbers, FormatSignificantDigits) {
   EXPECT_EQ(format_significant(1.5e-9, 3), "1.50e-09");
   PrecisionScope p(60);
   EXPECT_EQ(format_significant(mpfr(1) / 3, 40), "0." + std::string(40, '3'));
+}
+
+// double and long double print through std::to_chars; its digits must be MPFR's correctly rounded
+// ones (mpfr_get_str of an exact copy, a separate implementation): random values over the whole
+// exponent range, subnormals, and exact decimal ties (2.5, 0.125, 1e23's neighbours), which both
+// round to even.
+template <class T>
+void check_digits_against_mpfr(int bits, const std::vector<T>& extra) {
+  std::mt19937_64 rng(20261124);
+  std::vector<T> xs = extra;
+  for (int i = 0; i < 20000; ++i) {
+    const T m = T(rng() >> 11) / T(1ULL << 53) + T(rng() >> 11) / T(1ULL << 53) / T(1ULL << 53);
+    // Every normal binade; one value in ten subnormal (at least 2 bits of precision kept).
+    const int lo = std::numeric_limits<T>::min_exponent - 1, hi = std::numeric_limits<T>::max_exponent - 1;
+    const int e = i % 10 ? lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1))
+                         : lo - 1 - static_cast<int>(rng() % static_cast<unsigned>(bits - 3));
+    xs.push_back((i % 2 ? -1 : 1) * std::ldexp(m + 1, e));
+  }
+  for (const T x : xs)
+    for (const int digits : {1, 2, 3, 6, 15, 17, 21, 30}) {
+      mpfr_t v;
+      mpfr_init2(v, bits);
+      if constexpr (std::is_same_v<T, double>)
+        mpfr_set_d(v, x, MPFR_RNDN);
+      else
+        mpfr_set_ld(v, x, MPFR_RNDN);
+      mpfr_exp_t e10 = 0;
+      char* raw = mpfr_get_str(nullptr, &e10, 10, static_cast<std::size_t>(digits), v, MPFR_RNDN);
+      std::string want(raw);
+      mpfr_free_str(raw);
+      mpfr_clear(v);
+      // The same digits and decimal exponent, read back from the formatted text.
+      std::string got = format_significant(x, digits), mantissa;
+      long exponent = 0;
+      const std::size_t epos = got.find('e');
+      if (epos != std::string::npos) exponent = std::stol(got.substr(epos + 1)) + 1;
+      std::string body = got.substr(0, epos), sign;
+      if (body[0] == '-') sign = "-", body.erase(0, 1);
+      const std::size_t dot = body.find('.');
+      if (epos == std::string::npos) exponent = static_cast<long>(dot == std::string::npos ? body.size() : dot);
+      for (const char c : body)
+        if (c != '.') mantissa += c;
+      const std::size_t lead = mantissa.find_first_not_of('0');
+      exponent -= static_cast<long>(lead);
+      mantissa.erase(0, lead);
+      // An integer part longer than the digits is padded with zeros ("100" for 99.5 at 1 digit).
+      ASSERT_GE(mantissa.size(), static_cast<std::size_t>(digits)) << got;
+      ASSERT_EQ(mantissa.find_first_not_of('0', static_cast<std::size_t>(digits)), std::string::npos) << got;
+      mantissa.resize(static_cast<std::size_t>(digits));
+      ASSERT_EQ(sign + mantissa, want) << x << " at " << digits << " digits: " << got;
+      ASSERT_EQ(exponent, static_cast<long>(e10)) << x << " at " << digits << " digits: " << got;
+    }
+}
+
+TEST(Numbers, FormatSignificantOfHardwareTypesAsMpfr) {
+  check_digits_against_mpfr<double>(53, {2.5, 0.125, 0.375, 1e23, std::nextafter(1e23, 0.0), 5e-324, 1.7976931348623157e308,
+                                         0.5, 9.5, 99.5, 1e15, 1e-5, 9.9999999999999995e-6});
+  check_digits_against_mpfr<long double>(64, {2.5L, 0.125L, 1e23L, std::numeric_limits<long double>::denorm_min(),
+                                              std::numeric_limits<long double>::max(), 0.5L, 99.5L});
 }
 
 }  // namespace
