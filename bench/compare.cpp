@@ -1,7 +1,7 @@
 // vibrofric_bench_compare: is a new benchmark run slower or less accurate than a saved one?
 //
 //   vibrofric_bench_compare BASELINE.json NEW.json [--time-threshold=R] [--ulp-threshold=R]
-//                           [--real-time] [--allow-missing]
+//                           [--real-time] [--allow-missing] [--noise-control=REGEX]
 //
 // Both files are Google Benchmark JSON (--benchmark_out_format=json), or bench/run's
 // results file, which is the same JSON with extra keys. Per benchmark name:
@@ -10,6 +10,10 @@
 //    descheduled). "slower" if new > old·(1 + R), R = --time-threshold, default 0.25
 //    (this VM is shared and noisy; bench/README.md). Benchmarks carrying max_ulp are accuracy
 //    benchmarks: their time is not compared.
+//  - noise control: the benchmarks whose names match REGEX (default "closed_form_double$", code
+//    that no library change touches) give the machine factor f, the median of their new/old
+//    times. Every other time is judged against old·f: a machine phase that slows everything alike
+//    moves f, not the verdicts. --noise-control= (empty) sets f = 1.
 //  - accuracy (counters max_ulp, rms_ulp, failures): "less accurate" if max_ulp or rms_ulp grows
 //    beyond old·(1 + R) + 1e-9, R = --ulp-threshold, default 0 (the values are deterministic),
 //    or if failures grow.
@@ -121,6 +125,7 @@ bool parse_ratio(const char* arg, const char* flag, double& value) {
 int main(int argc, char** argv) {
   double time_threshold = 0.25, ulp_threshold = 0;
   bool allow_missing = false, real_time = false;
+  std::string control_pattern = "closed_form_double$";
   std::vector<std::string> files;
   try {
     for (int i = 1; i < argc; ++i) {
@@ -130,6 +135,8 @@ int main(int argc, char** argv) {
         allow_missing = true;
       } else if (std::strcmp(argv[i], "--real-time") == 0) {
         real_time = true;
+      } else if (std::strncmp(argv[i], "--noise-control=", 16) == 0) {
+        control_pattern = argv[i] + 16;
       } else if (argv[i][0] == '-') {
         throw std::invalid_argument(std::string("unknown option ") + argv[i]);
       } else {
@@ -138,9 +145,17 @@ int main(int argc, char** argv) {
     }
     if (files.size() != 2)
       throw std::invalid_argument("usage: vibrofric_bench_compare BASELINE.json NEW.json [--time-threshold=R] "
-                                  "[--ulp-threshold=R] [--real-time] [--allow-missing]");
+                                  "[--ulp-threshold=R] [--real-time] [--allow-missing] [--noise-control=REGEX]");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vibrofric_bench_compare: %s\n", e.what());
+    return 2;
+  }
+  std::optional<std::regex> control;
+  try {
+    if (!control_pattern.empty()) control.emplace(control_pattern);
+  } catch (const std::regex_error&) {
+    std::fprintf(stderr, "vibrofric_bench_compare: --noise-control=%s: expected a regular expression\n",
+                 control_pattern.c_str());
     return 2;
   }
   std::map<std::string, Entry> old_run, new_run;
@@ -155,7 +170,29 @@ int main(int argc, char** argv) {
 
   std::printf("%s time, threshold %.0f%%; ulp threshold %.0f%%\n", real_time ? "real" : "CPU", 100 * time_threshold,
               100 * ulp_threshold);
+  // The machine factor: the median new/old time of the noise-control benchmarks in both runs.
+  std::vector<double> ratios;
+  for (const auto& [name, o] : old_run) {
+    const auto it = new_run.find(name);
+    if (control && std::regex_search(name, *control) && it != new_run.end() && !o.accuracy() &&
+        !it->second.accuracy() && o.time_ns() > 0 && it->second.time_ns() > 0)
+      ratios.push_back(it->second.time_ns() / o.time_ns());
+  }
+  double factor = 1;
+  if (!ratios.empty()) {
+    std::sort(ratios.begin(), ratios.end());
+    const std::size_t k = ratios.size();
+    factor = k % 2 ? ratios[k / 2] : (ratios[k / 2 - 1] + ratios[k / 2]) / 2;
+    std::printf("noise control: %zu benchmarks matching '%s', new/old %.3g to %.3g; machine factor %.3f%s\n", k,
+                control_pattern.c_str(), ratios.front(), ratios.back(), factor,
+                std::abs(factor - 1) > time_threshold ? " (the machine ran at another speed: times are judged against old x factor)"
+                                                       : "");
+  } else {
+    std::printf("noise control: %s; machine factor 1\n",
+                control ? ("no benchmark matching '" + control_pattern + "' in both runs").c_str() : "off");
+  }
   std::printf("%-52s %14s %14s %9s  %s\n", "benchmark", "old", "new", "change", "verdict");
+  if (factor != 1) std::printf("(times: old x %.3f, the machine factor)\n", factor);
   int worse = 0, better = 0, same = 0;
   auto row = [](const std::string& name, const std::string& what, double a, double b, const char* verdict) {
     const double change = a > 0 ? 100 * (b - a) / a : (b > 0 ? INFINITY : 0.0);
@@ -187,7 +224,7 @@ int main(int argc, char** argv) {
       if (bad) ++worse; else ++same;
       continue;
     }
-    const double a = o.time_ns(), b = n.time_ns();
+    const double a = o.time_ns() * factor, b = n.time_ns();
     const bool slower = b > a * (1 + time_threshold);
     const bool faster = b * (1 + time_threshold) < a;
     row(name, " ns", a, b, slower ? "SLOWER" : faster ? "faster" : "same (within noise)");

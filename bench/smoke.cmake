@@ -1,7 +1,9 @@
 # ctest bench.quick_smoke: the --quick benchmark run end to end (no timing is asserted).
 #  1. vibrofric_bench --quick writes JSON with accuracy counters for at least 4 paths;
 #  2. the comparator finds that run no worse than itself (exit 0);
-#  3. and flags a doctored copy, one benchmark slower and one less accurate (exit 1).
+#  3. and flags a doctored copy, one benchmark slower and one less accurate (exit 1);
+#  4. the noise control: every time 3x longer (a slow machine phase) is no regression, and reads
+#     as machine factor 3; every time 3x longer but the controls' (closed forms) is a regression.
 # -DBENCH=… -DCOMPARE=… -DWORK_DIR=…
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(out ${WORK_DIR}/quick.json)
@@ -47,3 +49,46 @@ if(NOT rc EQUAL 1 OR NOT log MATCHES "SLOWER" OR NOT log MATCHES "LESS ACCURATE"
   message(FATAL_ERROR "comparator missed a slower or less accurate run (${rc}):\n${log}")
 endif()
 message(STATUS "comparator flags the doctored run:\n${log}")
+
+# 4. Copies with every time set to 1000 ns (the baseline), 3000 ns (a machine three times slower)
+#    and 3000 ns with the noise controls left at 1000 ns (the library three times slower).
+file(READ ${out} doc)  # the run as written, before step 3's doctoring
+set(base "${doc}")
+set(slow "${doc}")
+set(slower_code "${doc}")
+set(controls 0)
+foreach(i RANGE ${last})
+  string(JSON name GET "${doc}" benchmarks ${i} name)
+  string(JSON t ERROR_VARIABLE no_time GET "${doc}" benchmarks ${i} cpu_time)
+  if(no_time)
+    continue()
+  endif()
+  string(JSON base SET "${base}" benchmarks ${i} cpu_time "1000")
+  string(JSON slow SET "${slow}" benchmarks ${i} cpu_time "3000")
+  if(name MATCHES "closed_form_double")
+    math(EXPR controls "${controls} + 1")
+    string(JSON slower_code SET "${slower_code}" benchmarks ${i} cpu_time "1000")
+  else()
+    string(JSON slower_code SET "${slower_code}" benchmarks ${i} cpu_time "3000")
+  endif()
+endforeach()
+if(controls LESS 1)
+  message(FATAL_ERROR "the --quick run has no closed_form_double benchmark to serve as noise control")
+endif()
+file(WRITE ${WORK_DIR}/base.json "${base}")
+file(WRITE ${WORK_DIR}/slow-machine.json "${slow}")
+file(WRITE ${WORK_DIR}/slow-code.json "${slower_code}")
+execute_process(COMMAND ${COMPARE} ${WORK_DIR}/base.json ${WORK_DIR}/slow-machine.json RESULT_VARIABLE rc OUTPUT_VARIABLE log)
+if(NOT rc EQUAL 0 OR NOT log MATCHES "machine factor 3.000" OR log MATCHES "SLOWER")
+  message(FATAL_ERROR "comparator: a uniformly slower machine read as a regression (${rc}):\n${log}")
+endif()
+execute_process(COMMAND ${COMPARE} ${WORK_DIR}/base.json ${WORK_DIR}/slow-code.json RESULT_VARIABLE rc OUTPUT_VARIABLE log)
+if(NOT rc EQUAL 1 OR NOT log MATCHES "machine factor 1.000" OR NOT log MATCHES "SLOWER")
+  message(FATAL_ERROR "comparator: code slower against unchanged noise controls not flagged (${rc}):\n${log}")
+endif()
+execute_process(COMMAND ${COMPARE} ${WORK_DIR}/base.json ${WORK_DIR}/slow-machine.json --noise-control=
+                RESULT_VARIABLE rc OUTPUT_VARIABLE log)
+if(NOT rc EQUAL 1 OR NOT log MATCHES "noise control: off")
+  message(FATAL_ERROR "comparator: without the noise control a 3x slower run must be flagged (${rc}):\n${log}")
+endif()
+message(STATUS "noise control: ${controls} closed-form benchmarks; a slow machine phase is factored out")
