@@ -229,6 +229,60 @@ TEST(evaluate_stream, ErrorMidStreamDeliversTheRowsBeforeIt) {
   }
 }
 
+// A catalogue or power:p wave, and the Contacts of its last few γ, persist on a thread from one
+// call to the next (ThreadWaves, evaluate_impl.hpp). A call must answer exactly as on a fresh
+// thread, which has no such state: across waves, quantities, number types, more γ than are kept
+// (eviction), more power exponents than are kept (the waves are dropped while Contacts built on
+// them are still held: AddressSanitizer watches that run) and another root-iteration budget.
+TEST(evaluate_stream, ThreadStateAnswersAsAFreshThread) {
+  struct Call {
+    std::string wave;
+    Quantity q;
+    Precision precision;
+    Point p;
+    std::uintmax_t budget;
+  };
+  std::vector<Call> calls;
+  const Precision types[] = {{NumberType::float64, 0}, {NumberType::float80, 0}, {NumberType::mpfr, 30}, {NumberType::mpfr, 60}};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int round = 0; round < 2; ++round)  // the second round meets what the first left behind
+    for (const char* wave : {"sine", "triangle", "power:3", "square"})
+      for (int g = 0; g < 12; ++g)
+        calls.push_back({wave, g % 5 == 4 ? Quantity::psi : Quantity::mu, types[(g + round) % 4],
+                         {decimal(0.05 + 4 * u(rng), 6), decimal(-0.9 + 0.25 * g, 3)}, 0});
+  for (int k = 0; k < 70; ++k)
+    calls.push_back({"power:" + std::to_string(2 + k) + ".5", Quantity::mu, types[0], {"1", "-0.25"}, 0});
+  calls.push_back({"power:2.5", Quantity::mu, types[0], {"1", "-0.25"}, 0});
+  calls.push_back({"sine", Quantity::mu, types[2], {"1.5", "0.25"}, 0});
+  calls.push_back({"sine", Quantity::mu, types[3], {"1.5", "0.25"}, 0});  // 60 digits after 30, one γ
+  calls.push_back({"sine", Quantity::mu, types[2], {"1.5", "0.25"}, 1});   // a budget too small to solve
+  calls.push_back({"sine", Quantity::mu, types[2], {"1.5", "0.25"}, 0});
+
+  const auto run = [](const Call& c) {
+    BatchOptions options;
+    options.threads = 1;
+    options.solver.max_root_iterations = c.budget;
+    try {
+      return evaluate(parse_wave(c.wave), c.q, {c.p}, c.precision, options).front();
+    } catch (const std::exception& e) {
+      return std::string("error: ") + e.what();
+    }
+  };
+  std::size_t errors = 0;
+  for (const Call& c : calls) {
+    const std::string warm = run(c);
+    std::string fresh;
+    std::thread([&] { fresh = run(c); }).join();
+    if (c.budget == 1) {
+      EXPECT_EQ(warm.rfind("error: ", 0), 0u) << warm;
+    }
+    EXPECT_EQ(warm, fresh) << c.wave << " beta " << c.p.beta << " gamma " << c.p.gamma << " budget " << c.budget;
+    errors += c.budget == 0 && warm.rfind("error: ", 0) == 0;
+  }
+  EXPECT_EQ(errors, 0u);
+}
+
 // The generator's, progress's and sink's exceptions: the first two count as their point's error,
 // the sink's stops the stream; every way out joins the workers (the test would hang otherwise).
 TEST(evaluate_stream, CallbackExceptions) {

@@ -65,7 +65,9 @@ struct BatchOptions {
 
 // Formatted values, in the order of `points`. Throws the error of the first failing point
 // (InputError for bad input or domain, SolverError if the solver failed). Holds every value until
-// the end: for large batches use evaluate_stream.
+// the end: for large batches use evaluate_stream. A catalogue or power:p wave, and its Contacts
+// for the last 8 γ, stay on the calling (or worker) thread for the next call, per number type and
+// precision (at most 64 waves): a loop of one-point calls does not rebuild them.
 std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
                                   const Precision& precision, const BatchOptions& options = {});
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdlib>
+#include <deque>
 #include <exception>
 #include <map>
 #include <memory>
@@ -31,18 +32,75 @@ struct PointValue {
   Real relative_error;
 };
 
-// Waveforms of one thread, one per working precision (mpfr), built on first use, and the
-// Contact of the last γ (points come γ by γ, so a sweep builds each once).
+// A wave its spec names alone (the catalogue, power:p) is the same immutable object for every
+// call on a thread: built once per thread, number type and precision, with the Contacts of its
+// last few γ. A caller of one point per call (the Python module, a loop over `evaluate`) then
+// does not rebuild them; building them was about 28 % of a guaranteed double sine point (perf).
+// Sampled and Fourier waves carry data and are built per call. Bounded: at most 64 waves and 8
+// Contacts per thread and type.
+template <class Real>
+class ThreadWaves {
+ public:
+  static ThreadWaves& get() {
+    thread_local ThreadWaves cache;
+    return cache;
+  }
+  // "" for a wave built per call; else the key that names it.
+  static std::string key(const WaveSpec& spec) {
+    if (spec.kind == WaveKind::samples || spec.kind == WaveKind::fourier) return "";
+    return spec.kind == WaveKind::power ? "power:" + spec.exponent : spec.name;
+  }
+  std::shared_ptr<const Waveform<Real>> wave(const WaveSpec& spec, const std::string& key, int digits) {
+    auto& slot = waves_[{key, digits}];
+    if (!slot) {
+      if (waves_.size() > 64) {  // a sweep over power:p exponents: start again rather than grow
+        waves_.clear();
+        return wave(spec, key, digits);
+      }
+      slot = make_waveform<Real>(spec);
+    }
+    return slot;
+  }
+  struct ContactEntry {
+    std::string key;
+    int digits;
+    std::string gamma;
+    std::uintmax_t budget;
+    std::shared_ptr<const Contact<Real>> contact;  // owns its waveform too (WaveCache::contact)
+  };
+  std::shared_ptr<const Contact<Real>> find(const std::string& key, int digits, const std::string& gamma,
+                                            std::uintmax_t budget) {
+    for (auto it = contacts_.begin(); it != contacts_.end(); ++it)
+      if (it->digits == digits && it->budget == budget && it->gamma == gamma && it->key == key) {
+        if (it != contacts_.begin()) {  // most recent first
+          ContactEntry e = std::move(*it);
+          contacts_.erase(it);
+          contacts_.push_front(std::move(e));
+        }
+        return contacts_.front().contact;
+      }
+    return nullptr;
+  }
+  void keep(ContactEntry e) {
+    contacts_.push_front(std::move(e));
+    if (contacts_.size() > 8) contacts_.pop_back();
+  }
+
+ private:
+  std::map<std::pair<std::string, int>, std::shared_ptr<const Waveform<Real>>> waves_;
+  std::deque<ContactEntry> contacts_;
+};
+
+// Waveforms of one call's worker, one per working precision (mpfr), built on first use or taken
+// from ThreadWaves, and the Contact of the last γ (points come γ by γ, so a sweep builds each
+// once).
 template <class Real>
 class WaveCache {
  public:
   using real_type = Real;
-  explicit WaveCache(const WaveSpec& spec, const ProfileSpec& profile = {}) : spec_(spec), profile_spec_(profile) {}
-  const Waveform<Real>& get() {
-    auto& slot = by_digits_[working_digits10<Real>()];
-    if (!slot) slot = make_waveform<Real>(spec_);
-    return *slot;
-  }
+  explicit WaveCache(const WaveSpec& spec, const ProfileSpec& profile = {})
+      : spec_(spec), profile_spec_(profile), shared_key_(ThreadWaves<Real>::key(spec)) {}
+  const Waveform<Real>& get() { return *wave(); }
   // The curved profile at this precision; nullptr for the flat punch.
   const Profile<Real>* profile() {
     if (profile_spec_.kind == ProfileKind::flat) return nullptr;
@@ -53,12 +111,22 @@ class WaveCache {
   // γ as written; "" for Ψ (γ = −min w, n touching zero).
   const Contact<Real>& contact(const std::string& gamma_text, const Options& opt) {
     const int d = working_digits10<Real>();
-    if (!contact_ || digits_ != d || text_ != gamma_text) {
-      const Waveform<Real>& w = get();
-      const Real gamma = gamma_text.empty() ? Real(-w.minimum()) : parse_real<Real>(gamma_text, "gamma");
+    if (!contact_ || digits_ != d || text_ != gamma_text || budget_ != opt.max_root_iterations) {
       contact_.reset();
-      try {
-        contact_ = std::make_unique<Contact<Real>>(make_contact(w, gamma, opt));
+      if (!shared_key_.empty())
+        contact_ = ThreadWaves<Real>::get().find(shared_key_, d, gamma_text, opt.max_root_iterations);
+      if (!contact_) try {
+        const std::shared_ptr<const Waveform<Real>> w = wave();
+        const Real gamma = gamma_text.empty() ? Real(-w->minimum()) : parse_real<Real>(gamma_text, "gamma");
+        // The Contact refers to its waveform: the pointer to it owns the waveform as well.
+        struct Held {
+          std::shared_ptr<const Waveform<Real>> wave;
+          Contact<Real> contact;
+        };
+        const auto held = std::make_shared<const Held>(Held{w, make_contact(*w, gamma, opt)});
+        contact_ = std::shared_ptr<const Contact<Real>>(held, &held->contact);
+        if (!shared_key_.empty())
+          ThreadWaves<Real>::get().keep({shared_key_, d, gamma_text, opt.max_root_iterations, contact_});
       } catch (const DomainError&) {
         // check_contact (below) found a contact from the decimal γ and the exact waveform: this
         // type's rounding of γ or of max w removed it, so a wider type must compute it.
@@ -66,17 +134,32 @@ class WaveCache {
       }
       digits_ = d;
       text_ = gamma_text;
+      budget_ = opt.max_root_iterations;
     }
     return *contact_;
   }
 
  private:
+  std::shared_ptr<const Waveform<Real>> wave() {
+    const int d = working_digits10<Real>();
+    auto& slot = by_digits_[d];
+    if (!slot) {
+      if (shared_key_.empty())
+        slot = make_waveform<Real>(spec_);
+      else
+        slot = ThreadWaves<Real>::get().wave(spec_, shared_key_, d);
+    }
+    return slot;
+  }
+
   const WaveSpec& spec_;
   const ProfileSpec& profile_spec_;
-  std::map<int, std::unique_ptr<Waveform<Real>>> by_digits_;
+  std::string shared_key_;  // ThreadWaves::key: "" for a wave built per call
+  std::map<int, std::shared_ptr<const Waveform<Real>>> by_digits_;
   std::map<int, std::unique_ptr<Profile<Real>>> profiles_;
-  std::unique_ptr<Contact<Real>> contact_;
+  std::shared_ptr<const Contact<Real>> contact_;
   int digits_ = -1;
+  std::uintmax_t budget_ = 0;
   std::string text_;
 };
 
@@ -194,21 +277,27 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
     }
   }
   count(&LadderCounts::mpfr);
-  // The decimal from evaluate_point is within half a unit of its last digit of the value.
-  int d = 2 * std::numeric_limits<Real>::max_digits10 + 3;
-  for (; d <= 8 * std::numeric_limits<Real>::max_digits10 + 3; d *= 2) {
-    const std::string text = evaluate_point<mpfr>(fallback, spec, q, p, d, options.solver);
-    if constexpr (std::is_floating_point_v<Real>) {
-      PrecisionScope scope(static_cast<unsigned>(d + 10));
-      const mpfr x(text);
-      if (rounds_alike<Real>(x, mpfr(abs(x) * pow(mpfr(10), 1 - d)))) return format_significant(static_cast<Real>(x), digits);
-    } else {
-      return format_significant(parse_real<Real>(text, "escalated value"), digits);
+  constexpr int type_digits = std::numeric_limits<Real>::max_digits10;
+  if constexpr (std::is_floating_point_v<Real>) {
+    // mpfr's value and bound straight into Ziv's test, no decimal in between. The lower rungs
+    // left a value close to a midpoint of the type, typically within 1/20 ulp: 8 digits beyond
+    // the type's nearly always decide it, and cost less than the 48 digits of a decimal route.
+    int work = type_digits + 8;
+    for (; work <= 8 * type_digits + 3; work *= 2) {
+      PrecisionScope scope(static_cast<unsigned>(work));
+      const auto v = rung(fallback);
+      if (v && rounds_alike<Real>(v->value, mpfr(v->relative_error * abs(v->value))))
+        return format_significant(static_cast<Real>(v->value), digits);
     }
+    // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: round the decimal, which
+    // evaluate_point gives within half a unit of its last digit.
+    return format_significant(parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, work, options.solver), "escalated value"),
+                              digits);
+  } else {
+    return format_significant(
+        parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, 2 * type_digits + 3, options.solver), "escalated value"),
+        digits);
   }
-  // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: round the decimal.
-  return format_significant(parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, d, options.solver), "escalated value"),
-                            digits);
 }
 
 // Whether contact exists, γ + max w > 0 (model.md, "Domain and edge behaviour"), decided once from
