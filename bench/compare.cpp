@@ -43,17 +43,20 @@ namespace {
 
 using nlohmann::json;
 
+double median(std::vector<double> t) {
+  if (t.empty()) return NAN;  // an entry with no time: never "slower", never a machine factor
+  std::sort(t.begin(), t.end());
+  const std::size_t n = t.size();
+  return n % 2 ? t[n / 2] : (t[n / 2 - 1] + t[n / 2]) / 2;
+}
+
 struct Entry {
   std::vector<double> times_ns;        // per-run times (CPU or real)
   std::optional<double> median_ns;     // the median aggregate, if any
   std::optional<double> max_ulp, rms_ulp, failures;
   std::string label;
   double time_ns() const {
-    if (median_ns) return *median_ns;
-    std::vector<double> t = times_ns;
-    std::sort(t.begin(), t.end());
-    const std::size_t n = t.size();
-    return n % 2 ? t[n / 2] : (t[n / 2 - 1] + t[n / 2]) / 2;
+    return median_ns ? *median_ns : median(times_ns);
   }
   bool accuracy() const { return max_ulp.has_value(); }
 };
@@ -180,11 +183,10 @@ int main(int argc, char** argv) {
   }
   double factor = 1;
   if (!ratios.empty()) {
-    std::sort(ratios.begin(), ratios.end());
-    const std::size_t k = ratios.size();
-    factor = k % 2 ? ratios[k / 2] : (ratios[k / 2 - 1] + ratios[k / 2]) / 2;
-    std::printf("noise control: %zu benchmarks matching '%s', new/old %.3g to %.3g; machine factor %.3f%s\n", k,
-                control_pattern.c_str(), ratios.front(), ratios.back(), factor,
+    factor = median(ratios);
+    const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+    std::printf("noise control: %zu benchmarks matching '%s', new/old %.3g to %.3g; machine factor %.3f%s\n",
+                ratios.size(), control_pattern.c_str(), *lo, *hi, factor,
                 std::abs(factor - 1) > time_threshold ? " (the machine ran at another speed: times are judged against old x factor)"
                                                        : "");
   } else {
