@@ -6,8 +6,10 @@
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <string>
 
@@ -226,6 +228,103 @@ TEST(CurvedBreakpoints, ContainTheClosedFormKinks) {
   const auto q = curved<mpfr>("square", "sphere", M("1"), M("0.5"));
   EXPECT_TRUE(contains(q.gamma_breaks, M("-0.5")));
   for (const auto& g : q.gamma_breaks) EXPECT_TRUE(g > -1 && g < M("0.5"));
+}
+
+// The Gauss–Legendre rules of the spring integral (detail/gauss_legendre.hpp): the 5-point rule
+// against its closed form, and every rule exact for u^k up to k = 2n − 1, with the classical error
+// (n!)^4 / ((2n)!)^2 relative for u^2n (to 1 %, where that is above rounding): a rule with wrong
+// nodes fails the first, a rule of another order the second. Tolerance: the sum of n terms each
+// rounded once, 8·n·eps of the working type.
+template <class Real>
+void check_gauss_rules() {
+  using std::abs;
+  using std::pow;
+  const Real eps = std::numeric_limits<Real>::epsilon() > 0 ? std::numeric_limits<Real>::epsilon() : Real(pow(Real(10), -working_digits10<Real>()));
+  for (std::size_t n : {1u, 2u, 5u, 12u, 40u}) {
+    const auto& rule = detail::gauss_legendre<Real>(n);
+    ASSERT_EQ(rule.nodes.size(), n);
+    ASSERT_EQ(rule.weights.size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      EXPECT_TRUE(rule.nodes[i] > 0 && rule.nodes[i] < 1) << n;
+      if (i > 0) {
+        EXPECT_TRUE(rule.nodes[i] > rule.nodes[i - 1]) << n;
+      }
+      EXPECT_LE(abs(rule.nodes[i] + rule.nodes[n - 1 - i] - 1), 2 * eps) << n << " " << i;  // symmetric
+      EXPECT_LE(abs(rule.weights[i] - rule.weights[n - 1 - i]), 2 * eps * rule.weights[i]) << n << " " << i;
+    }
+    for (std::size_t k = 0; k <= 2 * n; ++k) {
+      Real sum = 0;
+      for (std::size_t i = 0; i < n; ++i) sum += rule.weights[i] * pow(rule.nodes[i], static_cast<int>(k));
+      const Real exact = Real(1) / Real(k + 1), err = abs(sum - exact) / exact;
+      if (k < 2 * n) {
+        EXPECT_LE(err, 8 * n * eps) << "n = " << n << ", u^" << k;
+      } else {
+        const double nn = static_cast<double>(n);
+        const double expected = std::exp(4 * std::lgamma(nn + 1) - 2 * std::lgamma(2 * nn + 1));
+        if (expected > 1000 * 8 * nn * static_cast<double>(eps)) {
+          EXPECT_NEAR(static_cast<double>(err), expected, expected / 100) << "n = " << n << ", u^" << k;
+        }
+      }
+    }
+  }
+}
+
+TEST(CurvedQuadrature, GaussRulesAreExactToDegree2nMinus1InEveryType) {
+  check_gauss_rules<double>();
+  check_gauss_rules<long double>();
+  check_gauss_rules<bin50>();
+  PrecisionScope scope(60);
+  check_gauss_rules<mpfr>();
+  // The 5-point rule in closed form: x = 0, ±sqrt(5 ∓ 2 sqrt(10/7))/3, weights 128/225 and
+  // (322 ± 13 sqrt 70)/900 on [−1, 1]; on [0, 1] u = (1 + x)/2 and half the weights.
+  const auto& r = detail::gauss_legendre<mpfr>(5);
+  const mpfr s = sqrt(mpfr(10) / 7), inner = sqrt(5 - 2 * s) / 3, outer = sqrt(5 + 2 * s) / 3;
+  const mpfr u[5] = {(1 - outer) / 2, (1 - inner) / 2, mpfr(1) / 2, (1 + inner) / 2, (1 + outer) / 2};
+  const mpfr wo = (322 - 13 * sqrt(mpfr(70))) / 1800, wi = (322 + 13 * sqrt(mpfr(70))) / 1800;
+  const mpfr w[5] = {wo, wi, mpfr(64) / 225, wi, wo};
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_LE(abs(r.nodes[i] - u[i]), mpfr("1e-59")) << i;
+    EXPECT_LE(abs(r.weights[i] - w[i]), mpfr("1e-59")) << i;
+  }
+}
+
+// gauss_segment either returns a value whose actual error is within its estimate, or gives up
+// (false) and leaves the segment to tanh-sinh: never a value outside its estimate. Analytic
+// integrands are accepted within the asked tolerance; sqrt(u), with its branch point at the end,
+// and 1/(u + 1e-4), with a pole a ten-thousandth of the width away, must not come back with an
+// error estimate they do not meet. 30 digits; asked for 1e-26, and for 1e-10, where the accepted
+// values' errors are far above rounding, so that an estimate that understates them shows.
+TEST(CurvedQuadrature, GaussSegmentReturnsOnlyValuesWithinItsEstimate) {
+  PrecisionScope scope(30);
+  struct Case {
+    const char* name;
+    std::function<mpfr(const mpfr&)> f;
+    mpfr exact;
+    bool analytic;
+  };
+  const std::vector<Case> cases{
+      {"exp(u)", [](const mpfr& u) { return mpfr(exp(u)); }, mpfr(exp(mpfr(1)) - 1), true},
+      {"1/(1 + 100 u^2)", [](const mpfr& u) { return mpfr(1 / (1 + 100 * u * u)); }, mpfr(atan(mpfr(10)) / 10), true},
+      {"u^7 (3 - 2u)", [](const mpfr& u) { return mpfr(pow(u, 7) * (3 - 2 * u)); }, mpfr(mpfr(3) / 8 - mpfr(2) / 9), true},
+      {"sqrt(u)", [](const mpfr& u) { return mpfr(sqrt(u)); }, mpfr(mpfr(2) / 3), false},
+      {"1/(u + 1e-4)", [](const mpfr& u) { return mpfr(1 / (u + mpfr("1e-4"))); }, mpfr(log(mpfr("1.0001") / mpfr("1e-4"))), false},
+  };
+  for (const mpfr& rel : {mpfr("1e-26"), mpfr("1e-10")}) {
+    for (const auto& c : cases) {
+      mpfr value, err, l1;
+      const bool ok = detail::gauss_segment(c.f, rel, mpfr(0), value, err, l1);
+      if (c.analytic) {
+        EXPECT_TRUE(ok) << c.name;
+      }
+      if (!ok) continue;
+      // solve_curved adds the rounding of the weighted sum, 4·eps·L1, to the estimate.
+      const mpfr actual = abs(value - c.exact), rounding = 4 * std::numeric_limits<mpfr>::epsilon() * l1;
+      EXPECT_LE(actual, err + rounding) << c.name << " at " << rel.str(3) << ": value " << value.str(30) << ", error estimate "
+                                        << err.str(3);
+      EXPECT_LE(err, rel * l1) << c.name;
+      EXPECT_TRUE(l1 > 0) << c.name;
+    }
+  }
 }
 
 // The flat punch's area_error (the springs' rounding bound the spring integral adds up) bounds

@@ -1,0 +1,145 @@
+// Gauss–Legendre rules on [0, 1] at the working precision, for the spring integral of a curved
+// contact (curved.hpp; model.md, "Curved contacts (MDR)"), whose integrand the u-map makes
+// analytic on each segment: there the n-point rule converges geometrically (sphere + sine,
+// measured: 1e-17 at n = 20, 1e-25 at 30, 1e-30 to 1e-36 at 40), where tanh-sinh, which spends
+// its nodes on endpoint singularities that are no longer there, needs 260 nodes for 1e-25.
+//
+// Nodes and weights are computed in MPFR with 20 guard digits and rounded once to Real, kept per
+// thread, precision and n. Boost's gauss and gauss_kronrod keep runtime-precision nodes from the
+// first call's precision (toolchain.md), so they are not used.
+#pragma once
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "vibrofric/errors.hpp"
+#include "vibrofric/numbers.hpp"
+
+namespace vibrofric::detail {
+
+template <class Real>
+struct GaussRule {
+  std::vector<Real> nodes, weights;  // on [0, 1]; the weights sum to 1
+};
+
+// P_n(x) into p, P_{n−1}(x) into q, by the three-term recurrence at x's precision; t is scratch.
+// Raw MPFR: the recurrence is the whole cost of a rule (O(n) per node), and et_off temporaries
+// would allocate five numbers per step.
+inline void legendre_mpfr(mpfr_t p, mpfr_t q, mpfr_t t, const mpfr_t x, std::size_t n) {
+  mpfr_set_ui(q, 1, MPFR_RNDN);
+  mpfr_set(p, x, MPFR_RNDN);
+  for (unsigned long k = 1; k < n; ++k) {
+    mpfr_mul(t, x, p, MPFR_RNDN);
+    mpfr_mul_ui(t, t, 2 * k + 1, MPFR_RNDN);
+    mpfr_mul_ui(q, q, k, MPFR_RNDN);
+    mpfr_sub(t, t, q, MPFR_RNDN);
+    mpfr_div_ui(t, t, k + 1, MPFR_RNDN);
+    mpfr_swap(q, p);
+    mpfr_swap(p, t);
+  }
+}
+
+// P_n'(x) = n (x P_n − P_{n−1}) / (x² − 1) into d; t scratch.
+inline void legendre_slope_mpfr(mpfr_t d, mpfr_t t, const mpfr_t x, const mpfr_t p, const mpfr_t q, std::size_t n) {
+  mpfr_mul(d, x, p, MPFR_RNDN);
+  mpfr_sub(d, d, q, MPFR_RNDN);
+  mpfr_mul_ui(d, d, static_cast<unsigned long>(n), MPFR_RNDN);
+  mpfr_sqr(t, x, MPFR_RNDN);
+  mpfr_sub_ui(t, t, 1, MPFR_RNDN);
+  mpfr_div(d, d, t, MPFR_RNDN);
+}
+
+// The n-point rule: the roots x of P_n by Newton's method, first in double from the classical
+// guess cos(π(i + 3/4)/(n + 1/2)), then in MPFR at doubling precision up to the working digits
+// plus 20 (each step doubles the correct bits, so only the last two cost the full precision);
+// weights 2/((1 − x²) P_n'(x)²), halved for [0, 1]; all rounded once to Real.
+template <class Real>
+const GaussRule<Real>& gauss_legendre(std::size_t n) {
+  thread_local std::map<std::pair<int, std::size_t>, GaussRule<Real>> cache;
+  const int digits = working_digits10<Real>();
+  auto [it, fresh] = cache.try_emplace({digits, n});
+  GaussRule<Real>& rule = it->second;
+  if (!fresh) return rule;
+  const unsigned work = static_cast<unsigned>(digits + 20);
+  const mpfr_prec_t bits = static_cast<mpfr_prec_t>(std::ceil(work * 3.3219280948873623)) + 8;
+  std::vector<mpfr> x_hi, w_hi;
+  {
+    PrecisionScope scope(work);
+    mpfr_t x, p, q, t, d;
+    for (mpfr_t* v : {&x, &p, &q, &t, &d}) mpfr_init2(*v, bits);
+    const auto newton_step = [&](mpfr_prec_t prec) {  // x −= P_n/P_n' at prec bits; |step| relative to x in t
+      for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, prec);
+      mpfr_prec_round(x, prec, MPFR_RNDN);
+      legendre_mpfr(p, q, t, x, n);
+      legendre_slope_mpfr(d, t, x, p, q, n);
+      mpfr_div(t, p, d, MPFR_RNDN);
+      mpfr_sub(x, x, t, MPFR_RNDN);
+    };
+    for (std::size_t i = 0; i < n / 2 + n % 2; ++i) {
+      if (n % 2 == 1 && i == n / 2) {
+        mpfr_set_prec(x, bits);
+        mpfr_set_ui(x, 0, MPFR_RNDN);
+      } else {
+        double g = std::cos(3.14159265358979323846 * (static_cast<double>(i) + 0.75) / (static_cast<double>(n) + 0.5));
+        for (int k = 0; k < 100; ++k) {
+          double p0 = 1, p1 = g;
+          for (std::size_t j = 1; j < n; ++j) {
+            const double p2 = ((2.0 * j + 1) * g * p1 - static_cast<double>(j) * p0) / (static_cast<double>(j) + 1);
+            p0 = p1;
+            p1 = p2;
+          }
+          const double step = p1 / (static_cast<double>(n) * (g * p1 - p0) / (g * g - 1));
+          g -= step;
+          if (std::abs(step) <= 1e-15) break;
+        }
+        mpfr_set_prec(x, 53);
+        mpfr_set_d(x, g, MPFR_RNDN);
+        for (mpfr_prec_t prec = 96; prec < bits; prec *= 2) newton_step(prec);
+        // At the full precision: until a step is below the square root of it, then one more
+        // (quadratic convergence leaves the node exact to the precision).
+        bool converged = false;
+        for (int k = 0; k < 64 && !converged; ++k) {
+          newton_step(bits);
+          if (mpfr_zero_p(t) || mpfr_get_exp(t) - mpfr_get_exp(x) < -bits / 2) {
+            newton_step(bits);
+            converged = true;
+          }
+        }
+        if (!converged)
+          throw SolverError("Gauss-Legendre node " + std::to_string(i) + " of " + std::to_string(n) + " did not converge");
+      }
+      for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, bits);
+      legendre_mpfr(p, q, t, x, n);
+      legendre_slope_mpfr(d, t, x, p, q, n);
+      mpfr xv, wv;
+      mpfr_set(xv.backend().data(), x, MPFR_RNDN);
+      // 2/((1 − x²) P'²), halved for [0, 1]
+      mpfr_sqr(t, x, MPFR_RNDN);
+      mpfr_ui_sub(t, 1, t, MPFR_RNDN);
+      mpfr_mul(t, t, d, MPFR_RNDN);
+      mpfr_mul(t, t, d, MPFR_RNDN);
+      mpfr_ui_div(wv.backend().data(), 1, t, MPFR_RNDN);
+      x_hi.push_back(xv);
+      w_hi.push_back(wv);
+    }
+    for (mpfr_t* v : {&x, &p, &q, &t, &d}) mpfr_clear(*v);
+  }
+  // u = (1 ∓ x)/2, ascending; the middle node of an odd rule once.
+  const std::size_t m = x_hi.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    PrecisionScope scope(work);
+    rule.nodes.push_back(rounded<Real>(mpfr((1 - x_hi[i]) / 2), static_cast<unsigned>(digits)));
+    rule.weights.push_back(rounded<Real>(w_hi[i], static_cast<unsigned>(digits)));
+  }
+  for (std::size_t i = m; i-- > 0;) {
+    if (n % 2 == 1 && i == m - 1) continue;
+    PrecisionScope scope(work);
+    rule.nodes.push_back(rounded<Real>(mpfr((1 + x_hi[i]) / 2), static_cast<unsigned>(digits)));
+    rule.weights.push_back(rounded<Real>(w_hi[i], static_cast<unsigned>(digits)));
+  }
+  return rule;
+}
+
+}  // namespace vibrofric::detail
