@@ -790,6 +790,9 @@ def bench_section(w, path, r):
                if "solver_mpfr_%d" % d in paths]
         if pts:
             blocks.append((wave, pts))
+    cdc = meta.get("summary", {}).get("curved_digits_cost")
+    if cdc:
+        blocks.append(("sphere + sine (curved)", [(d, t / 1000.0) for d, t in cdc["points_cpu_ns"]]))
     if blocks:
         r.write_data("cost_digits.dat", blocks, "digits cpu_us (solver in mpfr, one evaluation, from %s)" %
                      os.path.relpath(path, ROOT))
@@ -797,7 +800,7 @@ def bench_section(w, path, r):
                                    ("cost_digits.dat" if i == 0 else "", i, wave) for i, (wave, _) in enumerate(blocks))
         fig = r.gnuplot("cost_digits", """
 set title 'Cost of one evaluation of μ̄ against working precision (mpfr)'
-set xrange [40:1200]
+set xrange [15:1200]
 set xlabel 'working precision (decimal digits)'
 set ylabel 'CPU time per evaluation (µs)'
 set logscale xy
@@ -806,7 +809,8 @@ plot %s
 """ % plots)
         w("![Cost against digits](%s)" % fig)
         w("")
-        w("*Cost of one solver evaluation in mpfr against digits, per wave (log–log).*")
+        w("*Cost of one solver evaluation in mpfr against digits, per wave, and of one curved evaluation "
+          "(sphere + sine, mean over the bench's three inputs) (log–log).*")
         w("")
 
 
