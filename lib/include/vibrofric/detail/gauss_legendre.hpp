@@ -59,16 +59,23 @@ template <class Real>
 const GaussRule<Real>& gauss_legendre(std::size_t n) {
   thread_local std::map<std::pair<int, std::size_t>, GaussRule<Real>> cache;
   const int digits = working_digits10<Real>();
-  auto [it, fresh] = cache.try_emplace({digits, n});
-  GaussRule<Real>& rule = it->second;
-  if (!fresh) return rule;
+  if (const auto hit = cache.find({digits, n}); hit != cache.end()) return hit->second;
+  GaussRule<Real> rule;  // kept only once complete: a node that fails to converge throws
   const unsigned work = static_cast<unsigned>(digits + 20);
   const mpfr_prec_t bits = static_cast<mpfr_prec_t>(std::ceil(work * 3.3219280948873623)) + 8;
   std::vector<mpfr> x_hi, w_hi;
   {
     PrecisionScope scope(work);
-    mpfr_t x, p, q, t, d;
-    for (mpfr_t* v : {&x, &p, &q, &t, &d}) mpfr_init2(*v, bits);
+    struct Scratch {  // cleared on every way out
+      mpfr_t v[5];
+      explicit Scratch(mpfr_prec_t bits) {
+        for (auto& e : v) mpfr_init2(e, bits);
+      }
+      ~Scratch() {
+        for (auto& e : v) mpfr_clear(e);
+      }
+    } scratch(bits);
+    mpfr_t &x = scratch.v[0], &p = scratch.v[1], &q = scratch.v[2], &t = scratch.v[3], &d = scratch.v[4];
     const auto newton_step = [&](mpfr_prec_t prec) {  // x −= P_n/P_n' at prec bits; |step| relative to x in t
       for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, prec);
       mpfr_prec_round(x, prec, MPFR_RNDN);
@@ -124,7 +131,6 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
       x_hi.push_back(xv);
       w_hi.push_back(wv);
     }
-    for (mpfr_t* v : {&x, &p, &q, &t, &d}) mpfr_clear(*v);
   }
   // u = (1 ∓ x)/2, ascending; the middle node of an odd rule once.
   const std::size_t m = x_hi.size();
@@ -139,7 +145,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
     rule.nodes.push_back(rounded<Real>(mpfr((1 + x_hi[i]) / 2), static_cast<unsigned>(digits)));
     rule.weights.push_back(rounded<Real>(w_hi[i], static_cast<unsigned>(digits)));
   }
-  return rule;
+  return cache.emplace(std::make_pair(digits, n), std::move(rule)).first->second;
 }
 
 }  // namespace vibrofric::detail
