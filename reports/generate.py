@@ -726,7 +726,15 @@ def curved_bench_table(w, path):
         for name, e in paths.items():
             t = e.get("cpu_ns")
             err = e.get("rel_error")
-            note = e.get("how") or ("M = %d, N = %d" % (e["springs"], e["steps"]) if "springs" in e else "")
+            # M, N: the spring row (solver_mpfr_D counts springs per evaluation, and has no steps)
+            if e.get("how"):
+                note = e["how"]
+            elif "steps" in e:
+                note = "M = %d, N = %d" % (e["springs"], e["steps"])
+            elif "springs" in e:
+                note = "%.0f springs per evaluation" % e["springs"]
+            else:
+                note = ""
             w("| %s | %s | %s | %s | %s |" % (case, name, fmt_time(t), "-" if err is None else "%.1e" % err,
                                               md_escape(note)))
     w("")
