@@ -291,10 +291,16 @@ ClaimCheck scope_numerics(int digits) {
                       "not judged (bench/ has the benchmark). Deviation: largest relative difference to the reference";
   double worst_time = 0, worst_double = 0, t_double = 0, t_30 = 0, t_d = 0;
   std::size_t springs = 0;
-  // Untimed first runs: the tanh-sinh tables of each precision are built once per thread.
-  for (int d : {30, digits}) {
-    PrecisionScope scope(static_cast<unsigned>(d + detail::guard_digits(d)));
-    curved("sine", named("sphere"), num(points[0].first), num(points[0].second), d);
+  // Untimed first runs of every point: the quadrature tables (tanh-sinh's, and the Gauss rules,
+  // one per size a segment asks for) are built once per thread and precision.
+  for (const auto& [b, g] : points) {
+    const auto w = make_waveform<double>(parse_wave("sine"));
+    const auto p = make_profile<double>(parse_profile("sphere"));
+    solve_curved(*w, *p, std::strtod(b, nullptr), std::strtod(g, nullptr));
+    for (int d : {30, digits}) {
+      PrecisionScope scope(static_cast<unsigned>(d + detail::guard_digits(d)));
+      curved("sine", named("sphere"), num(b), num(g), d);
+    }
   }
   for (const auto& [b, g] : points) {
     // Double: the raw curved solver, its bound and its error.
