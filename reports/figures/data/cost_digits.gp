@@ -3,7 +3,7 @@ set key box opaque
 set grid
 
 set title 'Cost of one evaluation of μ̄ against working precision (mpfr)'
-set xrange [40:1200]
+set xrange [15:1200]
 set xlabel 'working precision (decimal digits)'
 set ylabel 'CPU time per evaluation (µs)'
 set logscale xy
@@ -13,4 +13,5 @@ plot 'cost_digits.dat' index 0 using 1:2 with linespoints lw 2 pt 7 title 'power
      '' index 2 using 1:2 with linespoints lw 2 pt 7 title 'sawtooth-right', \
      '' index 3 using 1:2 with linespoints lw 2 pt 7 title 'sine', \
      '' index 4 using 1:2 with linespoints lw 2 pt 7 title 'square', \
-     '' index 5 using 1:2 with linespoints lw 2 pt 7 title 'triangle'
+     '' index 5 using 1:2 with linespoints lw 2 pt 7 title 'triangle', \
+     '' index 6 using 1:2 with linespoints lw 2 pt 7 title 'sphere + sine (curved)'
