@@ -327,6 +327,23 @@ TEST(CurvedQuadrature, GaussSegmentReturnsOnlyValuesWithinItsEstimate) {
   }
 }
 
+// The curved solver's own bound in long double (the quadrature estimates plus the springs'
+// rounding bounds at the evaluated nodes) bounds its actual error against 40 digits: the
+// guaranteed double path certifies curved values on it. Sine and triangle on the sphere, the cone
+// and the wear flat, stick-slip with and without jumping at the centre.
+TEST(CurvedPrecision, LongDoubleBoundHoldsAgainstFortyDigits) {
+  for (const char* wave : {"sine", "triangle"})
+    for (const char* profile : {"sphere", "cone", "wearflat:10"})
+      for (const auto& [b, g] : std::vector<std::pair<const char*, const char*>>{{"1", "-0.3"}, {"2", "0.5"}, {"0.5", "1.5"}}) {
+        const auto r = curved<long double>(wave, profile, std::strtold(b, nullptr), std::strtold(g, nullptr));
+        PrecisionScope scope(40);
+        const auto ref = curved<mpfr>(wave, profile, M(b), M(g));
+        const mpfr actual = abs((mpfr(r.mu) - ref.mu) / ref.mu);
+        EXPECT_LE(actual, mpfr(r.relative_error)) << wave << " " << profile << " " << b << " " << g;
+        EXPECT_TRUE(r.relative_error < 1e-16L) << wave << " " << profile << " " << b << " " << g << ": " << static_cast<double>(r.relative_error);
+      }
+}
+
 // The flat punch's area_error (the springs' rounding bound the spring integral adds up) bounds
 // the actual error of retained_area and normal_area in double, against 40-digit mpfr.
 TEST(CurvedPrecision, SpringAreaErrorBoundsTheAreasInDouble) {
