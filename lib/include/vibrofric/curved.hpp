@@ -4,11 +4,11 @@
 //
 // every spring of the row being the flat punch (solver.hpp) at the shifted mean indentation
 // γ' = γ − σ(x). The x-integral runs from the centre to the contact edge σ = γ + max w, by
-// Gauss–Legendre between breakpoints (tanh-sinh where a Gauss rule does not converge soon: see
-// gauss_segment). Φ_w(β, ·) and N_w(·) are analytic in γ' between the values
-// where the flat-punch event structure changes; those are found from the structure itself
-// (gamma_breakpoints below), never from a grid, and each is a breakpoint of the x-integral,
-// as are the profile's own kinks. At a breakpoint the integrand behaves like a power of the
+// Gauss–Legendre between breakpoints, graded towards close ones (graded_pieces; tanh-sinh where
+// a Gauss rule does not converge soon: see gauss_segment). Φ_w(β, ·) and N_w(·) are analytic in
+// γ' between the values where the flat-punch event structure changes; those are found from the
+// structure itself (gamma_breakpoints below), never from a grid, and each is a breakpoint of the
+// x-integral, as are the profile's own kinks. At a breakpoint the integrand behaves like a power of the
 // square root of the distance (contact edge, stick appearing, σ beyond a profile's kink):
 // each segment is mapped by t = a + (b − a) u²(3 − 2u), which makes that analytic in u. The
 // wear-flat sphere is integrated in σ, where x(σ) is analytic.
@@ -88,6 +88,44 @@ bool gauss_segment(F f, const Real& rel, const Real& abs_tol, Real& value, Real&
     prev = cur;
     n = next;
   }
+}
+
+// The breakpoints ts (ascending, distinct) with pieces graded towards close neighbours. The
+// integrand continued beyond a segment's end is singular at the next breakpoint too. One far
+// closer than the width (breakpoints that cluster, as the tangency points of a small β near the
+// contact edge) lies nearer the end than the Gauss nodes do: two rules that both miss it agree,
+// and their difference understates the error (measured: sine, power:3 profile, β = 0.01,
+// γ = −0.3 in double, two breakpoints within 4e-6 of the edge in γ': actual error 1.04 times
+// the bound). So a side whose neighbour is d < width/8 away is cut at end ± d(9^j − 1),
+// j = 1, 2, …: every piece then sees its nearest outside singularity at least 1/8 of its width
+// away, as an unsplit segment does. On 720 small- and large-β inputs, grading at 1/2 (3^j) cost
+// 1.3–1.9× the springs with no smaller worst error ratio; at 1/16 it cost the same as at 1/8.
+// A segment cut on both sides is graded from each end to its middle; the outer ends of the row
+// (centre, contact edge) have no neighbour.
+template <class Real>
+std::vector<Real> graded_pieces(const std::vector<Real>& ts) {
+  constexpr int q = 9;
+  std::vector<Real> out;
+  if (ts.empty()) return out;
+  out.push_back(ts.front());
+  for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+    const Real &a = ts[k], &b = ts[k + 1];
+    const Real width = b - a;
+    const bool left = k > 0 && (q - 1) * (a - ts[k - 1]) < width, right = k + 2 < ts.size() && (q - 1) * (ts[k + 2] - b) < width;
+    const Real mid = left && right ? Real((a + b) / 2) : (left ? b : a);
+    if (left)
+      for (Real step = (q - 1) * (a - ts[k - 1]); a + step < mid; step = q * step + (q - 1) * (a - ts[k - 1]))
+        if (a + step > out.back()) out.push_back(a + step);
+    if (right) {
+      std::vector<Real> rs;
+      for (Real step = (q - 1) * (ts[k + 2] - b); b - step > mid; step = q * step + (q - 1) * (ts[k + 2] - b)) rs.push_back(b - step);
+      if (left && mid > out.back()) out.push_back(mid);
+      for (auto it = rs.rbegin(); it != rs.rend(); ++it)
+        if (*it > out.back()) out.push_back(*it);
+    }
+    if (b > out.back()) out.push_back(b);
+  }
+  return out;
 }
 
 // One spring: (Φ, N) and the bound on their absolute rounding error; no contact gives zeros.
@@ -282,14 +320,15 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     ts.push_back(t1);
     std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+    const std::vector<Real> ps = detail::graded_pieces(ts);
 
     // β ≥ β_c(γ) ≥ β_c(γ') for every spring (β_c grows with γ'): no stick anywhere, Φ = N (Eq. 6).
     const bool sticks = beta < center.beta_c;
     Real F = profile.flat_length() * center.retained_area, N = profile.flat_length() * center.normal_area;
     // Rounding: the springs' bounds, integrated as their largest value times the segment length.
     Real rounding = profile.flat_length() * center.area_error, lF = abs(F), lN = abs(N), qerr = 0;
-    std::vector<std::map<Real, detail::SpringValue<Real>>> memo(ts.size());
-    std::vector<Real> worst(ts.size(), Real(0));
+    std::vector<std::map<Real, detail::SpringValue<Real>>> memo(ps.size());
+    std::vector<Real> worst(ps.size(), Real(0));
     auto spring = [&](std::size_t k, const Real& t) -> const detail::SpringValue<Real>& {
       auto it = memo[k].find(t);
       if (it != memo[k].end()) return it->second;
@@ -305,12 +344,12 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     // by the midpoint rule first: a segment between two nearly equal breakpoints then needs only
     // Boost's four levels, not digits it cannot reach relative to its own tiny size.
     Real scale = N;
-    for (std::size_t k = 0; k + 1 < ts.size(); ++k)
-      if (ts[k + 1] > ts[k]) scale += (ts[k + 1] - ts[k]) * spring(k, Real((ts[k] + ts[k + 1]) / 2)).n;
+    for (std::size_t k = 0; k + 1 < ps.size(); ++k)
+      if (ps[k + 1] > ps[k]) scale += (ps[k + 1] - ps[k]) * spring(k, Real((ps[k] + ps[k + 1]) / 2)).n;
     using std::sqrt;
     auto& quad = detail::integrator<Real>(opt.max_quadrature_levels);
-    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
-      const Real &a = ts[k], &b = ts[k + 1];
+    for (std::size_t k = 0; k + 1 < ps.size(); ++k) {
+      const Real &a = ps[k], &b = ps[k + 1];
       if (!(b > a)) continue;
       const Real size = (b - a) * spring(k, Real((a + b) / 2)).n;
       const Real seg_tol = size > tol * scale ? std::min(Real(tol * scale / size), Real(sqrt(eps))) : Real(sqrt(eps));
