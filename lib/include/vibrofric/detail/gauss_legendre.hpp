@@ -52,9 +52,17 @@ inline void legendre_slope_mpfr(mpfr_t d, mpfr_t t, const mpfr_t x, const mpfr_t
 }
 
 // The n-point rule: the roots x of P_n by Newton's method, first in double from the classical
-// guess cos(π(i + 3/4)/(n + 1/2)), then in MPFR at doubling precision up to the working digits
-// plus 20 (each step doubles the correct bits, so only the last two cost the full precision);
-// weights 2/((1 − x²) P_n'(x)²), halved for [0, 1]; all rounded once to Real.
+// guess cos(π(i + 3/4)/(n + 1/2)), then in MPFR on a ladder of precisions below the working
+// digits plus 20 (`bits`), each step repeated until it is below the square root of its precision.
+// The top of the ladder, bits/2 + 64, leaves the node exact to about that: one step at `bits`
+// then makes it exact to the precision (quadratic convergence), and P_n' at the new node is
+// P_n' + P_n''·δ at the old one, with P_n'' from Legendre's equation (1 − x²)P'' = 2xP' − n(n+1)P;
+// the neglected term, of order n⁴δ² relative (each derivative gains at most n², Markov), is below
+// 2^-(bits+96)·n⁴, under 2^-bits for every n below 2^24. A node so costs one
+// recurrence at the full precision, where it cost three (a step, one more, and the weight), and
+// the build of a rule, which a curved contact's first call at high digits pays, about half. A
+// full step that is not that small is repeated until it is. Weights 2/((1 − x²) P_n'(x)²), halved
+// for [0, 1]; all rounded once to Real.
 template <class Real>
 const GaussRule<Real>& gauss_legendre(std::size_t n) {
   thread_local std::map<std::pair<int, std::size_t>, GaussRule<Real>> cache;
@@ -67,7 +75,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
   {
     PrecisionScope scope(work);
     struct Scratch {  // cleared on every way out
-      mpfr_t v[5];
+      mpfr_t v[6];
       explicit Scratch(mpfr_prec_t bits) {
         for (auto& e : v) mpfr_init2(e, bits);
       }
@@ -75,7 +83,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
         for (auto& e : v) mpfr_clear(e);
       }
     } scratch(bits);
-    mpfr_t &x = scratch.v[0], &p = scratch.v[1], &q = scratch.v[2], &t = scratch.v[3], &d = scratch.v[4];
+    mpfr_t &x = scratch.v[0], &p = scratch.v[1], &q = scratch.v[2], &t = scratch.v[3], &d = scratch.v[4], &y = scratch.v[5];
     const auto newton_step = [&](mpfr_prec_t prec) {  // x −= P_n/P_n' at prec bits; |step| relative to x in t
       for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, prec);
       mpfr_prec_round(x, prec, MPFR_RNDN);
@@ -85,9 +93,12 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
       mpfr_sub(x, x, t, MPFR_RNDN);
     };
     for (std::size_t i = 0; i < n / 2 + n % 2; ++i) {
-      if (n % 2 == 1 && i == n / 2) {
+      if (n % 2 == 1 && i == n / 2) {  // the middle node 0 of an odd rule, P_n'(0) from the recurrence
         mpfr_set_prec(x, bits);
         mpfr_set_ui(x, 0, MPFR_RNDN);
+        for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, bits);
+        legendre_mpfr(p, q, t, x, n);
+        legendre_slope_mpfr(d, t, x, p, q, n);
       } else {
         double g = std::cos(3.14159265358979323846 * (static_cast<double>(i) + 0.75) / (static_cast<double>(n) + 0.5));
         for (int k = 0; k < 100; ++k) {
@@ -103,23 +114,36 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
         }
         mpfr_set_prec(x, 53);
         mpfr_set_d(x, g, MPFR_RNDN);
-        for (mpfr_prec_t prec = 96; prec < bits; prec *= 2) newton_step(prec);
-        // At the full precision: until a step is below the square root of it, then one more
-        // (quadratic convergence leaves the node exact to the precision).
+        // The last step, t relative to x, below 2^-limit.
+        const auto small = [&](mpfr_prec_t limit) { return mpfr_zero_p(t) || mpfr_get_exp(t) - mpfr_get_exp(x) < -limit; };
+        std::vector<mpfr_prec_t> ladder;
+        for (mpfr_prec_t prec = bits / 2 + 64; prec < bits && prec > 64; prec = prec / 2 + 16) ladder.push_back(prec);
+        for (auto it = ladder.rbegin(); it != ladder.rend(); ++it)
+          for (int k = 0; k < 64; ++k) {
+            newton_step(*it);
+            if (small(*it / 2 + 8)) break;
+          }
+        // At the full precision, until a step is below 2^-(bits/2 + 48): the node before it was
+        // exact to that, the node after it is exact.
         bool converged = false;
         for (int k = 0; k < 64 && !converged; ++k) {
           newton_step(bits);
-          if (mpfr_zero_p(t) || mpfr_get_exp(t) - mpfr_get_exp(x) < -bits / 2) {
-            newton_step(bits);
-            converged = true;
-          }
+          converged = small(bits / 2 + 48);
         }
         if (!converged)
           throw SolverError("Gauss-Legendre node " + std::to_string(i) + " of " + std::to_string(n) + " did not converge");
+        // p, d: P_n and P_n' at the old node y = x + t. d −= P_n''(y)·t, P_n'' from Legendre's equation.
+        mpfr_add(y, x, t, MPFR_RNDN);
+        mpfr_mul_ui(p, p, static_cast<unsigned long>(n) * static_cast<unsigned long>(n + 1), MPFR_RNDN);
+        mpfr_mul(q, y, d, MPFR_RNDN);
+        mpfr_mul_2ui(q, q, 1, MPFR_RNDN);
+        mpfr_sub(q, q, p, MPFR_RNDN);
+        mpfr_sqr(y, y, MPFR_RNDN);
+        mpfr_ui_sub(y, 1, y, MPFR_RNDN);
+        mpfr_div(q, q, y, MPFR_RNDN);
+        mpfr_mul(q, q, t, MPFR_RNDN);
+        mpfr_sub(d, d, q, MPFR_RNDN);
       }
-      for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, bits);
-      legendre_mpfr(p, q, t, x, n);
-      legendre_slope_mpfr(d, t, x, p, q, n);
       mpfr xv, wv;
       mpfr_set(xv.backend().data(), x, MPFR_RNDN);
       // 2/((1 − x²) P'²), halved for [0, 1]
