@@ -59,9 +59,9 @@ inline void legendre_slope_mpfr(mpfr_t d, mpfr_t t, const mpfr_t x, const mpfr_t
 // P_n' + P_n''·δ at the old one, with P_n'' from Legendre's equation (1 − x²)P'' = 2xP' − n(n+1)P;
 // the neglected term, of order n⁴δ² relative (each derivative gains at most n², Markov), is below
 // 2^-(bits+96)·n⁴, under 2^-bits for every n below 2^24. A node so costs one
-// recurrence at the full precision, where it cost three (a step, one more, and the weight), and
-// the build of a rule, which a curved contact's first call at high digits pays, about half. A
-// full step that is not that small is repeated until it is. Weights 2/((1 − x²) P_n'(x)²), halved
+// recurrence at the full precision, where it cost three (a step, one more, and the weight): the
+// rules are bitwise the same, built 1.2–1.6× faster (measured at 30 to 300 digits, n = 40 to 400;
+// the lower rungs of the ladder remain). A full step that is not that small is repeated until it is. Weights 2/((1 − x²) P_n'(x)²), halved
 // for [0, 1]; all rounded once to Real.
 template <class Real>
 const GaussRule<Real>& gauss_legendre(std::size_t n) {
@@ -92,6 +92,10 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
       mpfr_div(t, p, d, MPFR_RNDN);
       mpfr_sub(x, x, t, MPFR_RNDN);
     };
+    // The last step, t relative to x, below 2^-limit.
+    const auto small = [&](mpfr_prec_t limit) { return mpfr_zero_p(t) || mpfr_get_exp(t) - mpfr_get_exp(x) < -limit; };
+    std::vector<mpfr_prec_t> ladder;  // descending; the same for every node
+    for (mpfr_prec_t prec = bits / 2 + 64; prec < bits && prec > 64; prec = prec / 2 + 16) ladder.push_back(prec);
     for (std::size_t i = 0; i < n / 2 + n % 2; ++i) {
       if (n % 2 == 1 && i == n / 2) {  // the middle node 0 of an odd rule, P_n'(0) from the recurrence
         mpfr_set_prec(x, bits);
@@ -114,10 +118,6 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
         }
         mpfr_set_prec(x, 53);
         mpfr_set_d(x, g, MPFR_RNDN);
-        // The last step, t relative to x, below 2^-limit.
-        const auto small = [&](mpfr_prec_t limit) { return mpfr_zero_p(t) || mpfr_get_exp(t) - mpfr_get_exp(x) < -limit; };
-        std::vector<mpfr_prec_t> ladder;
-        for (mpfr_prec_t prec = bits / 2 + 64; prec < bits && prec > 64; prec = prec / 2 + 16) ladder.push_back(prec);
         for (auto it = ladder.rbegin(); it != ladder.rend(); ++it)
           for (int k = 0; k < 64; ++k) {
             newton_step(*it);
