@@ -40,6 +40,7 @@ struct CurvedResult {
   std::vector<Real> gamma_breaks;     // γ' breakpoints inside (−max w, γ), ascending
   std::size_t segments = 0;           // quadrature segments
   std::size_t springs = 0;            // flat-punch solves (breakpoint search and quadrature)
+  std::size_t quadratic_segments = 0; // segments of a piecewise-linear wave taken from 3 springs (QuadraticSprings)
 };
 
 namespace detail {
@@ -162,6 +163,70 @@ class SpringRow {
   RootStats stats_;
 };
 
+// A piecewise-linear wave (triangle, sawtooth, square, samples): between two γ' breakpoints every
+// event phase is affine in γ' (a contact boundary, an onset on a rising piece and the end of its
+// ramp each solve a linear equation; a stick anchored at a kink starts at a fixed phase) and n is
+// affine in (φ, γ') on each piece, so Φ_w(β, γ') and N_w(γ') are quadratics in γ' there. Three
+// springs at the Chebyshev nodes u = 0, ±√3/2 of such an interval (u = (γ' − mid)/half) give both
+// at any γ' in it, as c0 + c1·u + c2·u². Error: the springs' rounding bounds weighted by the
+// Lagrange basis, Σ|L_i(u)|·err_i (at most 5/3 of the largest on [−1, 1]), plus 48 eps·S, S the
+// largest |Φ| or |N| at the nodes: with |c1| ≤ 1.2 S and |c2| ≤ 2.7 S, the coefficients' rounding
+// is at most 13 eps·S, Horner's 11 eps·S and that of u, through |dQ/du| ≤ 6.5 S, 13 eps·S (each
+// rounding counted as eps, twice the unit roundoff). Two more springs, at u = ±15/16, check the
+// quadratic: a breakpoint the structure search did not find, at u_k with a jump Δ of the slope,
+// moves a check's value by about Δ(15/16 − |u_k|) or more from the quadratic; one that misses a
+// check by more than both bounds is not used (the interval's nodes are then each solved). Not at
+// u = ±1, where Φ has a kink: the interval's ends carry the rounding of σ ↔ t, and a check an
+// ulp beyond the kink misses by about Δ·ulp, which is the size of the bounds.
+template <class Real>
+class QuadraticSprings {
+ public:
+  // Springs at the nodes of (lo, hi); false if the check springs disagree with the quadratic.
+  bool fit(SpringRow<Real>& row, const Real& lo, const Real& hi) {
+    using std::abs;
+    using std::sqrt;
+    mid_ = (lo + hi) / 2;
+    half_ = (hi - lo) / 2;
+    const Real c = sqrt(Real(3)) / 2;  // cos(π/6)
+    const Real x0 = mid_ - half_ * c, x2 = mid_ + half_ * c;
+    if (!(x0 > lo) || !(x0 < mid_) || !(mid_ < x2) || !(x2 < hi)) return false;
+    const SpringValue<Real> y0 = row.at(x0), y1 = row.at(mid_), y2 = row.at(x2);
+    // y(u) = y1 + (y2 − y0)/(2c)·u + (y0 + y2 − 2 y1)/(2c²)·u², 2c² = 3/2.
+    auto coefficients = [&](const Real& a, const Real& m, const Real& b, Real* k) {
+      k[0] = m;
+      k[1] = (b - a) / (2 * c);
+      k[2] = (a + b - 2 * m) * 2 / 3;
+    };
+    coefficients(y0.phi, y1.phi, y2.phi, phi_);
+    coefficients(y0.n, y1.n, y2.n, n_);
+    e_[0] = y0.err;
+    e_[1] = y1.err;
+    e_[2] = y2.err;
+    Real size = 0;  // S: the largest |Φ| or |N| at the nodes
+    for (const auto* y : {&y0, &y1, &y2}) size = std::max(size, std::max(Real(abs(y->phi)), Real(abs(y->n))));
+    rounding_ = 48 * std::numeric_limits<Real>::epsilon() * size;
+    for (const Real& g : {Real(mid_ - half_ * 15 / 16), Real(mid_ + half_ * 15 / 16)}) {
+      const SpringValue<Real> q = at(g), v = row.at(g);
+      if (abs(q.phi - v.phi) > q.err + v.err || abs(q.n - v.n) > q.err + v.err) return false;
+    }
+    return true;
+  }
+  SpringValue<Real> at(const Real& g) const {
+    using std::abs;
+    const Real u = (g - mid_) / half_;
+    // The Lebesgue function Σ|L_i(u)|: L_1 = 1 − 4u²/3, L_0,2 = 2u(u ∓ c)/3, c = √3/2.
+    const Real uu = u * u, l1 = abs(Real(1 - 4 * uu / 3)), side = abs(u) * 2 / 3, c = Real(0.8660254037844386468L);
+    const Real l0 = side * abs(Real(u - c)), l2 = side * abs(Real(u + c));
+    // 1e-3 widens the Lebesgue sum over the rounding of u, of c (to double) and of the l_i.
+    const Real err = (l0 * e_[0] + l1 * e_[1] + l2 * e_[2]) * Real(1.001) + rounding_;
+    return {Real(phi_[0] + u * (phi_[1] + u * phi_[2])), Real(n_[0] + u * (n_[1] + u * n_[2])), err};
+  }
+
+ private:
+  Real mid_, half_, rounding_;
+  Real phi_[3], n_[3], e_[3];
+};
+
 // The rising piece of w that contains phase φ ∈ [0, 1) (first contact lies on one).
 template <class Real>
 std::size_t rising_piece_at(const Waveform<Real>& w, const Real& phi) {
@@ -220,13 +285,18 @@ std::vector<Real> gamma_breakpoints(detail::SpringRow<Real>& row, const Real& lo
     if (w.jump_at(i)) targets.push_back({w.piece_begin(i), w.end_value((i + pieces - 1) % pieces)});
   }
   for (const Real& t : tangent) targets.push_back({t, w(t)});
+  std::stable_sort(targets.begin(), targets.end(), [](const Target& x, const Target& y) { return x.phase < y.phase; });
 
   std::vector<Real> out(nodes.begin() + 1, nodes.end() - 1);
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
     const Real &a = nodes[k], &b = nodes[k + 1];
-    if (!(b > a)) continue;
     const Real m = (a + b) / 2;
+    // No value of the type lies strictly between a and b (two candidates an ulp or two apart, as
+    // a sample's value and the previous piece's end value computed from its slope): no breakpoint
+    // can either, and m rounded onto a = −max w would be a spring without contact.
+    if (!(m > a) || !(m < b)) continue;
     const Result<Real> rm = row.result(m);
+    std::optional<Result<Real>> rb;  // at b, once per interval (a noisy signal has dozens of sticks)
     for (const auto& st : rm.stick_phases) {
       if (st.level != 0) continue;  // anchored on n: its events do not move with γ'
       // Onset: an upward jump out of zero (fixed phase q), or first contact on a rising piece.
@@ -244,16 +314,21 @@ std::vector<Real> gamma_breakpoints(detail::SpringRow<Real>& row, const Real& lo
       // How far the end reaches on [a, b]: it is largest at b.
       const Real ob = onset(b);
       Real reach = st.end;
-      const Result<Real> rb = row.result(b);
-      for (const auto& sb : rb.stick_phases) {
+      if (!rb) rb = row.result(b);
+      for (const auto& sb : rb->stick_phases) {
         Real d = sb.begin - ob;
         if (d < 0) d = -d;
         if (d < Real(1) / (4 * pieces) && sb.end > reach) reach = sb.end;
       }
-      for (const Target& tg : targets) {
-        for (int shift = 0; shift <= 2; ++shift) {
+      for (int shift = 0; shift <= 2; ++shift) {
+        // Only the targets with ob < phase + shift ≤ reach (sorted by phase, and phase + shift
+        // rounds monotonically: a signal of N samples has 2N targets and dozens of sticks).
+        auto first = std::partition_point(targets.begin(), targets.end(),
+                                          [&](const Target& tg) { return !(Real(tg.phase + shift) > ob); });
+        for (auto it = first; it != targets.end(); ++it) {
+          const Target& tg = *it;
           const Real t = tg.phase + shift;
-          if (!(t > ob) || t > reach) continue;
+          if (t > reach) break;
           // On the onset's own piece the ramp cannot end (n − ramp rises from the onset, or is
           // concave and ends beyond the piece): its interior points are no targets, and the
           // chord to them has only the double root at the onset itself.
@@ -329,16 +404,43 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     Real rounding = profile.flat_length() * center.area_error, lF = abs(F), lN = abs(N), qerr = 0;
     std::vector<std::map<Real, detail::SpringValue<Real>>> memo(ps.size());
     std::vector<Real> worst(ps.size(), Real(0));
-    auto spring = [&](std::size_t k, const Real& t) -> const detail::SpringValue<Real>& {
-      auto it = memo[k].find(t);
-      if (it != memo[k].end()) return it->second;
-      auto v = row.at(Real(gamma - profile.sigma_at_t(t)));
+    // A piecewise-linear wave: each interval of ts (between two breakpoints), and so each graded
+    // piece in it, takes its springs from one quadratic where the check springs agree.
+    const bool linear = dynamic_cast<const PiecewiseLinear<Real>*>(&w) != nullptr;
+    std::vector<std::size_t> interval(ps.size(), 0);
+    for (std::size_t k = 0, j = 0; k < ps.size(); ++k) {
+      while (j + 2 < ts.size() && !(ps[k] < ts[j + 1])) ++j;
+      interval[k] = j;
+    }
+    std::vector<std::optional<detail::QuadraticSprings<Real>>> fits(ts.size());
+    std::vector<bool> fitted(ts.size(), false);
+    auto fitted_quadratic = [&](std::size_t k) -> const detail::QuadraticSprings<Real>* {
+      if (!linear) return nullptr;
+      const std::size_t j = interval[k];
+      if (!fitted[j]) {
+        fitted[j] = true;
+        detail::QuadraticSprings<Real> q;
+        const Real lo = gamma - profile.sigma_at_t(ts[j + 1]), hi = gamma - profile.sigma_at_t(ts[j]);
+        if (q.fit(row, lo, hi)) {
+          fits[j] = q;
+          ++r.quadratic_segments;
+        }
+      }
+      return fits[j] ? &*fits[j] : nullptr;
+    };
+    auto weighted = [&](std::size_t k, detail::SpringValue<Real> v, const Real& t) {
       const Real wgt = profile.dx_dt(t);
       v.phi *= wgt;
       v.n *= wgt;
       v.err *= abs(wgt);
       if (v.err > worst[k]) worst[k] = v.err;
-      return memo[k].emplace(t, v).first->second;
+      return v;
+    };
+    auto spring = [&](std::size_t k, const Real& t) -> detail::SpringValue<Real> {
+      if (const auto* q = fitted_quadratic(k)) return weighted(k, q->at(Real(gamma - profile.sigma_at_t(t))), t);
+      auto it = memo[k].find(t);
+      if (it != memo[k].end()) return it->second;
+      return memo[k].emplace(t, weighted(k, row.at(Real(gamma - profile.sigma_at_t(t))), t)).first->second;
     };
     // The accuracy asked of a segment is relative to the whole integral (N ≥ Φ ≥ 0), estimated
     // by the midpoint rule first: a segment between two nearly equal breakpoints then needs only
@@ -352,7 +454,14 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
       const Real &a = ps[k], &b = ps[k + 1];
       if (!(b > a)) continue;
       const Real size = (b - a) * spring(k, Real((a + b) / 2)).n;
-      const Real seg_tol = size > tol * scale ? std::min(Real(tol * scale / size), Real(sqrt(eps))) : Real(sqrt(eps));
+      // A quadratic's segment costs no springs: it is integrated to the type's own precision,
+      // whatever the target. Its first rule keeps the size the digits give: σ = t^N with N = 1e6
+      // changes within 1e-6 of the end, which rules of 8 and 12 points both miss (they agreed on
+      // the flat punch's 11/15 for the square wave at β = 1.5, γ = −0.6; the closed form and the
+      // rules from 22 points give 0.73333347).
+      const bool quadratic = fitted_quadratic(k) != nullptr;
+      const Real seg_target = quadratic ? Real(32 * eps) : tol;
+      const Real seg_tol = size > seg_target * scale ? std::min(Real(seg_target * scale / size), Real(sqrt(eps))) : Real(sqrt(eps));
       // t = a + (b − a) u²(3 − 2u): dt/du vanishes at both ends, so the square-root behaviour
       // there (σ beyond a profile's kink, Φ and N where contact or stick begins) becomes analytic in u.
       const Real width = b - a;
@@ -360,14 +469,14 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
         const Real t = u < Real(1) / 2 ? Real(a + width * u * u * (3 - 2 * u))
                                        : Real(b - width * (1 - u) * (1 - u) * (1 + 2 * u));
         if (!(t > a) || !(t < b)) return Real(0);  // dt/du = 0 at the ends
-        const auto& v = spring(k, t);
+        const auto v = spring(k, t);
         return (n ? v.n : v.phi) * 6 * width * u * (1 - u);
       };
       for (int which = sticks ? 0 : 1; which < 2; ++which) {
         Real err = 0, l1 = 0;
         Real value;
         const auto f = [&](const Real& u) -> Real { return at_u(u, which == 1); };
-        if (!detail::gauss_segment(f, seg_tol, Real(tol * scale), value, err, l1)) {
+        if (!detail::gauss_segment(f, seg_tol, Real(seg_target * scale), value, err, l1)) {
           std::size_t levels = 0;
           try {
             value = quad.integrate(f, Real(0), Real(1), seg_tol, &err, &l1, &levels);
@@ -379,7 +488,7 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
           // Boost stops early where two levels stop agreeing better (the integrand's rounding):
           // accepted if half the digits were reached, the estimate then entering the error.
           const bool stalled = levels < opt.max_quadrature_levels && err <= sqrt(eps) * l1;
-          if (!(err <= seg_tol * l1) && !(err <= tol * scale) && !stalled && l1 > 0)
+          if (!(err <= seg_tol * l1) && !(err <= seg_target * scale) && !stalled && l1 > 0)
             throw SolverError(std::string("spring integral of ") + (which ? "N" : "Phi") + " did not converge on t in [" +
                               short_str(a) + ", " + short_str(b) + "]: error estimate " + short_str(err) + " after " +
                               std::to_string(levels) + " levels");
