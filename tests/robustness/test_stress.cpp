@@ -17,8 +17,9 @@
 // Tolerances (one of each, no fitting):
 //  - double vs exact (piecewise-linear) and vs a 40-digit solve (smooth): the solver's reported
 //    relative rounding bound plus 4 eps, relative to the value.
-//  - escalated double (the tool's value where the bound exceeds eps): within one ulp of the exact
-//    value (correct rounding, allowing the double rounding mpfr → 20 digits → double).
+//  - escalated double (the tool's value where the bound exceeds eps): the correctly rounded value,
+//    0 ulp: the exact rational rounded once, or the double that the 40-digit solve's bound (80
+//    digits where that does not decide it) proves nearest (correct_rounding.hpp).
 //  - 50 digits vs exact: one unit in the 50th significant digit (the tool's promise is half a unit
 //    plus the rounding of the printed value).
 //  - 50 digits vs an 80-digit solve (smooth): the same unit.
@@ -39,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "../unit/correct_rounding.hpp"
 #include "common.hpp"
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/envelope.hpp"
@@ -416,7 +418,7 @@ struct Tally {
   std::map<std::string, long> escalated_by_family;
   double worst_bound_ratio = 0, worst_escalated_ratio = 0;
   std::string worst_escalated;
-  long escalations = 0, escalation_disagreements = 0;
+  long escalations = 0, escalation_disagreements = 0, undecided_references = 0;
   std::map<std::string, long> by_family;
   double worst_grid = 0;  // max |difference| / bound
   std::vector<std::string> failures;
@@ -461,6 +463,7 @@ struct Tally {
     EXPECT_EQ(grid_disagreements, 0);
     EXPECT_EQ(bound_violations, 0);
     EXPECT_EQ(escalation_disagreements, 0);
+    EXPECT_EQ(undecided_references, 0);
   }
 };
 
@@ -588,20 +591,26 @@ TEST(Stress, DoubleAgainstSecondAlgorithm) {
         t.fail("bad value " + std::to_string(v) + " (error bound " + std::to_string(err) + "): " + describe(w, p));
         continue;
       }
-      // The reference: exact (piecewise-linear, not too many vertices) or the solver at 40 digits.
+      // The reference: exact (piecewise-linear, not too many vertices) or the solver at 40 digits;
+      // with its correctly rounded double where exact or where its bound decides it.
       double ref;
       mpfr ref_m;
+      std::optional<double> nearest_ref;
       if (piecewise_linear(w.family) && !long_samples) {
         const Rational exact = exact_value(w, p, parse_rational(p.beta), parse_rational(p.gamma));
         ref_m = to_mpfr(exact);
+        nearest_ref = vibrofric::testing::nearest<double>(exact);
       } else {
         Result<mpfr> rm;
         if (!guarded(t, w, p, [&] { rm = p.psi ? psi(*wm, mpfr(p.beta)) : solve(*wm, mpfr(p.beta), mpfr(p.gamma)); })) continue;
         if (!((p.psi ? rm.lost_relative_error : rm.relative_error) <= 1e-30)) {
           const std::string s = evaluate(w.spec, p.psi ? Quantity::psi : Quantity::mu, {{p.beta, p.gamma}}, {NumberType::mpfr, 25}).front();
           ref_m = mpfr(s);
+          // 25 digits: half a unit of the 25th digit plus the tool's bound, below 1e-24 relative.
+          nearest_ref = vibrofric::testing::rounds_to_one<double>(ref_m, abs(ref_m) * mpfr("1e-24"));
         } else {
           ref_m = p.psi ? rm.lost_area : rm.mu;
+          nearest_ref = vibrofric::testing::rounds_to_one<double>(ref_m, abs(ref_m) * (p.psi ? rm.lost_relative_error : rm.relative_error));
         }
       }
       ref = static_cast<double>(ref_m);
@@ -620,8 +629,11 @@ TEST(Stress, DoubleAgainstSecondAlgorithm) {
             ++t.bound_violations;
             t.fail("rounding bound violated (not escalated): " + describe(w, p) + buf);
           } else {
-            // The tool escalates here and prints the correctly rounded value (checked below); the
-            // library's Result::relative_error is still too small. Reported, not failed.
+            // The tool escalates here and prints the correctly rounded value (checked below, 0
+            // ulp), but the library's Result::relative_error is still too small: a known bug (at
+            // seed 20260701, 20 of 10,000 cases, 18 Fourier and 2 samples, γ at the contact edge,
+            // up to 5.9 times the bound), reported and not yet failed until the double bound is
+            // fixed, so that the rest of this test guards what it can.
             ++t.escalated_bound_violations;
             ++t.escalated_by_family[family_name(w.family)];
             if (ratio > t.worst_escalated_ratio) {
@@ -653,10 +665,24 @@ TEST(Stress, DoubleAgainstSecondAlgorithm) {
         }
         const double ulp = std::nextafter(std::abs(ref), INFINITY) - std::abs(ref);
         printed_tolerance = ulp / std::max(std::abs(ref), 1e-300);
-        if (!(std::abs(static_cast<double>(mpfr(printed) - ref_m)) <= ulp)) {
+        if (!nearest_ref) {  // the reference's bound straddles a midpoint: 80 digits
+          PrecisionScope more(80);
+          Result<mpfr> r80;
+          if (!guarded(t, w, p, [&] {
+                const auto w80 = make_waveform<mpfr>(w.spec);
+                r80 = p.psi ? psi(*w80, mpfr(p.beta)) : solve(*w80, mpfr(p.beta), mpfr(p.gamma));
+              }))
+            continue;
+          const mpfr v80 = p.psi ? r80.lost_area : r80.mu;
+          nearest_ref = vibrofric::testing::rounds_to_one<double>(v80, abs(v80) * (p.psi ? r80.lost_relative_error : r80.relative_error));
+        }
+        if (!nearest_ref) {
+          ++t.undecided_references;
+          t.fail("the reference at 80 digits does not decide the correctly rounded double: " + describe(w, p));
+        } else if (printed != *nearest_ref) {
           ++t.escalation_disagreements;
           char buf[160];
-          std::snprintf(buf, sizeof buf, ": tool %s, reference %.17g", s.c_str(), ref);
+          std::snprintf(buf, sizeof buf, ": tool %s, correctly rounded %.17g", s.c_str(), *nearest_ref);
           t.fail("escalated value not correctly rounded: " + describe(w, p) + buf);
         }
       }

@@ -3,12 +3,15 @@
 // Ziv's rounding test of the precision ladder (evaluate_impl.hpp) on values next to a midpoint.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
+#include <optional>
 #include <random>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include "correct_rounding.hpp"
 #include "vibrofric/catalogue.hpp"
 #include "vibrofric/detail/evaluate_impl.hpp"
 #include "vibrofric/evaluate.hpp"
@@ -17,6 +20,28 @@
 namespace {
 
 using namespace vibrofric;
+
+using vibrofric::testing::rounds_to_one;  // the exact reference for Ziv's test (correct_rounding.hpp)
+
+// rounds_alike<T, X>(x, e) against rounds_to_one: it may answer true only where every number
+// within e of x rounds alike, and must answer true where that still holds with e widened by
+// 4 ulp of x in X (it widens by 2 ulp and rounds x ± e in X: at most 1 ulp more). Returns the
+// exact decision.
+template <class T, class X>
+std::optional<T> expect_rounds_alike_is_right(const X& x, const X& e, const std::string& where) {
+  using std::abs;
+  const bool answer = detail::rounds_alike<T, X>(x, e);
+  const X eps = std::numeric_limits<X>::epsilon();  // at the caller's precision, as rounds_alike's
+  PrecisionScope scope(static_cast<unsigned>(std::max(2 * working_digits10<X>(), 60)));
+  const mpfr xm(x), em(e);
+  const std::optional<T> exact = rounds_to_one<T>(xm, em);
+  const mpfr margin = 4 * mpfr(eps) * abs(xm);
+  const bool clear = rounds_to_one<T>(xm, em + margin).has_value();
+  EXPECT_TRUE(!answer || exact) << where << ": rounds_alike is true, but [x - e, x + e] holds a midpoint";
+  EXPECT_TRUE(answer || !clear) << where << ": rounds_alike is false, but [x - e, x + e] is clear of the midpoints by "
+                                << "4 ulp of x";
+  return exact;
+}
 
 struct Case {
   const char* wave;
@@ -142,6 +167,43 @@ TEST(Events, RoundingTestSeesBothSidesOfTheInterval) {
   EXPECT_FALSE((rounds_alike<double, long double>(-above, e)));
 }
 
+// rounds_alike near the midpoints of double, where its answer matters: x = m + δ for a midpoint m
+// of two doubles (above a random double, and below a power of two, where the gap halves), |δ|
+// from 1/4 ulp to 2^-40 ulp, e from 1/2 |δ| to 2 |δ|; in long double (the ladder's second rung;
+// |δ| ≥ 2^-8 ulp, representable) and in mpfr at 60 digits (the third). Each answer against the
+// exact decision (expect_rounds_alike_is_right); both decisions occur.
+template <class X>
+void check_rounds_alike_near_midpoints(int finest) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(1, 2);
+  std::size_t decided = 0, undecided = 0;
+  for (int trial = 0; trial < 64; ++trial) {
+    const double t = std::ldexp(trial % 4 == 0 ? 1.0 : u(rng), static_cast<int>(rng() % 41) - 20);
+    const bool below = trial % 4 == 0;  // the midpoint under a power of two
+    const double n = std::nextafter(t, below ? 0.0 : HUGE_VAL);
+    const X m = (X(t) + X(n)) / 2, gap = below ? X(t) - X(n) : X(n) - X(t);
+    for (int j = 2; j <= finest; j += 2)
+      for (double side : {-1.0, 1.0})
+        for (double f : {0.5, 0.999, 1.0, 1.001, 2.0}) {
+          using std::ldexp;
+          const X delta = ldexp(gap, -j) * side, x = m + delta;
+          const X e = ldexp(gap, -j) * f;  // gap > 0
+          const std::string where = "midpoint of " + format_significant(t, 17) + " and " + format_significant(n, 17) +
+                                    (side < 0 ? " - " : " + ") + "2^-" + std::to_string(j) + " ulp, e = " +
+                                    std::to_string(f) + " |delta|";
+          (expect_rounds_alike_is_right<double, X>(x, e, where) ? decided : undecided)++;
+        }
+  }
+  EXPECT_GT(decided, 0u);
+  EXPECT_GT(undecided, 0u);
+}
+
+TEST(Events, RoundsAlikeNearMidpointsAgreesWithAnExactDecision) {
+  check_rounds_alike_near_midpoints<long double>(8);
+  PrecisionScope scope(60);
+  check_rounds_alike_near_midpoints<mpfr>(40);
+}
+
 // The first rung accepts a value as its own correct rounding when its error stays strictly inside
 // half the gap to each neighbour: 1.5 has gaps of 2^-52 on both sides, 1 has 2^-53 below it.
 template <class T>
@@ -168,14 +230,15 @@ TEST(Events, RoundsToItselfWithinHalfTheGapOnEachSide) {
 }
 
 // Every rung's answer, in double and long double, for μ̄ and Ψ, against the solver at 60 digits
-// rounded to the type. The reference counts only where its own bound decides the rounding (Ziv's
-// test at 60 digits); points are random and some reach mpfr (values near a midpoint), whose rung
-// starts at the type's digits + 8 and must then agree too.
+// correctly rounded to the type: every point is compared, the reference's rounding decided exactly
+// by rounds_to_one from its own bound (at 120 digits where 60 do not decide it), and rounds_alike's
+// answer on it checked against that decision. Points are random and some reach mpfr (values near
+// a midpoint), whose rung starts at the type's digits + 8 and must then agree too.
 template <class T>
 void check_ladder_against_60_digits(NumberType type) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
-  std::size_t compared = 0;
+  std::size_t points_total = 0, compared = 0, at_120 = 0;
   LadderCounts counts;
   for (const char* wave : {"sine", "power:3", "sawtooth-left"}) {
     const WaveSpec spec = parse_wave(wave);
@@ -190,21 +253,34 @@ void check_ladder_against_60_digits(NumberType type) {
       BatchOptions options;
       options.ladder = &counts;
       const auto got = evaluate(spec, q, points, {type, 0}, options);
-      PrecisionScope scope(60);
-      const auto w = make_waveform<mpfr>(spec);
+      points_total += points.size();
       for (std::size_t i = 0; i < points.size(); ++i) {
-        const mpfr beta(points[i].beta), gamma(points[i].gamma);
-        const Result<mpfr> r = q == Quantity::mu ? solve(*w, beta, gamma) : psi(*w, beta);
-        const mpfr value = q == Quantity::mu ? r.mu : r.lost_area;
-        const mpfr error = abs(value) * (q == Quantity::mu ? r.relative_error : r.lost_relative_error);
-        if (!detail::rounds_alike<T>(value, error)) continue;
+        const std::string where = std::string(wave) + (q == Quantity::mu ? " mu" : " psi") + " beta " + points[i].beta +
+                                  " gamma " + points[i].gamma;
+        std::optional<T> want;
+        for (unsigned digits : {60u, 120u}) {
+          PrecisionScope scope(digits);
+          const auto w = make_waveform<mpfr>(spec);
+          const mpfr beta(points[i].beta), gamma(points[i].gamma);
+          const Result<mpfr> r = q == Quantity::mu ? solve(*w, beta, gamma) : psi(*w, beta);
+          const mpfr value = q == Quantity::mu ? r.mu : r.lost_area;
+          const mpfr error = abs(value) * (q == Quantity::mu ? r.relative_error : r.lost_relative_error);
+          want = expect_rounds_alike_is_right<T, mpfr>(value, error, where + " at " + std::to_string(digits) + " digits");
+          if (want) break;
+          if (digits == 60) ++at_120;
+        }
+        if (!want) {
+          ADD_FAILURE() << where << ": the reference at 120 digits does not decide the rounding";
+          continue;
+        }
         ++compared;
-        EXPECT_EQ(got[i], format_significant(static_cast<T>(value), std::numeric_limits<T>::max_digits10))
-            << wave << (q == Quantity::mu ? " mu" : " psi") << " beta " << points[i].beta << " gamma " << points[i].gamma;
+        EXPECT_EQ(got[i], format_significant(*want, std::numeric_limits<T>::max_digits10)) << where;
       }
     }
   }
-  EXPECT_GE(compared, 880u);  // of 900: the 60-digit bound decides nearly all
+  EXPECT_EQ(compared, points_total);
+  std::printf("[ ladder ] %s: %zu of %zu points compared, %zu references needed 120 digits\n",
+              std::is_same_v<T, double> ? "double" : "long double", compared, points_total, at_120);
   EXPECT_GT(counts.mpfr.load(), 0u);
   // double: most points end on the long double rung. long double has no rung between itself and
   // mpfr, and its own value is certified only where exact: nearly every point reaches mpfr.
@@ -240,8 +316,10 @@ TEST(Events, LadderCountsTheRungThatAnswered) {
   for (std::size_t i = 0; i < inside.size(); ++i) {
     PrecisionScope scope(40);
     const auto w = make_waveform<mpfr>(sine);
-    const double want = static_cast<double>(solve(*w, mpfr(inside[i].beta), mpfr(inside[i].gamma)).mu);
-    EXPECT_EQ(std::stod(got[i]), want) << inside[i].beta << " " << inside[i].gamma;
+    const Result<mpfr> r = solve(*w, mpfr(inside[i].beta), mpfr(inside[i].gamma));
+    const std::optional<double> want = rounds_to_one<double>(r.mu, r.mu * r.relative_error);
+    ASSERT_TRUE(want) << inside[i].beta << " " << inside[i].gamma << ": 40 digits do not decide the rounding";
+    EXPECT_EQ(std::stod(got[i]), *want) << inside[i].beta << " " << inside[i].gamma;
   }
   options.escalate = false;
   evaluate(sine, Quantity::mu, inside, precision, options);

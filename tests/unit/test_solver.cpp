@@ -108,15 +108,49 @@ TEST(Solver, MuIsExactlyOneWithoutStick) {
   EXPECT_EQ(r.relative_error, 0.0);
 }
 
+// μ̄, ∫s, ∫n and ∫(n − s) of a double solve against independent values, each within the solver's
+// own bound (relative_error, area_error, lost_relative_error: multiples of double's eps) plus
+// 8 eps for the last rounding, as properties.hpp's expect_within_bound.
+void expect_values_within_bounds(const Result<double>& r, const mpfr& mu, const mpfr& retained, const mpfr& normal,
+                                 const mpfr& lost, const std::string& where) {
+  const mpfr eps(std::numeric_limits<double>::epsilon());
+  auto in_eps = [&](const mpfr& err, const mpfr& scale) { return static_cast<double>(err / (eps * scale)); };
+  const mpfr e_mu = abs(mpfr(r.mu) - mu), e_ret = abs(mpfr(r.retained_area) - retained),
+             e_nor = abs(mpfr(r.normal_area) - normal), e_lost = abs(mpfr(r.lost_area) - lost);
+  EXPECT_LE(e_mu, (mpfr(r.relative_error) + 8 * eps) * mu)
+      << where << ": mu " << in_eps(e_mu, mu) << " eps off, bound " << r.relative_error / eps.convert_to<double>() << " eps";
+  EXPECT_LE(e_ret, mpfr(r.area_error) + 8 * eps * retained)
+      << where << ": retained_area " << in_eps(e_ret, retained) << " eps off, area_error " << r.area_error;
+  EXPECT_LE(e_nor, mpfr(r.area_error) + 8 * eps * normal)
+      << where << ": normal_area " << in_eps(e_nor, normal) << " eps off, area_error " << r.area_error;
+  EXPECT_LE(e_lost, (mpfr(r.lost_relative_error) + 8 * eps) * lost)
+      << where << ": lost_area " << in_eps(e_lost, lost) << " eps off, bound " << r.lost_relative_error;
+}
+
 TEST(Solver, DiagnosticsAreReported) {
   const auto r = solve(*wave("sine"), 1.0, 0.5);
   EXPECT_GT(r.events, 0u);
   EXPECT_GT(r.root_solves, 0u);
   EXPECT_GT(r.evaluations, 0u);
   EXPECT_EQ(r.area, AreaMethod::exact);
-  EXPECT_NEAR(r.retained_area / r.normal_area, r.mu, 1e-16);
-  EXPECT_NEAR(r.normal_area - r.retained_area, r.lost_area, 1e-15);
   EXPECT_LT(r.relative_error, 1e-13);
+  // No closed form for the sine: the same solver at 40 digits, the same (exact) inputs.
+  PrecisionScope scope(40);
+  const auto m = solve(*make_waveform<mpfr>(parse_wave("sine")), mpfr(1), mpfr("0.5"));
+  ASSERT_LT(m.relative_error, mpfr("1e-30"));
+  ASSERT_LT(m.area_error, mpfr("1e-30"));
+  ASSERT_LT(m.lost_relative_error, mpfr("1e-30"));
+  expect_values_within_bounds(r, m.mu, m.retained_area, m.normal_area, m.lost_area, "sine, beta = 1, gamma = 0.5");
+}
+
+// Without jumping (γ ≥ 1) the triangle's areas are closed: ∫n = γ (w has mean 0), ∫(n − s) = Ψ
+// (Eqs. 12, 17), ∫s = γ − Ψ, μ̄ = 1 − Ψ/γ (Eq. 13).
+TEST(Solver, AreasOfTheTriangleAgainstTheClosedForms) {
+  const auto r = solve(*wave("tri"), 1.0, 2.0);
+  PrecisionScope scope(40);
+  const mpfr beta(1), gamma(2), psi = closed_form::psi_triangle(beta);
+  expect_values_within_bounds(r, closed_form::mu_from_psi(psi, gamma), gamma - psi, gamma, psi,
+                              "triangle, beta = 1, gamma = 2");
 }
 
 TEST(Solver, PsiDoesNotDependOnGamma) {

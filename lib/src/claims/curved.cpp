@@ -27,11 +27,8 @@
 
 #include "check.hpp"
 #include "vibrofric/curved.hpp"
-#include "vibrofric/profile.hpp"
-#if __has_include("vibrofric/curved_closed_forms.hpp")
 #include "vibrofric/curved_closed_forms.hpp"
-#define VIBROFRIC_CLAIMS_CURVED_CLOSED_FORMS 1
-#endif
+#include "vibrofric/profile.hpp"
 
 namespace vibrofric::claims {
 
@@ -127,7 +124,6 @@ constexpr int kStudyDigits = 20;
 // "closed form: WAVE, PROFILE, beta = B, gamma = G" with the value "closed / solver / relative
 // difference" (the report's table of closed forms reads these).
 void closed_forms(Check& c, int digits) {
-#ifdef VIBROFRIC_CLAIMS_CURVED_CLOSED_FORMS
   namespace cf = closed_form;
   double worst = 0;
   for (const char* wave : {"triangle", "square"}) {
@@ -149,10 +145,6 @@ void closed_forms(Check& c, int digits) {
   c.measure("closed forms (curved_closed_forms.hpp) against the curved solver, " + std::to_string(digits) +
                 " digits: largest relative difference",
             sci(worst));
-#else
-  (void)c;
-  (void)digits;
-#endif
 }
 
 }  // namespace
