@@ -6,6 +6,7 @@ usage: generate.py --tool PATH [--bench-json PATH] [--out DIR] [--digits D]
 """
 import argparse
 import concurrent.futures
+import csv
 import datetime
 import json
 import math
@@ -17,6 +18,11 @@ from fractions import Fraction
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GAMMAS_FIG = ["1", "0.8", "0.6", "0.4", "0.2", "0", "-0.2", "-0.4", "-0.6", "-0.8", "-0.999"]
+
+
+def csv_rows(text):
+    """The rows of the tool's CSV (RFC 4180: a field may be quoted and hold a comma)."""
+    return list(csv.reader(text.strip().splitlines()))
 
 
 def run(cmd, **kw):
@@ -37,10 +43,10 @@ class Report:
         """(beta, gamma, mu) rows of `vibrofric sweep`, by the CSV header (with --profile the tool adds a
         profile column)."""
         text = run([self.tool, "sweep", "--wave", wave, "--beta", beta, "--gamma", ",".join(gammas)] + list(extra))
-        lines = text.strip().splitlines()
-        head = lines[0].split(",")
+        rows = csv_rows(text)
+        head = rows[0]
         ib, ig, im = head.index("beta"), head.index("gamma"), head.index("mu_over_mu0")
-        return [(r[ib], r[ig], r[im]) for r in (line.split(",") for line in lines[1:])]
+        return [(r[ib], r[ig], r[im]) for r in rows[1:]]
 
     def mu(self, wave, beta, gamma, extra=()):
         return run([self.tool, "mu", "--wave", wave, "--beta", beta, "--gamma=" + gamma] + list(extra)).strip()
@@ -76,7 +82,7 @@ def fig2_trace(r):
     blocks = []
     for gamma, beta in (("1.5", "2"), ("0", "2")):
         rows = run([r.tool, "trace", "--wave", "sine", "--beta", beta, "--gamma", gamma, "--points", "800", "--digits", "12"])
-        rows = [line.split(",") for line in rows.strip().splitlines()[1:]]
+        rows = csv_rows(rows)[1:]
         blocks.append(("gamma = %s, beta = %s" % (gamma, beta), rows))
     r.write_data("fig2_trace.dat", blocks, "phi n s (sine wave; units of k_z A and mu0 k_z A)")
     return r.gnuplot("fig2_stick_slip", """
@@ -164,10 +170,10 @@ def fig4_harmonic(r):
     for g in eq23:
         c = math.sqrt(0.7 / (1 + float(g)))
         lo, hi, n = 0.25, 7.0, 28
-        xi = run([r.tool, "sweep", "--wave", "sine", "--beta", "%.15g:%.15g:%d" % (lo * c, hi * c, n), "--gamma", "-0.3",
-                  "--digits", "12"]).strip().splitlines()[1:]
+        xi = csv_rows(run([r.tool, "sweep", "--wave", "sine", "--beta", "%.15g:%.15g:%d" % (lo * c, hi * c, n), "--gamma", "-0.3",
+                  "--digits", "12"]))[1:]
         dots.append(("Eq. 23 dots for gamma = " + g,
-                     [(lo + (hi - lo) * i / (n - 1), line.split(",")[3]) for i, line in enumerate(xi)]))
+                     [(lo + (hi - lo) * i / (n - 1), row[3]) for i, row in enumerate(xi)]))
     r.write_data("fig4_eq23.dat", dots, "beta mu(xi_2(beta, gamma), -0.3)")
     # Each γ's markers: filled in the colour of its curve, one shape per γ (square, circle, triangle, diamond), with a
     # black outline of the same shape drawn over it; the key names the γ of each shape.
@@ -367,7 +373,7 @@ def crosscheck(r):
         ours = r.sweep(wave, "0.1:7:70", gammas, ["--digits", "40"])
         text = run([python, ref, "sweep", "--wave", wave, "--beta", "0.1:7:70", "--gamma", ",".join(gammas),
                     "--digits", "50"])
-        theirs = [line.split(",") for line in text.strip().splitlines()[1:]]
+        theirs = csv_rows(text)[1:]
         if len(theirs) != len(ours):
             sys.exit("generate.py: mpmath returned %d points for %s, expected %d" % (len(theirs), wave, len(ours)))
         worst = (0.0, "")

@@ -270,6 +270,9 @@ def main():
         if not a.smoke:
             summarise(results_path, rows)
 
+    # The build tree holds the last mutant's programs (its source was reverted, not rebuilt): none
+    # may stay where it could be taken for the real tool.
+    shutil.rmtree(build, ignore_errors=True)
     counted = [r for r in results if r["status"] in ("killed", "survived")]
     killed = sum(r["status"] == "killed" for r in results)
     score = 100.0 * killed / len(counted) if counted else 0.0
