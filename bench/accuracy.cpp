@@ -21,10 +21,10 @@
 
 #include "common.hpp"
 #include "ladder.hpp"
-#include "vibrofric/baseline.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/grid_envelope.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/verification/baseline.hpp"
+#include "vibrofric/verification/grid_envelope.hpp"
 
 namespace vibrofric::bench {
 namespace {

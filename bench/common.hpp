@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/closed_forms.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/verification/closed_forms.hpp"
 
 namespace vibrofric::bench {
 

@@ -21,11 +21,11 @@
 #include <utility>
 
 #include "common.hpp"
-#include "vibrofric/curved.hpp"
-#include "vibrofric/detail/evaluate_impl.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/profile.hpp"
-#include "vibrofric/spring_row.hpp"
+#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/core/curved.hpp"
+#include "vibrofric/verification/spring_row.hpp"
 
 namespace vibrofric::bench {
 namespace {

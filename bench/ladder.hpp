@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "common.hpp"
-#include "vibrofric/evaluate.hpp"
+#include "vibrofric/api/evaluate.hpp"
 
 namespace vibrofric::bench {
 

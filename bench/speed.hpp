@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "common.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/core/solver.hpp"
 
 namespace vibrofric::bench {
 

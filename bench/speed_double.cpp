@@ -9,9 +9,9 @@
 #include "common.hpp"
 #include "ladder.hpp"
 #include "speed.hpp"
-#include "vibrofric/baseline.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/grid_envelope.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/verification/baseline.hpp"
+#include "vibrofric/verification/grid_envelope.hpp"
 
 namespace vibrofric::bench {
 namespace {

@@ -3,7 +3,7 @@
 // --digits D` computes: D + 10 + D/20 working digits, raised where the rounding bound asks for
 // it, correctly rounded decimal output) at 50 and 1000 digits.
 #include "speed.hpp"
-#include "vibrofric/evaluate.hpp"
+#include "vibrofric/api/evaluate.hpp"
 
 namespace vibrofric::bench {
 namespace {

@@ -27,7 +27,7 @@
 #include <iomanip>
 #include <map>
 
-#include "vibrofric/curved_closed_forms.hpp"
+#include "vibrofric/verification/curved_closed_forms.hpp"
 
 using namespace proofs;
 namespace bmp = boost::multiprecision;

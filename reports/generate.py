@@ -641,7 +641,7 @@ def curved_section(w, claims, figs, bench_json):
       "(`curved.hpp`, `vibrofric mu|sweep --profile`). The claims about curved contacts are in the table above: "
       "the abstract's scope statement in its two halves (`scope-wearflat`, `scope-numerics`), Eq. 6 and Sec. 3 for "
       "a row of springs (`curved-eq6-sec3`) and the flat-punch limit of the power-law profiles "
-      "(`curved-power-flat`); their derivations head [`lib/src/claims/curved.cpp`](../lib/src/claims/curved.cpp).")
+      "(`curved-power-flat`); their derivations head [`lib/verification/src/claims/curved.cpp`](../lib/verification/src/claims/curved.cpp).")
     w("")
     cap = ("Fig. 4 for a ball: harmonic wave, the paper's 11 values of γ (−1 drawn at −0.999), flat punch (left) and "
            "sphere (right), `vibrofric sweep --wave sine --profile sphere --beta 0.02:7:100 --gamma … --digits 12`.")
@@ -678,7 +678,7 @@ def curved_section(w, claims, figs, bench_json):
     w("")
     rows = closed_form_rows(claims)
     if rows:
-        w("The closed forms of [`curved_closed_forms.hpp`](../lib/include/vibrofric/curved_closed_forms.hpp) (triangle and "
+        w("The closed forms of [`curved_closed_forms.hpp`](../lib/verification/include/vibrofric/verification/curved_closed_forms.hpp) (triangle and "
           "square; power-law profiles σ = xⁿ and the wear-flat sphere) against the curved solver, at the report's "
           "digits (`verify`, claim `scope-wearflat`):")
         w("")
@@ -688,7 +688,7 @@ def curved_section(w, claims, figs, bench_json):
             w("| %s |" % " | ".join(row))
         w("")
     else:
-        w("> **Placeholder.** No closed forms in this build: `lib/include/vibrofric/curved_closed_forms.hpp` was not "
+        w("> **Placeholder.** No closed forms in this build: `lib/verification/include/vibrofric/verification/curved_closed_forms.hpp` was not "
           "present when `vibrofric` was built, so `verify` measured none. When it is, this table lists them against "
           "the solver (measured fields `closed form: …` of the claim `scope-wearflat`).")
         w("")

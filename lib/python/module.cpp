@@ -18,14 +18,13 @@
 #include <tuple>
 #include <vector>
 
-#include "vibrofric/arrays.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/claims.hpp"
-#include "vibrofric/commands.hpp"
-#include "vibrofric/errors.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/fit.hpp"
-#include "vibrofric/profile.hpp"
+#include "vibrofric/api/arrays.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/commands.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/fit.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/verification/claims.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -386,8 +385,9 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   options.threads = e.threads;
   options.escalate = e.escalate;
   if (e.max_iterations) {
-    if (*e.max_iterations < 1 || *e.max_iterations > 100000)
-      throw InputError("max_iterations = " + std::to_string(*e.max_iterations) + ": expected 1 to 100000");
+    if (*e.max_iterations < 1 || *e.max_iterations > max_root_iterations)
+      throw InputError("max_iterations = " + std::to_string(*e.max_iterations) + ": expected 1 to " +
+                       std::to_string(max_root_iterations));
     options.solver.max_root_iterations = static_cast<std::uintmax_t>(*e.max_iterations);
   }
 
@@ -488,7 +488,8 @@ BatchOptions solver_controls(const py::object& max_iterations, bool escalate) {
   BatchOptions options;
   options.escalate = escalate;
   if (const auto mi = optional_int(max_iterations, "max_iterations")) {
-    if (*mi < 1 || *mi > 100000) throw InputError("max_iterations = " + std::to_string(*mi) + ": expected 1 to 100000");
+    if (*mi < 1 || *mi > max_root_iterations)
+      throw InputError("max_iterations = " + std::to_string(*mi) + ": expected 1 to " + std::to_string(max_root_iterations));
     options.solver.max_root_iterations = static_cast<std::uintmax_t>(*mi);
   }
   return options;
@@ -587,8 +588,9 @@ PyWave fit_wave(const py::object& y, const py::object& harmonics, const py::obje
     samples = samples_wave(array_texts(y, "y"), t.is_none() ? std::vector<std::string>() : array_texts(t, "t"), "samples");
   }
   const auto k = optional_int(harmonics, "harmonics");
-  if (!k) throw py::type_error("harmonics = None: expected an integer K, 1 to 10000");
-  if (*k < 0) throw InputError("harmonics = " + std::to_string(*k) + ": expected 1 to 10000");  // 0, > 10000: fit_fourier
+  if (!k) throw py::type_error("harmonics = None: expected an integer K, 1 to " + std::to_string(max_fit_harmonics));
+  if (*k < 0)  // 0 and above the limit: fit_fourier's message
+    throw InputError("harmonics = " + std::to_string(*k) + ": expected 1 to " + std::to_string(max_fit_harmonics));
   PyWave out;
   {
     py::gil_scoped_release release;
@@ -923,8 +925,9 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
       [](const py::object& claim, const py::object& digits_obj) {
         const auto digits = optional_int(digits_obj, "digits");
         const int d = digits ? *digits : 50;
-        if (d < 10 || d > 300)
-          throw InputError("digits = " + std::to_string(d) + ": expected 10 to 300 (the range over which the verdicts are tested)");
+        if (d < min_verify_digits || d > max_verify_digits)
+          throw InputError("digits = " + std::to_string(d) + ": expected " + std::to_string(min_verify_digits) + " to " +
+                           std::to_string(max_verify_digits) + " (the range over which the verdicts are tested)");
         std::vector<ClaimCheck> checks;
         if (!claim.is_none() && !py::isinstance<py::str>(claim))
           throw py::type_error("claim = " + py_repr(claim) + ": expected a claim key such as 'eq17'");

@@ -24,19 +24,21 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/claims.hpp"
-#include "vibrofric/commands.hpp"
-#include "vibrofric/curved.hpp"
-#include "vibrofric/detail/evaluate_impl.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/fit.hpp"
-#include "vibrofric/physical.hpp"
-#include "vibrofric/profile.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/commands.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/fit.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/verification/claims.hpp"
 
 namespace {
 
 using namespace vibrofric;
+
+// The help texts quote the limits of limits.hpp as literals.
+static_assert(max_digits == 10000 && max_root_iterations == 100000 && max_trace_points == 1000000 &&
+                  min_trace_points == 2 && max_fit_harmonics == 10000,
+              "update the help texts below");
 
 // Help texts: a synopsis per command (CLI11 lists every flag with its default below it) and
 // footers on waves, profiles and file formats.
@@ -364,7 +366,7 @@ std::vector<std::string> value_range(const std::string& spec, const std::string&
   if (parts.size() != 3) throw InputError(flag + " '" + detail::visible(spec) + "': expected FROM:TO:N or log:FROM:TO:N");
   check_decimal(parts[0], flag + " FROM");
   check_decimal(parts[1], flag + " TO");
-  const int n = parse_int(parts[2], flag + " N", 1, 1000000);
+  const int n = parse_int(parts[2], flag + " N", 1, max_range_points);
   PrecisionScope scope(40);
   const mpfr from(parts[0]), to(parts[1]);
   if (!descending && to < from) throw InputError(flag + " '" + detail::visible(spec) + "': empty range, expected FROM <= TO");
@@ -404,7 +406,7 @@ Options parse_solver_options(const Args& a) {
       throw InputError("--area '" + detail::visible(m) + "': expected auto, exact or quadrature");
   }
   if (a.flags.count("max-iterations"))
-    o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, 100000));
+    o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, max_root_iterations));
   if (a.flags.count("max-levels"))
     o.max_quadrature_levels = static_cast<std::size_t>(parse_int(a.flags.at("max-levels"), "--max-levels", 4, 30));
   if (a.flags.count("quadrature-tolerance")) {
@@ -684,7 +686,7 @@ int run_physical(const Args& a) {
 int run_trace(const Args& a) {
   const WaveSpec wave = read_wave(a);
   const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits) : 17;
-  const int points = a.flags.count("points") ? parse_int(a.flags.at("points"), "--points", 2, 1000000) : 1000;
+  const int points = a.flags.count("points") ? parse_int(a.flags.at("points"), "--points", min_trace_points, max_trace_points) : 1000;
   const auto rows = trace_rows(wave, need(a, "beta"), need(a, "gamma"), points, digits);
   std::cout << "phi,n,s\n";
   for (const auto& r : rows) std::cout << r[0] << ',' << r[1] << ',' << r[2] << '\n';
@@ -695,7 +697,7 @@ int run_trace(const Args& a) {
 // written as a fourier file that --wave fourier:FILE reads.
 int run_fit(const Args& a) {
   const WaveSpec wave = read_wave(a);
-  const int harmonics = parse_int(need(a, "harmonics"), "--harmonics", 1, 10000);
+  const int harmonics = parse_int(need(a, "harmonics"), "--harmonics", 1, max_fit_harmonics);
   const FourierFit fit = fit_fourier(wave, static_cast<unsigned>(harmonics));
   const std::string text = fourier_file_text(fit, need(a, "wave"));
   if (!a.flags.count("output")) {
@@ -729,7 +731,7 @@ int run_version() {
 }
 
 int run_verify(const Args& a) {
-  const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", 10, 300) : 50;
+  const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", min_verify_digits, max_verify_digits) : 50;
   if (a.flags.count("format") && a.flags.at("format") != "json" && a.flags.at("format") != "text")
     throw InputError("--format '" + detail::visible(a.flags.at("format")) + "': expected text or json");
   std::vector<ClaimCheck> checks;

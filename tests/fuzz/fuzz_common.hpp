@@ -20,7 +20,7 @@
 #include <string>
 #include <typeinfo>
 
-#include "vibrofric/errors.hpp"
+#include "vibrofric/core/errors.hpp"
 
 namespace fuzz {
 

@@ -12,7 +12,7 @@
 
 #include "fuzz_common.hpp"
 #include "fuzz_waves.hpp"
-#include "vibrofric/catalogue.hpp"
+#include "vibrofric/api/catalogue.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace vibrofric;

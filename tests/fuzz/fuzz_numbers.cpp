@@ -14,8 +14,8 @@
 #include <string>
 
 #include "fuzz_common.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/evaluate.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
 
 namespace {
 

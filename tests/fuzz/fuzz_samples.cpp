@@ -12,8 +12,8 @@
 
 #include "fuzz_common.hpp"
 #include "fuzz_waves.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/fit.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/fit.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace vibrofric;

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "fuzz_common.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/evaluate.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
 
 namespace fuzz {
 

@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "common.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
 
 namespace {
 

@@ -18,11 +18,11 @@
 #include <vector>
 
 #include "common.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/closed_forms.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/grid_envelope.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/verification/closed_forms.hpp"
+#include "vibrofric/verification/grid_envelope.hpp"
 
 namespace {
 

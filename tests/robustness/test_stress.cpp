@@ -42,11 +42,11 @@
 
 #include "../unit/correct_rounding.hpp"
 #include "common.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/envelope.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/grid_envelope.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/verification/envelope.hpp"
+#include "vibrofric/verification/grid_envelope.hpp"
 
 namespace {
 

@@ -14,7 +14,7 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 
-#include "vibrofric/numbers.hpp"
+#include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric::testing {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-#include "vibrofric/claims.hpp"
+#include "vibrofric/verification/claims.hpp"
 
 namespace vibrofric::testing {
 
@@ -47,14 +47,14 @@ const std::map<std::string, Expected>& established() {
       {"eq23-range", {Verdict::holds, "measured: D(gamma = 1) > 0.05 mu0"}},
       {"fig2", {Verdict::holds, "the dynamics' rules, model.md"}},
       {"beta-c", {Verdict::fails, "proofs/beta_c_sine.md"}},
-      // Curved contacts (derivations in lib/src/claims/curved.cpp). The wear flat's ring beyond the
+      // Curved contacts (derivations in lib/verification/src/claims/curved.cpp). The wear flat's ring beyond the
       // flat is (1+γ)²/(2λ²) wide: μ_wf − μ_flat = C/λ² + O(λ⁻⁴), zero only where every spring has
       // the flat punch's μ (triangular waves, γ ≤ 1).
       {"scope-wearflat", {Verdict::holds_approximately, "x(sigma) = 1 + sigma^2/(2 lambda^2) + O(lambda^-4)"}},
       // 50 digits checked against 80, in well under the stated CPU budget per evaluation.
       {"scope-numerics", {Verdict::holds, "measured: 50-digit values and CPU time"}},
       // 0 ≤ Φ(β, γ') − (γ' − 1)₊ ≤ β per spring, and β_c(γ') non-decreasing in γ'.
-      {"curved-eq6-sec3", {Verdict::holds, "per-spring bounds, lib/src/claims/curved.cpp"}},
+      {"curved-eq6-sec3", {Verdict::holds, "per-spring bounds, lib/verification/src/claims/curved.cpp"}},
       // u = x^N: ∫ h(x^N) dx = h(0) + O(1/N).
       {"curved-power-flat", {Verdict::holds_approximately, "limit N -> infinity, O(1/N)"}},
   };

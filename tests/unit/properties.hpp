@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "correct_rounding.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/closed_forms.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/verification/closed_forms.hpp"
 
 namespace vt {
 

@@ -10,8 +10,8 @@
 #include <set>
 #include <string>
 
-#include "vibrofric/claims.hpp"
-#include "vibrofric/errors.hpp"
+#include "vibrofric/core/errors.hpp"
+#include "vibrofric/verification/claims.hpp"
 #include "established_verdicts.hpp"
 
 namespace {

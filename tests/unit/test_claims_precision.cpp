@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "established_verdicts.hpp"
-#include "vibrofric/claims.hpp"
+#include "vibrofric/verification/claims.hpp"
 
 namespace {
 

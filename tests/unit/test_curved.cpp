@@ -13,11 +13,11 @@
 #include <random>
 #include <string>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/closed_forms.hpp"
-#include "vibrofric/curved_closed_forms.hpp"
-#include "vibrofric/curved.hpp"
-#include "vibrofric/evaluate.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/curved.hpp"
+#include "vibrofric/verification/closed_forms.hpp"
+#include "vibrofric/verification/curved_closed_forms.hpp"
 
 namespace {
 

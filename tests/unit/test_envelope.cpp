@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/envelope.hpp"
-#include "vibrofric/solver.hpp"
-#include "vibrofric/user_waveforms.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/verification/envelope.hpp"
 
 namespace {
 

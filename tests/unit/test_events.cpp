@@ -12,10 +12,10 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "correct_rounding.hpp"
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/detail/evaluate_impl.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
 
 namespace {
 

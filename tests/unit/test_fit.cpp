@@ -10,9 +10,9 @@
 #include <limits>
 #include <random>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/fit.hpp"
-#include "vibrofric/numbers.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/fit.hpp"
+#include "vibrofric/core/numbers.hpp"
 
 namespace {
 

@@ -13,9 +13,9 @@
 #include <random>
 #include <string>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/curved.hpp"
-#include "vibrofric/evaluate.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/curved.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Physical inputs to dimensionless groups (Eqs. 1, 5, 14), against hand-evaluated numbers.
 #include <gtest/gtest.h>
 
-#include "vibrofric/physical.hpp"
+#include "vibrofric/core/physical.hpp"
 
 namespace {
 

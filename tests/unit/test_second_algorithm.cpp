@@ -24,12 +24,12 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/baseline.hpp"
-#include "vibrofric/envelope.hpp"
-#include "vibrofric/grid_envelope.hpp"
-#include "vibrofric/solver.hpp"
-#include "vibrofric/user_waveforms.hpp"
-#include "vibrofric/waveform.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/verification/baseline.hpp"
+#include "vibrofric/verification/envelope.hpp"
+#include "vibrofric/verification/grid_envelope.hpp"
 
 namespace {
 

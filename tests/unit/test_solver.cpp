@@ -4,9 +4,9 @@
 
 #include <fstream>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/closed_forms.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/verification/closed_forms.hpp"
 
 namespace {
 

@@ -46,10 +46,10 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/curved.hpp"
-#include "vibrofric/profile.hpp"
-#include "vibrofric/spring_row.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/core/curved.hpp"
+#include "vibrofric/verification/spring_row.hpp"
 
 namespace {
 

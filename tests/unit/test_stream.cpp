@@ -15,9 +15,9 @@
 #include <typeinfo>
 #include <vector>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/evaluate.hpp"
-#include "vibrofric/profile.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/profile_spec.hpp"
 
 namespace {
 

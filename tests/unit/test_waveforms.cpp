@@ -6,10 +6,10 @@
 #include <functional>
 #include <random>
 
-#include "vibrofric/catalogue.hpp"
-#include "vibrofric/envelope.hpp"
-#include "vibrofric/numbers.hpp"
-#include "vibrofric/solver.hpp"
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/core/numbers.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/verification/envelope.hpp"
 
 namespace {
 

@@ -1,0 +1,125 @@
+// Waveform names and files (model.md, "Waveform catalogue"): parsed once, without a number type,
+// then built at any precision by make_waveform<Real>. Numbers are kept as decimal strings so that
+// each precision reads them exactly ("0.1" at 100 digits is 0.1 to 100 digits).
+#pragma once
+#include <array>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
+#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/core/waveform.hpp"
+
+namespace vibrofric {
+
+enum class WaveKind { sine, triangle, sawtooth_right, sawtooth_left, square, power, fourier, samples };
+
+struct WaveSpec {
+  WaveKind kind = WaveKind::sine;
+  std::string name;      // canonical: "sine", "triangle", …, "power:2.5", "fourier:FILE"
+  std::string exponent;  // power:p, as written
+  struct Harmonic {
+    unsigned k;
+    std::string a, b;
+  };
+  std::vector<Harmonic> harmonics;  // fourier: w = Σ a_k cos 2πkφ + b_k sin 2πkφ
+  std::vector<std::string> samples;  // samples: y_j at φ = j/N, or at the times below
+  std::vector<std::string> times;    // samples with a time column: t_0 … t_N (t_N − t_0 = the period), else empty
+  // samples: which columns were read. `column` is the value column as chosen by
+  // WaveReadOptions::column, canonical (the header's name if it names that column once, else the
+  // 1-based index), and empty without the option; it is what tells "samples:a#b" (file a, column
+  // b) from a file named "a#b". value_column/time_column: the header's names ("" without a header
+  // or time column), for describe_normalisation.
+  std::string column, value_column, time_column;
+};
+
+// How to read a samples:FILE (README, "File formats"). column: the value column, a header name
+// (exact, as in the header line) or a 1-based index; it lets a file have more than two columns
+// (the time column, if the header names one 'time' or 't', still gives the phases). Empty: the
+// one- and two-column layouts only, as without options.
+struct WaveReadOptions {
+  std::string column;
+};
+
+// Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,
+// power:P (P ≥ 1), fourier:FILE, samples:FILE. Throws InputError naming the text otherwise.
+// With options.column the name is "samples:FILE#COLUMN" (COLUMN canonical, WaveSpec::column);
+// without, the name is unchanged.
+WaveSpec parse_wave(const std::string& text);
+WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options);
+
+// The normalisation a user wave gets (model.md, "Waveform catalogue": "the normalisation used is
+// reported"), as name/value pairs with values to `digits` significant digits, computed by the code
+// that normalises the wave (normalise_samples, the FourierSeries constructor). scale is the
+// divisor of w = (raw − offset)/scale, (max − min)/2 as in Waveform::normalisation() and the
+// README; factor = 1/scale = 2/(max − min) is the multiplier. A samples mean below the accuracy it
+// is computed to (relative to max|y|) is shown as 0. digits: 1 to 10000.
+std::vector<std::pair<std::string, std::string>> describe_normalisation(const WaveSpec& wave, int digits);
+
+// Names of the catalogue waves, for help texts and tests.
+const std::vector<std::string>& catalogue_names();
+
+// Strict decimal grammar: [+-]digits[.digits][e[+-]digits], finite, within double's range.
+// Throws InputError naming `what` and the text.
+void check_decimal(const std::string& text, const std::string& what);
+
+// Decimal text to Real at the current precision (after check_decimal).
+template <class Real>
+Real parse_real(const std::string& text, const std::string& what) {
+  check_decimal(text, what);
+  // strtod/strtold, not stod: a subnormal result is a value, not an error.
+  if constexpr (std::is_same_v<Real, double>)
+    return std::strtod(text.c_str(), nullptr);
+  else if constexpr (std::is_same_v<Real, long double>)
+    return std::strtold(text.c_str(), nullptr);
+  else
+    return Real(text);
+}
+
+namespace detail {
+// Text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').
+std::string visible(const std::string& s);
+// A samples wave's inputs to make_samples_from, shared with describe_normalisation: the largest
+// count of significant digits of a sample, y_j at the current mpfr precision, and with a time
+// column φ_j = (t_j − t_0)/(t_N − t_0) at the current mpfr precision (empty function without).
+int distinct_digits(const WaveSpec& spec);
+mpfr sample_value(const WaveSpec& spec, std::size_t j);
+std::function<mpfr(std::size_t)> sample_phase(const WaveSpec& spec);
+}  // namespace detail
+
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
+  switch (spec.kind) {
+    case WaveKind::sine: return std::make_unique<Sine<Real>>();
+    case WaveKind::triangle: return make_triangle<Real>();
+    case WaveKind::sawtooth_right: return make_sawtooth_right<Real>();
+    case WaveKind::sawtooth_left: return make_sawtooth_left<Real>();
+    case WaveKind::square: return make_square<Real>();
+    case WaveKind::power:
+      return std::make_unique<Power<Real>>(parse_real<Real>(spec.exponent, "power exponent p"), spec.name);
+    case WaveKind::fourier: {
+      std::vector<unsigned> k;
+      std::vector<Real> a, b;
+      for (const auto& h : spec.harmonics) {
+        k.push_back(h.k);
+        a.push_back(parse_real<Real>(h.a, spec.name + " coefficient a_" + std::to_string(h.k)));
+        b.push_back(parse_real<Real>(h.b, spec.name + " coefficient b_" + std::to_string(h.k)));
+      }
+      return std::make_unique<FourierSeries<Real>>(spec.name, k, a, b);
+    }
+    case WaveKind::samples: {
+      // Normalised from the decimal text itself (parse_wave checked its grammar and range): its
+      // rounding to Real would be amplified by the offset-to-amplitude ratio.
+      return make_samples_from<Real>(
+          spec.name, spec.samples.size(), [&](std::size_t j) { return detail::sample_value(spec, j); },
+          detail::distinct_digits(spec), detail::sample_phase(spec));
+    }
+  }
+  throw InputError("unknown wave kind");
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,550 @@
+// Implementation of evaluate_stream_typed<Real> (evaluate.hpp); included by one .cpp per number type.
+#pragma once
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <condition_variable>
+#include <cstdlib>
+#include <deque>
+#include <exception>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include <boost/math/special_functions/next.hpp>
+
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/curved.hpp"
+
+namespace vibrofric::detail {
+
+// Extra digits carried beyond the request before the solver's own rounding bound is consulted
+// (and the precision raised if it says the request is not met). Fewer guard digits were
+// measured slower: more points then need the second pass.
+inline int guard_digits(int digits) { return 10 + digits / 20; }
+
+template <class Real>
+struct PointValue {
+  Real value;
+  Real relative_error;
+};
+
+// A wave its spec names alone (the catalogue, power:p) is the same immutable object for every
+// call on a thread: built once per thread, number type and precision, with the Contacts of its
+// last few γ. A caller of one point per call (the Python module, a loop over `evaluate`) then
+// does not rebuild them; building them was about 28 % of a guaranteed double sine point (perf).
+// Sampled and Fourier waves carry data and are built per call. Bounded: at most 64 waves and 8
+// Contacts per thread and type.
+template <class Real>
+class ThreadWaves {
+ public:
+  static ThreadWaves& get() {
+    thread_local ThreadWaves cache;
+    return cache;
+  }
+  // "" for a wave built per call; else the key that names it.
+  static std::string key(const WaveSpec& spec) {
+    if (spec.kind == WaveKind::samples || spec.kind == WaveKind::fourier) return "";
+    return spec.kind == WaveKind::power ? "power:" + spec.exponent : spec.name;
+  }
+  std::shared_ptr<const Waveform<Real>> wave(const WaveSpec& spec, const std::string& key, int digits) {
+    auto& slot = waves_[{key, digits}];
+    if (!slot) {
+      if (waves_.size() > 64) {  // a sweep over power:p exponents: start again rather than grow
+        waves_.clear();
+        return wave(spec, key, digits);
+      }
+      slot = make_waveform<Real>(spec);
+    }
+    return slot;
+  }
+  struct ContactEntry {
+    std::string key;
+    int digits;
+    std::string gamma;
+    std::uintmax_t budget;
+    std::shared_ptr<const Contact<Real>> contact;  // owns its waveform too (WaveCache::contact)
+  };
+  std::shared_ptr<const Contact<Real>> find(const std::string& key, int digits, const std::string& gamma,
+                                            std::uintmax_t budget) {
+    for (auto it = contacts_.begin(); it != contacts_.end(); ++it)
+      if (it->digits == digits && it->budget == budget && it->gamma == gamma && it->key == key) {
+        if (it != contacts_.begin()) {  // most recent first
+          ContactEntry e = std::move(*it);
+          contacts_.erase(it);
+          contacts_.push_front(std::move(e));
+        }
+        return contacts_.front().contact;
+      }
+    return nullptr;
+  }
+  void keep(ContactEntry e) {
+    contacts_.push_front(std::move(e));
+    if (contacts_.size() > 8) contacts_.pop_back();
+  }
+
+ private:
+  std::map<std::pair<std::string, int>, std::shared_ptr<const Waveform<Real>>> waves_;
+  std::deque<ContactEntry> contacts_;
+};
+
+// Waveforms of one call's worker, one per working precision (mpfr), built on first use or taken
+// from ThreadWaves, and the Contact of the last γ (points come γ by γ, so a sweep builds each
+// once).
+template <class Real>
+class WaveCache {
+ public:
+  using real_type = Real;
+  explicit WaveCache(const WaveSpec& spec, const ProfileSpec& profile = {})
+      : spec_(spec), profile_spec_(profile), shared_key_(ThreadWaves<Real>::key(spec)) {}
+  const Waveform<Real>& get() { return *wave(); }
+  // The curved profile at this precision; nullptr for the flat punch.
+  const Profile<Real>* profile() {
+    if (profile_spec_.kind == ProfileKind::flat) return nullptr;
+    auto& slot = profiles_[working_digits10<Real>()];
+    if (!slot) slot = make_profile<Real>(profile_spec_);
+    return slot.get();
+  }
+  // γ as written; "" for Ψ (γ = −min w, n touching zero).
+  const Contact<Real>& contact(const std::string& gamma_text, const Options& opt) {
+    const int d = working_digits10<Real>();
+    if (!contact_ || digits_ != d || text_ != gamma_text || budget_ != opt.max_root_iterations) {
+      contact_.reset();
+      if (!shared_key_.empty())
+        contact_ = ThreadWaves<Real>::get().find(shared_key_, d, gamma_text, opt.max_root_iterations);
+      if (!contact_) try {
+        const std::shared_ptr<const Waveform<Real>> w = wave();
+        const Real gamma = gamma_text.empty() ? Real(-w->minimum()) : parse_real<Real>(gamma_text, "gamma");
+        // The Contact refers to its waveform: the pointer to it owns the waveform as well.
+        struct Held {
+          std::shared_ptr<const Waveform<Real>> wave;
+          Contact<Real> contact;
+        };
+        const auto held = std::make_shared<const Held>(Held{w, make_contact(*w, gamma, opt)});
+        contact_ = std::shared_ptr<const Contact<Real>>(held, &held->contact);
+        if (!shared_key_.empty())
+          ThreadWaves<Real>::get().keep({shared_key_, d, gamma_text, opt.max_root_iterations, contact_});
+      } catch (const DomainError&) {
+        // check_contact (below) found a contact from the decimal γ and the exact waveform: this
+        // type's rounding of γ or of max w removed it, so a wider type must compute it.
+        throw PrecisionError("gamma = " + gamma_text + " leaves a contact narrower than the rounding of this number type");
+      }
+      digits_ = d;
+      text_ = gamma_text;
+      budget_ = opt.max_root_iterations;
+    }
+    return *contact_;
+  }
+
+ private:
+  std::shared_ptr<const Waveform<Real>> wave() {
+    const int d = working_digits10<Real>();
+    auto& slot = by_digits_[d];
+    if (!slot) {
+      if (shared_key_.empty())
+        slot = make_waveform<Real>(spec_);
+      else
+        slot = ThreadWaves<Real>::get().wave(spec_, shared_key_, d);
+    }
+    return slot;
+  }
+
+  const WaveSpec& spec_;
+  const ProfileSpec& profile_spec_;
+  std::string shared_key_;  // ThreadWaves::key: "" for a wave built per call
+  std::map<int, std::shared_ptr<const Waveform<Real>>> by_digits_;
+  std::map<int, std::unique_ptr<Profile<Real>>> profiles_;
+  std::shared_ptr<const Contact<Real>> contact_;
+  int digits_ = -1;
+  std::uintmax_t budget_ = 0;
+  std::string text_;
+};
+
+// `target`: the relative accuracy asked of a curved contact's spring integral (0: the type's).
+template <class Real>
+PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt,
+                               const Real& target = Real(0)) {
+  const Real beta = parse_real<Real>(p.beta, "beta");
+  // A positive β below the type's smallest number reads as 0: name what was written.
+  if (beta == 0 && p.beta[0] != '-' && p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
+    throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: --digits)");
+  if (const Profile<Real>* profile = waves.profile()) {
+    if (q == Quantity::psi)
+      throw InputError("psi with profile " + profile->name() +
+                       ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always "
+                       "jump, so Eq. 13's separation of alpha and beta does not exist (use mu)");
+    const auto r = solve_curved(waves.get(), *profile, beta, parse_real<Real>(p.gamma, "gamma"), opt, target);
+    return {r.mu, r.relative_error};
+  }
+  const auto r = solve(waves.contact(q == Quantity::psi ? std::string() : p.gamma, opt), beta, opt);
+  if (q == Quantity::psi) return {r.lost_area, r.lost_relative_error};
+  return {r.mu, r.relative_error};
+}
+
+// One point at `digits` significant digits: mpfr raises its working precision until the
+// error estimate is below half a unit in the last requested digit.
+template <class Real>
+std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantity q, const Point& p,
+                           int digits, const Options& opt) {
+  if constexpr (is_runtime_precision_v<Real>) {
+    int work = digits + guard_digits(digits);
+    for (int attempt = 0; attempt < 8; ++attempt) {
+      PrecisionScope scope(static_cast<unsigned>(work));
+      PointValue<Real> v;
+      try {
+        v = compute_point(waves, q, p, opt, Real(pow(Real(10), -digits) / 8));
+      } catch (const PrecisionError&) {
+        if (attempt == 7 || 2 * work > 4 * max_digits) throw;
+        work *= 2;  // the waveform needs more digits than these (power:P with P ~ 10^work)
+        continue;
+      }
+      const Real target = pow(Real(10), -digits) / 2;
+      if (v.relative_error <= target) return format_significant(v.value, digits);
+      using std::isfinite;
+      using std::log10;
+      if (isfinite(v.relative_error))
+        work += static_cast<int>(std::ceil(static_cast<double>(log10(v.relative_error / target)))) + guard_digits(digits);
+      else
+        work *= 2;  // the areas were lost entirely: no estimate of how much is missing
+      if (work > 4 * max_digits) break;
+    }
+    throw SolverError("wave " + spec.name + ", beta = " + p.beta +
+                      (q == Quantity::mu ? ", gamma = " + p.gamma : std::string()) +
+                      ": could not reach " + std::to_string(digits) + " digits (ill-conditioned)");
+  } else {
+    return format_significant(compute_point(waves, q, p, opt).value, digits);
+  }
+}
+
+// Ziv's rounding test: x carries an absolute error of at most e; if every number in [x − e, x + e]
+// rounds to the same value of T, that value is the correctly rounded result. x ± e is itself
+// computed in X, so e is widened by two units of X's precision first.
+template <class T, class X>
+bool rounds_alike(const X& x, const X& e) {
+  using std::abs;
+  using std::isfinite;
+  if (!isfinite(x) || !isfinite(e)) return false;
+  const X wide = e + 2 * std::numeric_limits<X>::epsilon() * abs(x);
+  return static_cast<T>(X(x - wide)) == static_cast<T>(X(x + wide));
+}
+
+// The first rung's test: x is itself a T, so every number within e of x rounds to x exactly when e
+// is below half the gap to each neighbour of x (strictly: a midpoint rounds to even). The gaps are
+// exact in T (below x they halve at a power of two); e, a product rounded once, is enlarged by
+// 4 ulp of itself to cover that rounding. rounds_alike's widening by 2 ulp of x would span both
+// neighbours, and no value of the type would ever be accepted as its own correct rounding.
+template <class T>
+bool rounds_to_itself(const T& x, const T& e) {
+  using std::abs;
+  using std::isfinite;
+  if (!isfinite(x) || !isfinite(e) || !(abs(x) < std::numeric_limits<T>::max())) return false;
+  const T up = boost::math::float_next(x) - x, down = x - boost::math::float_prior(x);
+  const T bound = e * (1 + 4 * std::numeric_limits<T>::epsilon());
+  return 2 * bound < up && 2 * bound < down;
+}
+
+// Whether a fixed type's own μ̄ can pass rounds_to_itself. Below β_c (Eq. 6) its bound is many eps
+// (9–112 for double; hundreds for a curved contact, with its quadrature), wider than the half ulp
+// the test needs; at β ≥ β_c, μ̄ = 1 is exact. The kept Contact knows β_c (a curved contact's is its
+// central spring's, curved.hpp), so the solve is skipped below it (on 34,440 catalogue points in
+// double and long double the own rung answered exactly those with β ≥ β_c). Anything unusual goes
+// to the rung.
+template <class Real>
+bool own_rung_may_certify(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt) {
+  if (q != Quantity::mu) return true;
+  try {
+    // β that is not positive here (1e-400 underflows in double, not in long double) gets its
+    // message from this type's rung, never a value from a wider one.
+    const Real beta = parse_real<Real>(p.beta, "beta");
+    return !(beta > 0 && beta < waves.contact(p.gamma, opt).beta_c());
+  } catch (const std::exception&) {
+    return true;  // the rung gives the message or escalates
+  }
+}
+
+// A fixed-precision type, correctly rounded: its own value where the rounding bound certifies it;
+// for double next the long double value where its bound does (as Boost.Math promotes double);
+// else mpfr at twice the type's digits and more, until the rounding is certified.
+template <class Real>
+std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
+                           const WaveSpec& spec, Quantity q, const Point& p, int digits, const BatchOptions& options) {
+  using std::abs;
+  // A rung whose precision cannot resolve the waveform (PrecisionError) is not certified.
+  auto rung = [&](auto& cache) -> std::optional<PointValue<typename std::decay_t<decltype(cache)>::real_type>> {
+    try {
+      return compute_point(cache, q, p, options.solver);
+    } catch (const PrecisionError&) {
+      if (!options.escalate) throw;
+      return std::nullopt;
+    }
+  };
+  const auto count = [&](std::atomic<std::size_t> LadderCounts::*rung_count) {
+    if (options.ladder) ++(options.ladder->*rung_count);
+  };
+  if (!options.escalate || own_rung_may_certify(waves, q, p, options.solver))
+    if (const auto v = rung(waves); v && (!options.escalate || rounds_to_itself<Real>(v->value, Real(v->relative_error * abs(v->value))))) {
+      count(&LadderCounts::own);
+      return format_significant(v->value, digits);
+    }
+  if constexpr (std::is_same_v<Real, double>) {
+    const auto w = rung(wider);
+    if (w && rounds_alike<double>(w->value, static_cast<long double>(w->relative_error * abs(w->value)))) {
+      count(&LadderCounts::long_double);
+      return format_significant(static_cast<double>(w->value), digits);
+    }
+  }
+  count(&LadderCounts::mpfr);
+  constexpr int type_digits = std::numeric_limits<Real>::max_digits10;
+  if constexpr (std::is_floating_point_v<Real>) {
+    // mpfr's value and bound straight into Ziv's test, no decimal in between. The lower rungs
+    // left a value close to a midpoint of the type, typically within 1/20 ulp: 8 digits beyond
+    // the type's nearly always decide it, and cost less than the 48 digits of a decimal route.
+    int work = type_digits + 8;
+    for (; work <= 8 * type_digits + 3; work *= 2) {
+      PrecisionScope scope(static_cast<unsigned>(work));
+      const auto v = rung(fallback);
+      if (v && rounds_alike<Real>(v->value, mpfr(v->relative_error * abs(v->value))))
+        return format_significant(static_cast<Real>(v->value), digits);
+    }
+    // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: round the decimal, which
+    // evaluate_point gives within half a unit of its last digit.
+    return format_significant(parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, work, options.solver), "escalated value"),
+                              digits);
+  } else {
+    return format_significant(
+        parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, 2 * type_digits + 3, options.solver), "escalated value"),
+        digits);
+  }
+}
+
+// Whether contact exists, γ + max w > 0 (model.md, "Domain and edge behaviour"), decided once from
+// the decimal γ as written and the waveform at 60 digits or more, so that every number type gives
+// the same decision (a sampled sine at γ = −1 has a contact or not by the 17th digit of its mean,
+// which double rounds away). γ that is not a decimal is left to the typed path's message.
+// max w at the current mpfr precision: 1 for the catalogue; for samples (hi − mean)/scale from the
+// decimals, streamed (a 10-million-sample file is not built at 60 digits), at the digits the
+// offset cancels on top; for Fourier the waveform's own maximum.
+inline mpfr exact_maximum(const WaveSpec& spec) {
+  if (spec.kind == WaveKind::fourier) return make_waveform<mpfr>(spec)->maximum();
+  if (spec.kind != WaveKind::samples) return mpfr(1);
+  const std::size_t n = spec.samples.size();
+  for (int extra = 0;; extra += 40) {
+    PrecisionScope scope(static_cast<unsigned>(working_digits10<mpfr>() + extra));
+    const auto phase = [&](std::size_t j) {
+      if (j == n) return mpfr(1);
+      const mpfr t0(spec.times.front());
+      return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
+    };
+    mpfr sum = 0, lo(spec.samples[0]), hi = lo;
+    for (std::size_t j = 0; j < n; ++j) {
+      const mpfr v(spec.samples[j]);
+      sum += spec.times.empty() ? v : mpfr(v * (phase(j + 1) - (j ? phase(j - 1) : mpfr(phase(n - 1) - 1))) / 2);
+      lo = v < lo ? v : lo;
+      hi = v > hi ? v : hi;
+    }
+    if (!(hi > lo)) return mpfr(1);  // constant: the typed path names it
+    const mpfr mean = spec.times.empty() ? mpfr(sum / n) : sum;
+    const mpfr big = abs(lo) > abs(hi) ? mpfr(abs(lo)) : mpfr(abs(hi));
+    if (extra >= 400 || log10(2 * big / (hi - lo)) < extra + 20) return mpfr((hi - mean) / ((hi - lo) / 2));
+  }
+}
+
+// The contact check of one worker, point by point, its state kept for the whole stream: γ checked
+// last (points come γ by γ, so a sweep checks each once) and the exact max w, computed once per
+// precision on first need.
+class ContactCheck {
+ public:
+  ContactCheck(const WaveSpec& spec, Quantity q) : spec_(spec), q_(q) {}
+  void operator()(const Point& p) {
+    if (q_ == Quantity::psi || p.gamma == last_) return;
+    try {
+      check_decimal(p.gamma, "gamma");
+    } catch (const InputError&) {
+      return;
+    }
+    // Clear of the boundary in double, no exact test is needed (a sweep's points stay cheap): the
+    // catalogue has max w = 1, and a normalised user wave max w >= 0 (zero mean).
+    const double g = std::strtod(p.gamma.c_str(), nullptr);
+    const bool catalogue = spec_.kind != WaveKind::samples && spec_.kind != WaveKind::fourier;
+    if (!(g > (catalogue ? -1 + 1e-9 : 1e-9))) {
+      const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.size() + 10));
+      PrecisionScope scope(digits);
+      if (top_digits_ != working_digits10<mpfr>()) {
+        top_.reset();
+        top_ = exact_maximum(spec_);
+        top_digits_ = working_digits10<mpfr>();
+      }
+      const mpfr gamma(p.gamma);
+      if (!(gamma + *top_ > 0))
+        throw DomainError("gamma = " + p.gamma + " gives no contact for wave " + spec_.name + ": expected gamma > " +
+                          detail::short_str(mpfr(-*top_)));
+    }
+    last_ = p.gamma;  // only a γ that passed
+  }
+
+ private:
+  const WaveSpec& spec_;
+  Quantity q_;
+  std::optional<mpfr> top_;
+  int top_digits_ = -1;
+  std::string last_;  // "" to begin with: an empty γ is left to the typed path's message
+};
+
+// One worker's state for a whole stream: the contact check and the waveform caches of every rung.
+template <class Real>
+class PointEvaluator {
+ public:
+  PointEvaluator(const WaveSpec& spec, Quantity q, int digits, const BatchOptions& options)
+      : spec_(spec), q_(q), digits_(digits), options_(options), check_(spec, q), waves_(spec, options.profile),
+        wider_(spec, options.profile), fallback_(spec, options.profile) {}
+  std::string operator()(const Point& p) {
+    check_(p);
+    if constexpr (is_runtime_precision_v<Real>)
+      return evaluate_point<Real>(waves_, spec_, q_, p, digits_, options_.solver);
+    else
+      return evaluate_fixed(waves_, wider_, fallback_, spec_, q_, p, digits_, options_);
+  }
+
+ private:
+  const WaveSpec& spec_;
+  Quantity q_;
+  int digits_;
+  const BatchOptions& options_;
+  ContactCheck check_;
+  WaveCache<Real> waves_;
+  WaveCache<long double> wider_;
+  WaveCache<mpfr> fallback_;
+};
+
+// The streaming core under evaluate() and evaluate_stream() (evaluate.hpp).
+//
+// One thread: point by point on the calling thread, each delivered before the next is computed.
+// More: `threads` workers claim points one at a time from a shared counter (as the batch did) and
+// write each value into a ring of threads × stream_chunk slots, slot i mod size; the calling
+// thread delivers slot after slot in index order. A worker that claims a point a whole ring ahead
+// of the next undelivered one waits until that slot is delivered: memory is the ring, whatever
+// count is. Slots publish their index + 1 (release) once written, so the ring is never cleared.
+// Waits use one mutex and two condition variables; the fast paths are atomics only, and a side
+// notifies the other only when it announced that it waits (announcement and publication are both
+// sequentially consistent, so one of them sees the other).
+template <class Real>
+void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
+                           const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
+                           const std::function<void(std::size_t, const std::string&)>& sink) {
+  if (count == 0) return;
+  unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, count));
+  std::atomic<std::size_t> done{0};
+  // Point i's value, or its error (its own, its generator's or its progress report's).
+  auto compute = [&](PointEvaluator<Real>& evaluator, std::size_t i, std::string& value, std::exception_ptr& error) {
+    error = nullptr;
+    try {
+      value = evaluator(point(i));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    const std::size_t d = ++done;
+    try {
+      if (options.progress) options.progress(d);
+    } catch (...) {
+      if (!error) error = std::current_exception();
+    }
+  };
+
+  if (threads <= 1) {
+    PointEvaluator<Real> evaluator(spec, q, digits, options);
+    std::string value;
+    for (std::size_t i = 0; i < count; ++i) {
+      std::exception_ptr error;
+      compute(evaluator, i, value, error);
+      if (error) std::rethrow_exception(error);
+      sink(i, value);
+    }
+    return;
+  }
+
+  struct Slot {
+    std::atomic<std::size_t> filled{0};  // index + 1 of the point written here, 0 before any
+    std::string value;
+    std::exception_ptr error;
+  };
+  const std::size_t size = std::min<std::size_t>(count, std::size_t{threads} * stream_chunk);
+  const std::size_t notify_step = std::max<std::size_t>(1, size / 8);
+  const std::unique_ptr<Slot[]> ring(new Slot[size]);
+  constexpr std::size_t nobody = static_cast<std::size_t>(-1);
+  std::atomic<std::size_t> next{0};               // the next point to claim
+  std::atomic<std::size_t> head{0};               // the next point to deliver
+  std::atomic<std::size_t> awaited{nobody};       // the point the calling thread waits for
+  std::atomic<unsigned> waiting_workers{0};       // workers waiting for a free slot
+  std::atomic<bool> stop{false};
+  std::mutex mutex;
+  std::condition_variable slot_freed, point_done;
+
+  auto worker = [&] {
+    PointEvaluator<Real> evaluator(spec, q, digits, options);
+    for (;;) {
+      const std::size_t i = next++;
+      if (i >= count || stop.load(std::memory_order_relaxed)) return;
+      if (i >= head.load() + size) {
+        std::unique_lock<std::mutex> lock(mutex);
+        ++waiting_workers;
+        slot_freed.wait(lock, [&] { return stop.load() || i < head.load() + size; });
+        --waiting_workers;
+        if (stop.load()) return;
+      }
+      Slot& slot = ring[i % size];
+      compute(evaluator, i, slot.value, slot.error);
+      slot.filled.store(i + 1);
+      if (awaited.load() == i) {
+        std::lock_guard<std::mutex> lock(mutex);
+        point_done.notify_one();
+      }
+    }
+  };
+
+  // Stops and joins the workers on every way out, the sink's exceptions included.
+  struct Pool {
+    std::vector<std::thread> threads;
+    std::atomic<bool>& stop;
+    std::mutex& mutex;
+    std::condition_variable& slot_freed;
+    ~Pool() {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        stop.store(true);
+        slot_freed.notify_all();
+      }
+      for (auto& t : threads) t.join();
+    }
+  } pool{{}, stop, mutex, slot_freed};
+  pool.threads.reserve(threads);
+  for (unsigned t = 0; t < threads; ++t) pool.threads.emplace_back(worker);
+
+  for (std::size_t h = 0; h < count; ++h) {
+    Slot& slot = ring[h % size];
+    if (slot.filled.load(std::memory_order_acquire) != h + 1) {
+      std::unique_lock<std::mutex> lock(mutex);
+      if (waiting_workers.load() > 0) slot_freed.notify_all();  // the notices skipped below
+      awaited.store(h);
+      point_done.wait(lock, [&] { return slot.filled.load() == h + 1; });
+      awaited.store(nobody);
+    }
+    if (slot.error) std::rethrow_exception(slot.error);  // Pool's destructor stops and joins
+    sink(h, slot.value);
+    head.store(h + 1);
+    if ((h + 1) % notify_step == 0 && waiting_workers.load() > 0) {
+      std::lock_guard<std::mutex> lock(mutex);
+      slot_freed.notify_all();
+    }
+  }
+}
+
+}  // namespace vibrofric::detail
+
+#define VIBROFRIC_INSTANTIATE_EVALUATE(Real)                                                     \
+  template void vibrofric::detail::evaluate_stream_typed<Real>(                                 \
+      const WaveSpec&, Quantity, std::size_t, const std::function<Point(std::size_t)>&, int,    \
+      const BatchOptions&, const std::function<void(std::size_t, const std::string&)>&);

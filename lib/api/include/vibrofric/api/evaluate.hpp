@@ -1,0 +1,102 @@
+// Evaluation at a requested precision, from decimal strings to decimal strings: the layer under
+// the `vibrofric` tool. μ̄/μ0 (Eq. 15; curved profiles by MDR, model.md) or Ψ_w(β) (Eq. 12) for a
+// batch of points, in parallel.
+//
+// For mpfr the working precision is the requested digits plus guard digits, raised
+// automatically while the solver's error estimate says the requested digits are not reached.
+#pragma once
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/limits.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/core/solver.hpp"
+
+namespace vibrofric {
+
+enum class NumberType { float64, float80, bin50, bin100, mpfr };
+
+// Parses double, long-double, cpp_bin_float_50, cpp_bin_float_100, mpfr; InputError otherwise.
+NumberType parse_number_type(const std::string& text);
+std::string number_type_name(NumberType t);
+
+struct Precision {
+  NumberType type = NumberType::mpfr;
+  int digits = 50;  // mpfr: significant digits asked for, in [min_digits, max_digits]
+};
+
+// Digits printed for a precision: the request for mpfr, round-trip digits for hardware types,
+// 50 or 100 for cpp_bin_float.
+int output_digits(const Precision& p);
+
+enum class Quantity { mu, psi };
+
+struct Point {
+  std::string beta;
+  std::string gamma;  // ignored for Quantity::psi
+};
+
+// Which rung of the fixed types' ladder (detail::evaluate_fixed) answered each point: the value
+// computed in the type itself, the long double value (double only), or mpfr rounded to the type.
+// Points computed without escalation count as `own`.
+struct LadderCounts {
+  std::atomic<std::size_t> own{0}, long_double{0}, mpfr{0};
+};
+
+struct BatchOptions {
+  Options solver;
+  // The indenter (model.md, MDR): flat (the paper's flat punch) or a curved profile, whose μ̄
+  // integrates flat-punch springs (curved.hpp). Ψ exists for the flat punch only.
+  ProfileSpec profile;
+  // Hardware and fixed types: where the solver's rounding bound exceeds the type's epsilon
+  // (β → 0, γ → −min w), recompute with mpfr and round to the type (like Boost.Math's
+  // promote_double). Off: the value computed in the type, whatever its error.
+  bool escalate = true;
+  unsigned threads = 1;                               // 0: all cores
+  LadderCounts* ladder = nullptr;                     // counted where non-null (fixed types)
+  std::function<void(std::size_t done)> progress;     // called from worker threads, may be empty
+};
+
+// Formatted values, in the order of `points`. Throws the error of the first failing point
+// (InputError for bad input or domain, SolverError if the solver failed). Holds every value until
+// the end: for large batches use evaluate_stream. A catalogue or power:p wave, and its Contacts
+// for the last 8 γ, stay on the calling (or worker) thread for the next call, per number type and
+// precision (at most 64 waves): a loop of one-point calls does not rebuild them.
+std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
+                                  const Precision& precision, const BatchOptions& options = {});
+
+// The values of points 0 … count − 1, each passed to the sink as soon as it and every point before
+// it are done, with memory bounded independently of count (evaluate() is this with a vector).
+//  - point(i) makes point i on demand. With options.threads other than 1 it is called from the
+//    worker threads, concurrently: it must be thread-safe. Each index is asked for once.
+//  - sink(i, value) is called on the calling thread for i = 0, 1, …, count − 1 in that order.
+//  - Memory: a window of options threads × stream_chunk points is in flight (points claimed
+//    ahead of the oldest undelivered one wait for it), plus each worker's waveform caches, which
+//    live for the whole stream.
+//  - Values are identical, string for string, to evaluate()'s for the same point and options.
+//  - Errors: the error of the first failing point by index (as evaluate(); an exception thrown by
+//    point(i) or by options.progress after point i counts as point i's) is thrown after the rows
+//    before it were delivered, and no row after it is. An exception thrown by the sink stops the
+//    stream and propagates. Either way the workers are joined before evaluate_stream returns.
+//  - options.progress is called once per point computed (from the workers), with a count of
+//    points done that grows by one per call; calls from different workers may arrive out of order.
+void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
+                     const std::function<Point(std::size_t)>& point, const Precision& precision,
+                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink);
+
+// Points in flight per worker thread in evaluate_stream (the memory bound's chunk).
+inline constexpr std::size_t stream_chunk = 4096;
+
+namespace detail {
+// One instantiation per number type, each in its own translation unit (compile cost).
+template <class Real>
+void evaluate_stream_typed(const WaveSpec& wave, Quantity q, std::size_t count,
+                           const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
+                           const std::function<void(std::size_t, const std::string&)>& sink);
+}  // namespace detail
+
+}  // namespace vibrofric

@@ -1,0 +1,16 @@
+// What a caller may ask for, in one place: the API checks these, and the tool and the Python
+// module quote them in their messages and help texts.
+#pragma once
+
+namespace vibrofric {
+
+inline constexpr int min_digits = 1;      // significant digits of an mpfr request
+inline constexpr int max_digits = 10000;
+inline constexpr int max_root_iterations = 100000;  // the solver's root budget per event, if set
+inline constexpr int min_trace_points = 2;          // trace: N + 1 phases
+inline constexpr int max_trace_points = 1000000;
+inline constexpr int max_range_points = 1000000;    // sweep ranges FROM:TO:N
+inline constexpr int max_fit_harmonics = 10000;     // fit: K
+inline constexpr unsigned max_harmonic_index = 100000;  // fourier files: k
+
+}  // namespace vibrofric

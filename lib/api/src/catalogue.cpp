@@ -1,0 +1,488 @@
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/limits.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace vibrofric {
+
+static bool is_decimal(const std::string& t);
+
+namespace {
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+using detail::visible;
+
+// A user waveform file as a table (README, "File formats"): a UTF-8 byte-order mark and CR line
+// ends are dropped, '#' starts a comment, blank lines are skipped; a line with ',' or ';' has its
+// fields between them (so a header may hold spaces: 'time [s], value'), a line with tabs between
+// runs of tabs, any other line between runs of whitespace. A first line without any number is
+// the header.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::pair<int, std::vector<std::string>>> rows;  // line number, fields
+};
+
+Table read_table(const std::string& path, const std::string& wave) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)) + " is a directory: expected a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)));
+  Table t;
+  std::string line;
+  int number = 0;
+  constexpr std::size_t max_lines = 10'000'000;
+  while (std::getline(in, line)) {
+    ++number;
+    if (static_cast<std::size_t>(number) > max_lines)
+      throw InputError("file " + quoted(visible(path)) + " has more than " + std::to_string(max_lines) + " lines: expected fewer");
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos)
+      throw InputError("file " + quoted(visible(path)) + " line " + std::to_string(number) + " holds a NUL byte: expected text");
+    if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
+    // A line with ',' or ';' is split there (fields trimmed; an empty one is an error, except
+    // after a trailing separator); any other line at runs of whitespace.
+    std::vector<std::string> fields;
+    const auto space = [](char c) { return c == ' ' || c == '\t'; };
+    if (line.find_first_of(",;") != std::string::npos) {
+      std::size_t start = 0;
+      for (;;) {
+        const std::size_t end = line.find_first_of(",;", start);
+        std::string f = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        while (!f.empty() && space(f.back())) f.pop_back();
+        std::size_t lead = 0;
+        while (lead < f.size() && space(f[lead])) ++lead;
+        f.erase(0, lead);
+        // A field in double quotes (RFC 4180, as spreadsheets export headers) is its contents, a
+        // doubled quote one quote; a separator inside quotes is not supported (the columns then
+        // disagree with the header: an error, never a shifted column).
+        if (f.size() >= 2 && f.front() == '"' && f.back() == '"') {
+          std::string inner;
+          for (std::size_t k = 1; k + 1 < f.size(); ++k) {
+            inner += f[k];
+            if (f[k] == '"' && f[k + 1] == '"') ++k;
+          }
+          f = inner;
+        }
+        if (end == std::string::npos) {
+          if (!f.empty()) fields.push_back(f);
+          break;
+        }
+        if (f.empty())
+          throw InputError(path + ":" + std::to_string(number) + ": empty field before " +
+                           quoted(std::string(1, line[end])) + ": expected a value between separators");
+        fields.push_back(f);
+        start = end + 1;
+      }
+    } else if (line.find('\t') != std::string::npos) {
+      // Tab-separated (a rig's export): fields between runs of tabs, so that a header name may
+      // hold spaces ('time [s]<TAB>displacement [um]'); spaces around them trimmed.
+      std::size_t start = 0;
+      while (start < line.size()) {
+        const std::size_t end = std::min(line.find('\t', start), line.size());
+        std::string f = line.substr(start, end - start);
+        while (!f.empty() && f.back() == ' ') f.pop_back();
+        f.erase(0, std::min(f.find_first_not_of(' '), f.size()));
+        if (!f.empty()) fields.push_back(f);
+        start = end + 1;
+      }
+    } else {
+      std::istringstream ls(line);
+      for (std::string f; ls >> f;) fields.push_back(f);
+    }
+    if (fields.empty()) continue;
+    bool names = true;  // a header holds no number at all
+    for (const auto& f : fields) names = names && !is_decimal(f);
+    if (names && t.rows.empty() && t.header.empty()) {
+      t.header = fields;
+      continue;
+    }
+    t.rows.emplace_back(number, std::move(fields));
+  }
+  return t;
+}
+
+// The name of a time column, as rigs export it: "time", "t", "timestamp", with a unit in brackets
+// ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("time in ms").
+bool is_time_name(const std::string& name) {
+  static const std::regex re(R"((t|time|timestamp)(\s*[\[(].*[\])]|\s*[_/]\s*\w+|\s+in\s+\w+)?)", std::regex::icase);
+  return std::regex_match(name, re);
+}
+
+// The value of a decimal at 60 significant digits: decimals of up to 60 digits compare exactly.
+mpfr exact_value(const std::string& text) {
+  PrecisionScope scope(60);
+  return mpfr(text);
+}
+
+// The smallest p dividing n with y_j = y_{j+p} for every j (n if none), and with a time column
+// also t_{j+p} − t_j the same for every j (the signal repeats, not only its values): doubles
+// filter the candidates, 60 digits confirm them.
+std::size_t smallest_period(const std::vector<std::string>& y, const std::vector<std::string>& t) {
+  const std::size_t n = y.size();
+  std::vector<double> v, tv;
+  v.reserve(n);
+  for (const auto& x : y) v.push_back(std::strtod(x.c_str(), nullptr));
+  for (const auto& x : t) tv.push_back(std::strtod(x.c_str(), nullptr));
+  for (std::size_t p = 1; p < n; ++p) {
+    if (n % p) continue;
+    bool same = true;
+    for (std::size_t j = 0; j + p < n && same; ++j) same = v[j] == v[j + p];
+    if (!same) continue;
+    PrecisionScope scope(60);
+    for (std::size_t j = 0; j + p < n && same; ++j) same = mpfr(y[j]) == mpfr(y[j + p]);
+    if (same && !t.empty()) {
+      const mpfr shift = mpfr(t[p]) - mpfr(t[0]);
+      for (std::size_t j = 0; j + p < n && same; ++j) same = mpfr(t[j + p]) - mpfr(t[j]) == shift;
+    }
+    if (same) return p;
+  }
+  return n;
+}
+
+// The 0-based value column chosen by `column` (README, "File formats"): a 1-based index (header
+// names hold no number, so digits are never a name), or a header name matched exactly.
+std::size_t choose_column(const std::string& column, const std::vector<std::string>& header, std::size_t columns,
+                          const std::string& path) {
+  const std::string range = columns == 1 ? std::string("1") : "1 to " + std::to_string(columns);
+  if (std::all_of(column.begin(), column.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    const std::size_t index = column.size() > 9 ? 0 : static_cast<std::size_t>(std::stoul(column));
+    if (index < 1 || index > columns)
+      throw InputError("column " + quoted(column) + " of " + quoted(visible(path)) + " is out of range: the file has " +
+                       std::to_string(columns) + (columns == 1 ? " column" : " columns") + ", expected an index " + range);
+    return index - 1;
+  }
+  if (header.empty())
+    throw InputError("column " + quoted(visible(column)) + ": " + quoted(visible(path)) +
+                     " has no header line of names, expected a 1-based column index " + range);
+  std::vector<std::size_t> found;
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == column) found.push_back(i);
+  if (found.size() > 1)
+    throw InputError("column " + quoted(visible(column)) + " names columns " + std::to_string(found[0] + 1) + " and " +
+                     std::to_string(found[1] + 1) + " of " + quoted(visible(path)) + ": expected a 1-based index to choose one");
+  if (found.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < header.size(); ++i) names += (i ? ", " : "") + quoted(visible(header[i]));
+    throw InputError("column " + quoted(visible(column)) + " is not in the header of " + quoted(visible(path)) +
+                     ": expected one of " + names + " or an index " + range);
+  }
+  return found[0];
+}
+
+}  // namespace
+
+std::string detail::visible(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u >= 0x20 && u < 0x7F) {
+      out += ch;
+    } else {
+      char b[8];
+      std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
+      out += b;
+    }
+  }
+  return out;
+}
+
+int detail::distinct_digits(const WaveSpec& spec) {
+  int distinct = 1;
+  for (const std::string& t : spec.samples) {
+    int d = 0;
+    for (const char c : t) {
+      if (c == 'e' || c == 'E') break;
+      if (c >= '0' && c <= '9') ++d;
+    }
+    distinct = std::max(distinct, d);
+  }
+  return distinct;
+}
+
+mpfr detail::sample_value(const WaveSpec& spec, std::size_t j) { return mpfr(spec.samples[j]); }
+
+std::function<mpfr(std::size_t)> detail::sample_phase(const WaveSpec& spec) {
+  if (spec.times.empty()) return {};
+  return [&spec](std::size_t j) {
+    const mpfr t0(spec.times.front());
+    return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
+  };
+}
+
+const std::vector<std::string>& catalogue_names() {
+  static const std::vector<std::string> names{"sine", "triangle", "sawtooth-right", "sawtooth-left", "square"};
+  return names;
+}
+
+// [+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]{1,9})?, scanned by hand: std::regex cost several
+// µs per 60-digit number, more than a double evaluation (bench/README.md).
+static bool is_decimal(const std::string& t) {
+  std::size_t i = 0, n = t.size();
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < n && t[i] >= '0' && t[i] <= '9') ++i;
+    return i - start;
+  };
+  if (i < n && (t[i] == '+' || t[i] == '-')) ++i;
+  std::size_t mantissa = digits();
+  if (i < n && t[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < n && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < n && (t[i] == '+' || t[i] == '-')) ++i;
+    // At most 9 exponent digits: Boost's cpp_bin_float parser overflows a 64-bit integer (and
+    // crashed the tool) from 15 on, and no value of the model needs |exponent| ≥ 10^9.
+    const std::size_t e = digits();
+    if (e == 0 || e > 9) return false;
+  }
+  return i == n;
+}
+
+void check_decimal(const std::string& text, const std::string& what) {
+  if (text.empty()) throw InputError(what + " is empty: expected a decimal number");
+  if (!is_decimal(text))
+    throw InputError(what + " = " + quoted(visible(text)) + ": expected a finite decimal number such as 0.5 or -3e-2 (exponent below 1e9)");
+  errno = 0;
+  const long double v = std::strtold(text.c_str(), nullptr);
+  if (errno == ERANGE && std::fabs(v) > 1) 
+    throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
+  if (std::fabs(v) > static_cast<long double>(std::numeric_limits<double>::max()))
+    throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
+}
+
+WaveSpec parse_wave(const std::string& text) { return parse_wave(text, WaveReadOptions{}); }
+
+WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
+  WaveSpec s;
+  s.name = text;
+  const bool chosen = !options.column.empty();
+  if (chosen) {
+    const auto colon = text.find(':');
+    const std::string head = text.substr(0, colon);
+    const bool known = std::find(catalogue_names().begin(), catalogue_names().end(), text) != catalogue_names().end() ||
+                       text == "harmonic" || text == "tri" || text == "str" || text == "stl" || text == "sqr" ||
+                       (colon != std::string::npos && (head == "power" || head == "fourier"));
+    if (known)
+      throw InputError("column " + quoted(visible(options.column)) + " given for wave " + quoted(visible(text)) +
+                       ": a column applies to samples:FILE waves only, expected no column");
+  }
+  if (text == "sine" || text == "harmonic") { s.kind = WaveKind::sine; s.name = "sine"; return s; }
+  if (text == "triangle" || text == "tri") { s.kind = WaveKind::triangle; s.name = "triangle"; return s; }
+  if (text == "sawtooth-right" || text == "str") { s.kind = WaveKind::sawtooth_right; s.name = "sawtooth-right"; return s; }
+  if (text == "sawtooth-left" || text == "stl") { s.kind = WaveKind::sawtooth_left; s.name = "sawtooth-left"; return s; }
+  if (text == "square" || text == "sqr") { s.kind = WaveKind::square; s.name = "square"; return s; }
+  const auto colon = text.find(':');
+  const std::string head = text.substr(0, colon), arg = colon == std::string::npos ? "" : text.substr(colon + 1);
+  if (colon != std::string::npos && head == "power") {
+    s.kind = WaveKind::power;
+    s.exponent = arg;
+    check_decimal(arg, "power exponent p in " + quoted(visible(text)));
+    // strtold, not stold: an exponent that underflows (power:1e-5000) is 0 here, not an exception.
+    if (!(std::strtold(arg.c_str(), nullptr) >= 1))
+      throw InputError("power exponent p = " + quoted(arg) + ": expected p ≥ 1");
+    return s;
+  }
+  if (colon != std::string::npos && head == "fourier") {
+    if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected fourier:FILE");
+    s.kind = WaveKind::fourier;
+    std::set<unsigned> seen;
+    const Table table = read_table(arg, text);
+    if (!table.header.empty() && table.header.size() != 3)
+      throw InputError(arg + ": header " + quoted(visible(table.header[0])) + "… has " + std::to_string(table.header.size()) +
+                       " fields: expected three, such as 'k a_k b_k'");
+    for (const auto& [line, tok] : table.rows) {
+      const std::string where = arg + ":" + std::to_string(line);
+      if (tok.size() != 3)
+        throw InputError(where + ": expected three fields 'k a_k b_k', got " + std::to_string(tok.size()));
+      if (!std::regex_match(tok[0], std::regex("[0-9]{1,6}")))
+        throw InputError(where + ": harmonic k = " + quoted(visible(tok[0])) + ": expected an integer 0 ≤ k ≤ " +
+                       std::to_string(max_harmonic_index));
+      const auto k = static_cast<unsigned>(std::stoul(tok[0]));
+      if (k > max_harmonic_index)
+        throw InputError(where + ": harmonic k = " + tok[0] + ": expected k ≤ " + std::to_string(max_harmonic_index));
+      if (!seen.insert(k).second) throw InputError(where + ": harmonic k = " + tok[0] + " given twice");
+      check_decimal(tok[1], where + " a_" + tok[0]);
+      check_decimal(tok[2], where + " b_" + tok[0]);
+      s.harmonics.push_back({k, tok[1], tok[2]});
+    }
+    if (s.harmonics.empty()) throw InputError("file " + quoted(visible(arg)) + " has no coefficients: expected lines 'k a_k b_k'");
+    return s;
+  }
+  if (colon != std::string::npos && head == "samples") {
+    if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected samples:FILE");
+    s.kind = WaveKind::samples;
+    const Table table = read_table(arg, text);
+    const auto& rows = table.rows;
+    // A header of names and nothing numeric after it, or a non-numeric field further down.
+    for (const auto& [line, tok] : rows)
+      for (const auto& t : tok) check_decimal(t, arg + ":" + std::to_string(line) + " sample");
+    std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
+    if (!chosen && rows.size() == 1 && table.header.empty()) {
+      s.samples = rows[0].second;  // one line of values: one period
+    } else {
+      for (const auto& [line, tok] : rows)
+        if (tok.size() != columns)
+          throw InputError(arg + ":" + std::to_string(line) + ": " + std::to_string(tok.size()) + " fields, line " +
+                           std::to_string(rows[0].first) + " has " + std::to_string(columns) +
+                           ": expected the same number on every line");
+      if (!table.header.empty() && !rows.empty() && table.header.size() != columns)
+        throw InputError(arg + ": the header names " + std::to_string(table.header.size()) + " columns, the data have " +
+                         std::to_string(columns) + ": expected one name per column");
+      const auto& header = table.header;
+      std::size_t vc = 0, tc = std::string::npos;  // value and time column (npos: none)
+      if (chosen && (!rows.empty() || !header.empty())) {
+        if (columns == 0) columns = header.size();
+        vc = choose_column(options.column, header, columns, arg);
+        std::vector<std::size_t> time_columns;
+        for (std::size_t i = 0; i < header.size(); ++i)
+          if (is_time_name(header[i])) time_columns.push_back(i);
+        if (time_columns.size() > 1)
+          throw InputError(quoted(visible(arg)) + ": the header names " + std::to_string(time_columns.size()) + " time columns, " +
+                           quoted(visible(header[time_columns[0]])) + " and " + quoted(visible(header[time_columns[1]])) +
+                           ": expected at most one column named 'time' or 't'");
+        if (!time_columns.empty()) tc = time_columns[0];
+        if (vc == tc)
+          throw InputError("column " + quoted(visible(options.column)) + " of " + quoted(visible(arg)) + " is its time column " +
+                           quoted(visible(header[tc])) + ": expected a column of values");
+        if (!header.empty() && std::count(header.begin(), header.end(), header[vc]) == 1)
+          s.column = header[vc];
+        else
+          s.column = std::to_string(vc + 1);
+        s.name = text + "#" + s.column;
+      } else if (chosen) {
+        // No rows and no header: nothing to choose from; the sample count below says so.
+      } else if (columns == 2) {
+        const bool t0 = !header.empty() && is_time_name(header[0]);
+        const bool t1 = !header.empty() && is_time_name(header[1]);
+        if (header.empty() || t0 == t1)
+          throw InputError(arg + ": two columns" +
+                           (header.empty() ? std::string(" and no header")
+                                           : " named " + quoted(visible(header[0])) + ", " + quoted(visible(header[1]))) +
+                           ": expected one column of values, or a header naming one column 'time' (or 't'), e.g. 'time,value'");
+        tc = t0 ? 0 : 1;
+        vc = 1 - tc;
+      } else if (columns > 2) {
+        std::string names;
+        for (const auto& h : header) names += (names.empty() ? " (" : ", ") + quoted(visible(h));
+        throw InputError(arg + ": " + std::to_string(columns) + " columns" + (names.empty() ? "" : names + ")") +
+                         ": expected one column of values, two with one named 'time', or a value column chosen by name or "
+                         "1-based index (--column)");
+      }
+      for (const auto& [line, tok] : rows) {
+        if (tc != std::string::npos) s.times.push_back(tok[tc]);
+        s.samples.push_back(tok[vc]);
+      }
+      if (!header.empty() && vc < header.size()) s.value_column = header[vc];
+      if (tc != std::string::npos) s.time_column = header[tc];
+    }
+    if (s.samples.size() < 2 + (s.times.empty() ? 0 : 1))
+      throw InputError("file " + quoted(visible(arg)) + " has " + std::to_string(s.samples.size()) + " sample(s): expected at least " +
+                       (s.times.empty() ? "2" : "3 (one period and its end point)"));
+    if (!s.times.empty()) {
+      // One period with its end point: the time column sets the period, the last value repeats the first.
+      PrecisionScope scope(60);
+      for (std::size_t j = 1; j < s.times.size(); ++j)
+        if (!(exact_value(s.times[j]) > exact_value(s.times[j - 1])))
+          throw InputError(arg + ": time " + quoted(visible(s.times[j])) + " after " + quoted(visible(s.times[j - 1])) +
+                           ": expected strictly increasing time stamps");
+      const mpfr period = exact_value(s.times.back()) - exact_value(s.times.front());
+      for (std::size_t j = 1; j < s.times.size(); ++j)
+        if (exact_value(s.times[j]) - exact_value(s.times[j - 1]) < period * mpfr("1e-12"))
+          throw InputError(arg + ": time stamps " + quoted(visible(s.times[j - 1])) + " and " + quoted(visible(s.times[j])) +
+                           " are closer than 1e-12 of the period: expected distinct phases");
+      if (exact_value(s.samples.back()) != exact_value(s.samples.front()))
+        throw InputError(arg + ": the last value " + quoted(visible(s.samples.back())) + " differs from the first " +
+                         quoted(visible(s.samples.front())) +
+                         ": with a time column the file holds one period and its end point; append the line at time t0 + "
+                         "period with the first value");
+      s.samples.pop_back();  // the end point: its time stays, as the period's end
+    }
+    const std::size_t period = smallest_period(s.samples, s.times);
+    if (period == 1)
+      throw InputError("sampled waveform " + quoted(visible(text)) + " is constant: expected a signal with non-zero amplitude");
+    if (s.times.empty() && s.samples.size() >= 3 && exact_value(s.samples.back()) == exact_value(s.samples.front())) {
+      throw InputError(arg + ": the last sample " + quoted(visible(s.samples.back())) +
+                       " repeats the first: a one-column file holds one period without its end point (y_j at phi = j/N); "
+                       "remove the last value, or add a time column (then the end point is expected)");
+    }
+    if (period < s.samples.size())
+      throw InputError(arg + ": the samples repeat every " + std::to_string(period) + " of " + std::to_string(s.samples.size()) +
+                       ": the file holds " + std::to_string(s.samples.size() / period) +
+                       " identical periods; expected one period (the frequency f is that of one period)");
+    return s;
+  }
+  throw InputError("unknown wave " + quoted(visible(text)) +
+                   ": expected sine, triangle, sawtooth-right, sawtooth-left, square, power:P, fourier:FILE or samples:FILE");
+}
+
+std::vector<std::pair<std::string, std::string>> describe_normalisation(const WaveSpec& wave, int digits) {
+  if (digits < min_digits || digits > max_digits)
+    throw InputError("digits = " + std::to_string(digits) + ": expected " + std::to_string(min_digits) + " to " +
+                     std::to_string(max_digits) + " significant digits");
+  const auto text = [&](const mpfr& x) { return format_significant(x, digits); };
+  const unsigned guarded = static_cast<unsigned>(digits) + 10;
+  if (wave.kind == WaveKind::fourier) {
+    // The FourierSeries constructor normalises (extrema by root search): build it, 10 guard digits.
+    PrecisionScope scope(guarded);
+    const auto w = make_waveform<mpfr>(wave);
+    const Normalisation<mpfr>& nz = w->normalisation();
+    std::size_t count = 0;
+    for (const auto& h : wave.harmonics) count += h.k != 0;
+    return {{"harmonics", std::to_string(count)},
+            {"mean_removed", text(nz.offset)},
+            {"peak_to_peak", text(mpfr(2 * nz.scale))},
+            {"scale", text(nz.scale)},
+            {"factor", text(mpfr(1 / nz.scale))}};
+  }
+  if (wave.kind != WaveKind::samples)
+    return {{"normalisation", "none (catalogue wave, already zero mean and max - min = 2)"}};
+  const SampleNormalisation nz = normalise_samples(
+      wave.name, wave.samples.size(), [&](std::size_t j) { return detail::sample_value(wave, j); },
+      detail::distinct_digits(wave), detail::sample_phase(wave), static_cast<int>(guarded));
+  std::string period = "1 (uniform phases)";
+  if (!wave.times.empty()) {
+    // t_N − t_0 with the digits both stamps share cancelled: estimated at 60 digits first.
+    int cancelled = 0;
+    {
+      PrecisionScope scope(60);
+      const mpfr a(wave.times.front()), b(wave.times.back());
+      cancelled = static_cast<int>(std::ceil(static_cast<double>(log10(mpfr(std::max(abs(a), abs(b)) / (b - a))))));
+    }
+    PrecisionScope scope(guarded + static_cast<unsigned>(std::max(cancelled, 0)));
+    period = text(mpfr(mpfr(wave.times.back()) - mpfr(wave.times.front())));
+  }
+  const std::string column =
+      !wave.value_column.empty() ? wave.value_column : !wave.column.empty() ? wave.column : std::string("1");
+  PrecisionScope scope(nz.digits);
+  // The mean is accurate to about 10^-(digits − log10 N − 2)·max|y| (normalise_samples): below that
+  // (a zero mean computed as ±1e-22) its significant digits would be rounding noise, shown as 0.
+  const int log_n = static_cast<int>(std::ceil(std::log10(static_cast<double>(wave.samples.size()))));
+  const mpfr accuracy = pow(mpfr(10), -(static_cast<int>(nz.digits) - log_n - 2)) * std::max(abs(nz.lo), abs(nz.hi));
+  const mpfr mean = abs(nz.mean) <= accuracy ? mpfr(0) : nz.mean;
+  return {{"samples", std::to_string(wave.samples.size())},
+          {"end_point", wave.times.empty() ? "none" : "dropped"},
+          {"time_column", wave.times.empty() ? "none" : wave.time_column.empty() ? "unnamed" : wave.time_column},
+          {"period", period},
+          {"column", column},
+          {"raw_mean", text(mean)},
+          {"raw_min", text(nz.lo)},
+          {"raw_max", text(nz.hi)},
+          {"scale", text(nz.scale)},
+          {"factor", text(mpfr(1 / nz.scale))}};
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,214 @@
+// physical_point and trace_rows (commands.hpp): Eqs. 1, 5, 14 and MDR (model.md), and Fig. 2.
+#include "vibrofric/api/commands.hpp"
+
+#include <boost/math/tools/roots.hpp>
+
+#include <algorithm>
+#include <set>
+
+#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/physical.hpp"
+
+namespace vibrofric {
+
+PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string, std::string>& inputs,
+                               const Precision& prec, const BatchOptions& base) {
+  const auto need = [&](const char* name) -> const std::string& {
+    const auto it = inputs.find(name);
+    if (it == inputs.end()) throw InputError(std::string("missing --") + name + " for 'physical'");
+    return it->second;
+  };
+  const int digits = output_digits(prec);
+  PrecisionScope scope(static_cast<unsigned>(digits + 20));
+  auto get = [&](const char* name) { return parse_real<mpfr>(need(name), std::string("--") + name); };
+  auto opt = [&](const char* name) {
+    return inputs.count(name) ? parse_real<mpfr>(inputs.at(name), std::string("--") + name) : mpfr(0);
+  };
+  auto positive = [&](const char* name) {
+    const mpfr v = get(name);
+    if (!(v > 0)) throw InputError(std::string("--") + name + " = " + inputs.at(name) + ": expected a value > 0");
+    return v;
+  };
+  // The indenter (model.md MDR): which geometry flags it takes, its profile and length unit L.
+  const std::string shape = inputs.count("shape") ? inputs.at("shape") : "flat";
+  const std::map<std::string, std::set<std::string>> geometry{
+      {"flat", {"radius"}}, {"sphere", {"R"}}, {"cone", {"half-angle"}}, {"wearflat", {"R", "flat-radius"}}, {"profile", {}}};
+  const std::string kind = shape.rfind("profile:", 0) == 0 ? "profile" : shape;
+  if (!geometry.count(kind))
+    throw InputError("--shape '" + detail::visible(shape) + "': expected flat, sphere, cone, wearflat or profile:FILE");
+  for (const char* g : {"radius", "R", "half-angle", "flat-radius"})
+    if (inputs.count(g) && !geometry.at(kind).count(g))
+      throw InputError(std::string("--") + g + " does not apply to --shape " + detail::visible(shape));
+  const mpfr A = positive("A");
+  // The mean indentation, or the mean normal load an experimenter sets (then γ solves ⟨F_N⟩(γ) = F_N).
+  const bool by_load = inputs.count("F-N") > 0;
+  if (by_load && inputs.count("u-mean")) throw InputError("--u-mean and --F-N both given: expected one of them");
+  if (!by_load && !inputs.count("u-mean")) throw InputError("missing --u-mean (mean indentation) or --F-N (mean normal load) for 'physical'");
+  // Checked here with the values as typed (physical_groups checks them again, for library users).
+  auto poisson = [&](const char* name) {
+    const mpfr v = get(name);
+    if (!(v > -1 && v <= mpfr("0.5")))
+      throw InputError(std::string("--") + name + " = " + inputs.at(name) + ": expected -1 < nu <= 0.5");
+    return v;
+  };
+  PhysicalInput<mpfr> in{positive("E1"), poisson("nu1"), positive("E2"), poisson("nu2"), opt("G1"), opt("G2"),
+                         kind == "flat" ? positive("radius") : mpfr(0), positive("v0"), positive("f"), A,
+                         by_load ? mpfr(0) : get("u-mean"), positive("mu0")};
+  if (inputs.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + inputs.at("G1") + ": expected a value > 0");
+  if (inputs.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + inputs.at("G2") + ": expected a value > 0");
+  auto g = physical_groups(in);
+  BatchOptions options = base;
+  options.profile = ProfileSpec{};
+  mpfr length = 1;
+  std::string lambda;
+  if (kind == "sphere") {
+    options.profile = parse_profile("sphere");
+    length = sphere_length(positive("R"), A);
+  } else if (kind == "cone") {
+    const mpfr theta = positive("half-angle");
+    if (!(theta < 90)) throw InputError("--half-angle = " + inputs.at("half-angle") + ": expected degrees in (0, 90)");
+    options.profile = parse_profile("cone");
+    length = cone_length(theta, A);
+  } else if (kind == "wearflat") {
+    const mpfr R = positive("R"), b = positive("flat-radius");
+    lambda = format_significant(mpfr(b * b / (R * A)), digits + 15);
+    options.profile = parse_profile("wearflat:" + lambda);
+    length = b;
+  } else if (kind == "profile") {
+    options.profile = parse_profile(shape);
+    options.profile.height_unit = inputs.at("A");  // heights in metres, the library's in units of A
+  }
+  // ⟨F_N⟩(γ) = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope: N does
+  // not depend on β. Also the largest contact radius (curved) in units of L.
+  const auto w = make_waveform<mpfr>(wave);
+  const auto p = kind == "flat" ? nullptr : make_profile<mpfr>(options.profile);
+  // Contact needs gamma + max w > 0 (Eq. 14: u_mean > -A max w), said in the inputs' own terms.
+  if (!by_load && !(g.gamma + w->maximum() > 0))
+    throw DomainError("--u-mean = " + inputs.at("u-mean") + " with --A = " + inputs.at("A") + " gives no contact for wave " +
+                      wave.name + ": expected u_mean > -A max w = " + format_significant(mpfr(-A * w->maximum()), 6) +
+                      " m (gamma = u_mean/A > " + format_significant(mpfr(-w->maximum()), 6) + ")");
+  auto load = [&](const mpfr& gam, mpfr* edge_out) {
+    if (!(gam + w->maximum() > 0)) return mpfr(0);  // no contact, no load
+    mpfr normal;
+    if (kind == "flat") {
+      normal = solve(*w, g.beta, gam, options.solver).normal_area;
+    } else {
+      const auto r = solve_curved(*w, *p, g.beta, gam, options.solver, mpfr(pow(mpfr(10), -digits - 5)));
+      normal = r.normal_integral;
+      if (edge_out) *edge_out = r.contact_radius;
+    }
+    return kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
+  };
+  if (by_load) {
+    const mpfr F_N = positive("F-N");
+    // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
+    mpfr lo = -w->maximum(), hi = lo + 1;
+    for (int k = 0; load(hi, nullptr) < F_N; ++k) {
+      if (k == 200) throw InputError("--F-N = " + inputs.at("F-N") + ": expected a load the contact can carry");
+      lo = hi;
+      hi = lo + pow(mpfr(2), k + 1);
+    }
+    std::uintmax_t iterations = 400;
+    const auto bracket = boost::math::tools::toms748_solve(
+        [&](const mpfr& gam) { return mpfr(load(gam, nullptr) - F_N); }, lo, hi,
+        boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
+    if (iterations >= 400) throw SolverError("--F-N = " + inputs.at("F-N") + ": the mean indentation did not converge");
+    g.gamma = (bracket.first + bracket.second) / 2;
+  }
+  const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
+  // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
+  Precision fine = prec;
+  if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
+  const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
+  const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
+  const mpfr mu = mpfr(ratio_fine) * in.mu0;
+  mpfr edge;
+  const mpfr force = load(mpfr(gamma), &edge);
+  // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,
+  // the fractions of the period in contact and in stick.
+  mpfr beta_c, contact_fraction, stick_fraction;
+  if (kind == "flat") {
+    const Contact<mpfr> c = make_contact(*w, mpfr(gamma), options.solver);
+    const auto r = solve(c, mpfr(beta), options.solver);
+    beta_c = r.beta_c;
+    for (const auto& seg : c.segments())
+      if (seg.contact) contact_fraction += seg.v - seg.u;
+    for (const auto& st : r.stick_phases) stick_fraction += st.end - st.begin;
+  } else {
+    beta_c = make_contact(*w, mpfr(gamma), options.solver).beta_c();
+  }
+  PhysicalOutputs rec;
+  auto field = [&](const char* name, const std::string& v) { rec.emplace_back(name, v); };
+  auto line = [&](const char* name, const mpfr& v) { field(name, format_significant(v, digits)); };
+  field("shape", kind == "profile" ? shape : kind);
+  line("E_star_Pa", g.E_star);
+  line("G_star_Pa", g.G_star);
+  if (kind == "flat") {
+    line("k_z_N_per_m", g.k_z);
+    line("k_x_N_per_m", g.k_x);
+  } else {
+    line("contact_radius_max_m", mpfr(length * edge));
+  }
+  if (!lambda.empty()) line("lambda", mpfr(lambda));
+  line("beta", g.beta);
+  line("gamma", g.gamma);
+  if (by_load) line("u_mean_m", mpfr(g.gamma * A));
+  field("mu_over_mu0", mu_ratio);
+  line("mu", mu);
+  line("F_N_mean_N", force);
+  line("F_x_mean_N", mpfr(mu * force));
+  using std::isfinite;
+  if (isfinite(beta_c))
+    line("beta_c", beta_c);
+  else
+    field("beta_c", "inf");  // an upward jump of n: stick at every beta
+  if (kind == "flat") {
+    line("contact_fraction", contact_fraction);
+    line("stick_fraction", stick_fraction);
+  }
+  return rec;
+}
+
+
+std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const std::string& beta_text,
+                                                   const std::string& gamma_text, int n_points, int digits) {
+  check_decimal(beta_text, "--beta");
+  check_decimal(gamma_text, "--gamma");
+  if (n_points < min_trace_points || n_points > max_trace_points)
+    throw InputError("--points = " + std::to_string(n_points) + ": expected an integer from " +
+                     std::to_string(min_trace_points) + " to " + std::to_string(max_trace_points));
+  if (digits < min_digits || digits > max_digits)
+    throw InputError("--digits = " + std::to_string(digits) + ": expected an integer from " + std::to_string(min_digits) +
+                     " to " + std::to_string(max_digits));
+  PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
+  const auto w = make_waveform<mpfr>(wave);
+  const mpfr beta = parse_real<mpfr>(beta_text, "--beta"), gamma = parse_real<mpfr>(gamma_text, "--gamma");
+  const Contact<mpfr> contact = make_contact(*w, gamma);
+  const auto r = solve(contact, beta);
+  // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32).
+  std::vector<mpfr> edges;
+  for (const auto& g : contact.segments())
+    if (g.contact) {
+      if (g.nu == 0) edges.push_back(g.u);
+      if (g.nv == 0) edges.push_back(g.v);
+    }
+  std::vector<mpfr> phis(edges);
+  for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
+  for (const auto& st : r.stick_phases)
+    for (const mpfr& x : {st.begin, st.end}) phis.push_back(x - floor(x));
+  std::sort(phis.begin(), phis.end());
+  phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+  std::vector<std::array<std::string, 3>> rows;
+  for (const mpfr& phi : phis) {
+    const bool edge = std::find(edges.begin(), edges.end(), phi) != edges.end();
+    const mpfr v = edge ? mpfr(0) : mpfr(gamma + (*w)(phi - floor(phi)));
+    const mpfr s = edge ? mpfr(0) : tangential_force(*w, r, beta, gamma, phi == 1 ? mpfr(0) : phi);
+    rows.push_back({format_significant(phi, digits), format_significant(v > 0 ? v : mpfr(0), digits),
+                    format_significant(s, digits)});
+  }
+  return rows;
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,5 @@
+#include "vibrofric/api/detail/evaluate_impl.hpp"
+
+namespace vibrofric {
+VIBROFRIC_INSTANTIATE_EVALUATE(vibrofric::mpfr)
+}  // namespace vibrofric

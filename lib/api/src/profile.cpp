@@ -1,0 +1,120 @@
+#include "vibrofric/api/profile_spec.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "vibrofric/api/catalogue.hpp"
+
+namespace vibrofric {
+
+namespace {
+std::string as_typed(const std::string& s) { return "'" + s + "'"; }
+
+// Decimal text compared exactly enough: 400 digits hold every value a profile file may carry
+// (the grammar allows at most 9 exponent digits but no profile needs more than 400 digits).
+int compare_decimal(const std::string& a, const std::string& b) {
+  PrecisionScope scope(400);
+  const mpfr x(a), y(b);
+  return x < y ? -1 : (x > y ? 1 : 0);
+}
+}  // namespace
+
+ProfileSpec parse_profile(const std::string& text) {
+  ProfileSpec s;
+  s.name = text;
+  if (text == "flat") return s;
+  if (text == "sphere" || text == "cone") {
+    s.kind = ProfileKind::power;
+    s.parameter = text == "sphere" ? "2" : "1";
+    s.name = "power:" + s.parameter;
+    return s;
+  }
+  const auto colon = text.find(':');
+  const std::string head = text.substr(0, colon), arg = colon == std::string::npos ? "" : text.substr(colon + 1);
+  if (colon != std::string::npos && head == "power") {
+    s.kind = ProfileKind::power;
+    s.parameter = arg;
+    check_decimal(arg, "profile exponent N in " + as_typed(text));
+    if (!(std::strtold(arg.c_str(), nullptr) >= 1) || compare_decimal(arg, "1") < 0)
+      throw InputError("profile exponent N = " + as_typed(arg) + ": expected N ≥ 1 (cone 1, sphere 2)");
+    return s;
+  }
+  if (colon != std::string::npos && head == "wearflat") {
+    s.kind = ProfileKind::wearflat;
+    s.parameter = arg;
+    check_decimal(arg, "wear-flat LAMBDA in " + as_typed(text));
+    if (!(compare_decimal(arg, "0") > 0) || !(std::strtod(arg.c_str(), nullptr) > 0))
+      throw InputError("wear-flat LAMBDA = " + as_typed(arg) + ": expected LAMBDA = b^2/(R A) > 0 (and above 1e-308)");
+    return s;
+  }
+  if (colon != std::string::npos && head == "profile") {
+    if (arg.empty()) throw InputError("profile " + as_typed(text) + ": expected profile:FILE");
+    return parse_profile_file(arg, text);
+  }
+  throw InputError("unknown profile " + as_typed(text) +
+                   ": expected flat, sphere, cone, power:N, wearflat:LAMBDA or profile:FILE");
+}
+
+ProfileSpec parse_profile_file(const std::string& path, const std::string& text) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError("profile file " + as_typed(path) + " is a directory: expected a file of 'r f' lines");
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read profile file " + as_typed(path));
+  ProfileSpec s;
+  s.kind = ProfileKind::measured;
+  s.name = text;
+  constexpr std::size_t max_samples = 100000;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
+    for (char& c : line)
+      if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream ls(line);
+    std::vector<std::string> tok;
+    for (std::string t; ls >> t;) tok.push_back(t);
+    if (tok.empty()) continue;
+    const std::string where = path + ":" + std::to_string(number);
+    if (tok.size() != 2) throw InputError(where + ": expected two fields 'r f', got " + std::to_string(tok.size()));
+    check_decimal(tok[0], where + " r");
+    check_decimal(tok[1], where + " f");
+    if (s.r.empty()) {
+      if (compare_decimal(tok[0], "0") != 0) throw InputError(where + ": r = " + as_typed(tok[0]) + ": expected the first sample at r = 0");
+      if (compare_decimal(tok[1], "0") != 0)
+        throw InputError(where + ": f(0) = " + as_typed(tok[1]) + ": expected f(0) = 0 (heights from the profile's tip)");
+    } else {
+      // Distinct in double, so that every number type sees the same segments.
+      if (!(std::strtod(tok[0].c_str(), nullptr) > std::strtod(s.r.back().c_str(), nullptr)))
+        throw InputError(where + ": r = " + as_typed(tok[0]) + ": expected r to increase (by more than double rounding) after " +
+                         s.r.back());
+      if (compare_decimal(tok[1], s.f.back()) < 0)
+        throw InputError(where + ": f = " + as_typed(tok[1]) + " is below the previous " + s.f.back() +
+                         ": expected a non-decreasing profile (MDR needs f' >= 0)");
+      // A slope that drops (a concave corner at r_j) makes g' → −∞ just beyond r_j: g is then
+      // not monotone and no contact radius exists. (f2 − f1)(r1 − r0) ≥ (f1 − f0)(r2 − r1), exactly.
+      if (s.r.size() >= 2) {
+        PrecisionScope scope(400);
+        const std::size_t k = s.r.size();
+        const mpfr r0(s.r[k - 2]), r1(s.r[k - 1]), r2(tok[0]), f0(s.f[k - 2]), f1(s.f[k - 1]), f2(tok[1]);
+        if ((f2 - f1) * (r1 - r0) < (f1 - f0) * (r2 - r1))
+          throw InputError(where + ": the slope drops at r = " + s.r[k - 1] +
+                           " (a concave corner): expected a convex profile, slopes non-decreasing in r, as the MDR "
+                           "transform g(x) is monotone only then (smooth or convexify the measurement)");
+      }
+    }
+    if (s.r.size() == max_samples)
+      throw InputError("profile file " + as_typed(path) + " has more than " + std::to_string(max_samples) + " samples");
+    s.r.push_back(tok[0]);
+    s.f.push_back(tok[1]);
+  }
+  if (s.r.size() < 2)
+    throw InputError("profile file " + as_typed(path) + " has " + std::to_string(s.r.size()) +
+                     " sample(s): expected at least 2 lines 'r f'");
+  if (compare_decimal(s.f.back(), "0") == 0)
+    throw InputError("profile file " + as_typed(path) + " is flat (f = 0 everywhere): use --profile flat");
+  return s;
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,669 @@
+// The stick-slip solver: μ̄/μ0 = g_w(β, γ) (Eqs. 9, 13, 15) and Ψ_w(β) (Eqs. 11–12).
+//
+// n(φ) = max(γ + w(φ), 0) is the normal force in units of k_z·A, s(φ) the tangential force in
+// units of μ0·k_z·A. The periodic steady state is s(φ) = βφ + min_{ψ ≤ φ} [n(ψ) − βψ] (model.md):
+// starting where n is smallest (there s = n), one forward sweep over the monotone pieces of n
+// finds every stick onset (Eq. 4: n' rises through β, an upward jump of n, or first contact) and
+// every stick end (Eq. 8: n falls back onto the ramp, or jumps below it). Areas are exact where
+// the waveform has an antiderivative; the tanh-sinh path (every event and piece end a
+// breakpoint) is the cross-check.
+//
+// Not for: waveforms whose pieces violate the monotonicity contract of waveform.hpp.
+#pragma once
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrofric/core/detail/roots.hpp"
+#include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
+#include "vibrofric/core/waveform.hpp"
+
+namespace vibrofric {
+
+enum class AreaMethod {
+  automatic,   // exact if the waveform has an antiderivative, else quadrature
+  exact,       // antiderivative differences; SolverError if there is none
+  quadrature,  // tanh-sinh on every slip and stick segment
+};
+
+struct Options {
+  AreaMethod area = AreaMethod::automatic;
+  // Root finder: stops when the bracket is within 4 ulp; more iterations than this is an error.
+  // 0: 200 plus the working precision in bits, as a bisection step gains one bit and the
+  // safeguarded Newton bisects on flanks it cannot follow (power:P with P near 10^digits).
+  std::uintmax_t max_root_iterations = 0;
+  // tanh-sinh: at most this many halvings; stops when two levels differ by at most
+  // quadrature_tolerance·L1 (0: sqrt(eps), after which the error is ~eps as convergence is
+  // doubly exponential); not reaching it is an error.
+  std::size_t max_quadrature_levels = 15;
+  double quadrature_tolerance = 0;
+};
+
+template <class Real>
+std::uintmax_t root_budget(const Options& opt) {
+  if (opt.max_root_iterations > 0) return opt.max_root_iterations;
+  return 200 + static_cast<std::uintmax_t>(std::ceil(working_digits10<Real>() * 3.3219280948873623));
+}
+
+template <class Real>
+struct StickPhase {
+  Real begin, end;  // phases, begin ∈ [0, 1), end ≥ begin (may exceed 1: wraps the period)
+  Real level;       // s(begin); s = level + β·(φ − begin) on the phase
+};
+
+template <class Real>
+struct Result {
+  Real mu;              // μ̄/μ0 = ∫s / ∫n (Eq. 15)
+  Real retained_area;   // ∫₀¹ s dφ, summed directly (no cancellation for small β)
+  Real normal_area;     // ∫₀¹ n dφ
+  Real lost_area;       // ∫₀¹ (n − s) dφ; equals Ψ_w(β) when there is no jumping (Eq. 12)
+  Real beta_c;          // largest rising slope of n (Eq. 6); +∞ with an upward jump
+  Real relative_error;  // estimated relative error of mu from rounding and quadrature
+  Real lost_relative_error;  // the same for lost_area
+  Real area_error;           // bound on the absolute rounding error of retained_area and of normal_area
+  bool jumping = false;      // n vanishes somewhere in the period
+  AreaMethod area = AreaMethod::exact;
+  std::vector<StickPhase<Real>> stick_phases;
+  std::size_t events = 0;       // stick onsets + stick ends + contact boundaries
+  std::size_t root_solves = 0;  // events that needed the root finder
+  std::size_t root_iterations = 0;
+  std::size_t quadratures = 0;
+  std::size_t evaluations = 0;  // waveform value/slope/antiderivative calls
+};
+
+// The clipped normal force n = max(γ + w, 0) of Eq. 2 for one γ: the waveform's pieces split
+// at the contact boundaries, with n, n' and the antiderivative at every segment end, the largest
+// rising slope β_c(γ) (Eq. 6), and where the sweep starts. Nothing here depends on β, so one
+// Contact serves every β of a sweep. Keeps a reference to the waveform.
+template <class Real>
+class Contact {
+ public:
+  struct Segment {
+    std::size_t piece;
+    Real u, v;       // sub-interval of the piece with constant contact status
+    bool contact;    // n = γ + w on it (else n = 0)
+    bool jump;       // u is a breakpoint where w jumps (n may jump there)
+    bool convex, linear;
+    Real nu, nv, dnu, dnv, Wu, Wv;  // n, n', antiderivative of w at u and v (0 off contact)
+  };
+
+  // Preconditions: γ finite with γ + max w > 0 (checked by solve()).
+  Contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) : w_(w), gamma_(gamma) {
+    detail::RootStats stats;
+    stats.max_iterations = root_budget<Real>(opt);
+    const std::size_t pieces = w.piece_count();
+    using std::abs;
+    using std::max;
+    for (std::size_t i = 0; i < pieces; ++i) {
+      if (i == w.argmin_break()) start_ = segs_.size();
+      const Real& a = w.piece_begin(i);
+      const Real& b = w.piece_end(i);
+      const bool jump = w.jump_at(i);
+      // β_c: an upward jump of n, else the largest slope at a contact segment's ends (w' is
+      // monotone on the piece).
+      const std::size_t prev = (i + pieces - 1) % pieces;
+      const Real left = clip(gamma + w.end_value(prev)), right = clip(gamma + w.begin_value(i));
+      if (jump && right > 0 && right > left) beta_c_ = std::numeric_limits<Real>::infinity();
+      Real c0, c1;
+      if (!w.contact_part(i, gamma, c0, c1, stats)) {
+        push(i, a, b, false, jump, false, false);
+        continue;
+      }
+      // Contact begins (ends) inside the piece where n < 0 at its start (end), even when the
+      // boundary rounds onto the piece end (a flank narrower than the phase's precision).
+      const bool enters = gamma + w.begin_value(i) < 0, leaves = gamma + w.end_value(i) < 0;
+      if (enters) {
+        ++boundaries_;
+        if (c0 > a) push(i, a, c0, false, jump, false, false);
+      }
+      push(i, c0, c1, true, enters ? false : jump, enters, leaves);
+      beta_c_ = max(beta_c_, max(segs_.back().dnu, segs_.back().dnv));
+      if (leaves) {
+        ++boundaries_;
+        if (c1 < b) push(i, c1, b, false, false, false, false);
+      }
+    }
+    root_solves_ = stats.solves;
+    root_iterations_ = stats.iterations;
+  }
+
+  const Waveform<Real>& wave() const { return w_; }
+  const Real& gamma() const { return gamma_; }
+  const std::vector<Segment>& segments() const { return segs_; }
+  std::size_t start() const { return start_; }  // first segment of the sweep: at argmin w
+  const Real& beta_c() const { return beta_c_; }
+  bool jumping() const { return gamma_ + w_.minimum() < 0; }
+  Real n_min() const { return clip(gamma_ + w_.minimum()); }
+  std::size_t boundaries() const { return boundaries_; }
+  std::size_t root_solves() const { return root_solves_; }
+  std::size_t root_iterations() const { return root_iterations_; }
+
+ private:
+  static Real clip(const Real& x) { return x > 0 ? x : Real(0); }
+  // A contact segment's ends: the cached piece-end values where they are piece ends, exactly 0
+  // for n at a contact boundary (its true value there).
+  void push(std::size_t i, const Real& u, const Real& v, bool contact, bool jump, bool u_boundary, bool v_boundary) {
+    Segment g{i, u, v, contact, jump, w_.convex(i), w_.linear(i), 0, 0, 0, 0, 0, 0};
+    if (contact) {
+      const bool ub = u == w_.piece_begin(i), ve = v == w_.piece_end(i);
+      g.nu = u_boundary ? Real(0) : Real(gamma_ + (ub ? w_.begin_value(i) : w_.value(i, u)));
+      g.nv = v_boundary ? Real(0) : Real(gamma_ + (ve ? w_.end_value(i) : w_.value(i, v)));
+      g.dnu = ub ? w_.begin_slope(i) : w_.slope(i, u);
+      g.dnv = ve ? w_.end_slope(i) : w_.slope(i, v);
+      if (w_.has_antiderivative()) {
+        g.Wu = w_.antiderivative(i, u);
+        g.Wv = w_.antiderivative(i, v);
+      }
+    }
+    segs_.push_back(std::move(g));
+  }
+
+  const Waveform<Real>& w_;
+  Real gamma_;
+  std::vector<Segment> segs_;
+  std::size_t start_ = 0, boundaries_ = 0, root_solves_ = 0, root_iterations_ = 0;
+  Real beta_c_ = 0;
+};
+
+namespace detail {
+
+// One tanh-sinh integrator per thread and precision: its tables are built at the precision that
+// is current when it is constructed (toolchain.md).
+template <class Real>
+boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
+  using Q = boost::math::quadrature::tanh_sinh<Real>;
+  // Boost 1.81's tanh_sinh builds its first rows unconditionally: fewer than 4 levels crash it.
+  if (levels < 4)
+    throw InputError("max_quadrature_levels = " + std::to_string(levels) + ": expected at least 4 (tanh-sinh)");
+  thread_local std::map<std::pair<int, std::size_t>, std::unique_ptr<Q>> cache;
+  const auto key = std::make_pair(working_digits10<Real>(), levels);
+  auto& slot = cache[key];
+  if (!slot) slot = std::make_unique<Q>(levels);
+  return *slot;
+}
+
+template <class Real>
+class Sweep {
+ public:
+  Sweep(const Contact<Real>& contact, const Real& beta, const Options& opt)
+      : c_(contact), w_(contact.wave()), beta_(beta), gamma_(contact.gamma()), opt_(opt) {
+    const Waveform<Real>& w = w_;
+    stats_.max_iterations = root_budget<Real>(opt);
+    method_ = opt.area;
+    if (method_ == AreaMethod::automatic)
+      method_ = w.has_antiderivative() ? AreaMethod::exact : AreaMethod::quadrature;
+    if (method_ == AreaMethod::exact && !w.has_antiderivative())
+      throw InputError("waveform " + w.name() + " has no antiderivative: use the quadrature area method");
+    if (method_ == AreaMethod::quadrature && opt.max_quadrature_levels < 4)
+      throw InputError("max_quadrature_levels = " + std::to_string(opt.max_quadrature_levels) +
+                       ": expected at least 4 (tanh-sinh)");
+  }
+
+  Result<Real> run() {
+    const auto& segs = c_.segments();
+    const std::size_t m = segs.size(), start = c_.start();
+    // Start where n is smallest: there s = n (model.md), so the sweep needs no history.
+    s_ = c_.n_min();
+    sticking_ = false;
+    for (std::size_t j = 0; j < m; ++j) sweep_segment(segs[(start + j) % m], start + j >= m);
+    if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), Real(1));
+
+    Result<Real> r;
+    r.retained_area = retained_;
+    r.normal_area = normal_;
+    r.lost_area = lost_;
+    r.mu = stick_.empty() ? Real(1) : Real(retained_ / normal_);
+    // s ≤ n pointwise, so ∫s ≤ ∫n: a ratio above 1 (seen in double just below β_c at γ → −1) is
+    // rounding, and 1 is nearer the truth.
+    if (r.mu > 1) r.mu = 1;
+    r.beta_c = c_.beta_c();
+    r.jumping = c_.jumping();
+    r.area = method_;
+    r.stick_phases = stick_;
+    // First-order rounding bounds (in eps) of the areas, relative to the areas themselves: large
+    // where the areas are small differences of O(1) phases and values (β → 0, γ → −min w).
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    // An area that rounding drove to zero or below has no relative accuracy at all.
+    const Real unknown = std::numeric_limits<Real>::infinity();
+    if (stick_.empty())
+      r.relative_error = 0;
+    else if (!(retained_ > 0 && normal_ > 0))
+      r.relative_error = unknown;
+    else
+      r.relative_error = eps * (err_retained_ / retained_ + err_normal_ / normal_);
+    r.area_error = eps * (err_retained_ > err_normal_ ? err_retained_ : err_normal_);
+    if (stick_.empty())
+      r.lost_relative_error = 0;
+    else
+      r.lost_relative_error = lost_ > 0 ? Real(eps * err_lost_ / lost_) : unknown;
+    r.events = events_ + c_.boundaries();
+    r.root_solves = stats_.solves + c_.root_solves();
+    r.root_iterations = stats_.iterations + c_.root_iterations();
+    r.quadratures = quadratures_;
+    r.evaluations = evaluations_;
+    return r;
+  }
+
+ private:
+  using Segment = typename Contact<Real>::Segment;
+
+  // n and n' on a segment, remembering the last few evaluations: the sweep asks for the same
+  // ends and events several times.
+  struct Memo {
+    static constexpr std::size_t size = 4;
+    std::size_t piece[size] = {};
+    Real x[size], v[size];
+    std::size_t used = 0, next = 0;
+    const Real* find(std::size_t p, const Real& at) const {
+      for (std::size_t k = 0; k < used; ++k)
+        if (piece[k] == p && x[k] == at) return &v[k];
+      return nullptr;
+    }
+    const Real& put(std::size_t p, const Real& at, Real value) {
+      const std::size_t k = next;
+      next = (next + 1) % size;
+      if (used < size) ++used;
+      piece[k] = p;
+      x[k] = at;
+      v[k] = std::move(value);
+      return v[k];
+    }
+  };
+  Real n(const Segment& g, const Real& x) {
+    if (!g.contact) return Real(0);
+    if (x == g.u) return g.nu;
+    if (x == g.v) return g.nv;
+    if (const Real* hit = n_memo_.find(g.piece, x)) return *hit;
+    ++evaluations_;
+    return n_memo_.put(g.piece, x, gamma_ + w_.value(g.piece, x));
+  }
+  Real antiderivative(const Segment& g, const Real& x) {
+    if (x == g.u) return g.Wu;
+    if (x == g.v) return g.Wv;
+    if (const Real* hit = w_memo_.find(g.piece, x)) return *hit;
+    ++evaluations_;
+    return w_memo_.put(g.piece, x, w_.antiderivative(g.piece, x));
+  }
+  Real dn(const Segment& g, const Real& x) {
+    if (!g.contact) return Real(0);
+    if (x == g.u) return g.dnu;
+    if (x == g.v) return g.dnv;
+    if (const Real* hit = dn_memo_.find(g.piece, x)) return *hit;
+    ++evaluations_;
+    return dn_memo_.put(g.piece, x, w_.slope(g.piece, x));
+  }
+
+  // Ramp of the current stick phase at phase x of a segment shifted by `shift` periods. Phases
+  // stay piece-local: x − a is exact-ish within a period, and the shift difference is an integer.
+  Real ramp(const Real& x, const Real& shift) const { return level_ + beta_ * ((x - a_) + (shift - a_shift_)); }
+
+  void sweep_segment(const Segment& g, bool wrapped) {
+    const Real shift = wrapped ? Real(1) : Real(0);
+    Real pos = g.u;
+    const Real n_u = n(g, g.u);
+    if (!sticking_) {
+      if (g.jump && n_u > s_) open_stick(g.u, shift, s_);  // upward jump of n
+    } else if (n_u <= ramp(g.u, shift)) {
+      close_stick(g.u, shift);  // n jumps below (or touches) the ramp
+    }
+    const bool convex = !g.contact || g.convex;
+    // Facts of exact arithmetic that rounding must not undo near a tangency (β ≈ β_c):
+    // a stick that begins by n' ≥ β on a convex segment cannot end on it (n − ramp has a
+    // non-decreasing slope from ≥ 0), and after a stick ends on a concave or linear segment n'
+    // stays below β there, so no new one begins.
+    bool ended_here = false;
+    for (int round = 0;; ++round) {
+      if (round > 4)
+        throw SolverError("no progress on the segment [" + short_str(g.u) + ", " + short_str(g.v) + "] of piece " +
+                          std::to_string(g.piece) + " at phase " + short_str(pos));
+      bool onset_here = false;
+      if (!sticking_) {
+        // Slip: s = n until n' exceeds β (Eq. 4); n' is monotone on the segment.
+        if (!convex && ended_here) {
+          add_slip(g, pos, g.v);
+          s_ = n(g, g.v);
+          return;
+        }
+        if (dn(g, pos) > beta_) {
+          open_stick(pos, shift, n(g, pos));
+        } else if (convex && dn(g, g.v) > beta_) {
+          const Real t = slope_root(g, pos, g.v);
+          add_slip(g, pos, t);
+          pos = t;
+          open_stick(pos, shift, n(g, pos));
+        } else {
+          add_slip(g, pos, g.v);
+          s_ = n(g, g.v);
+          return;
+        }
+        onset_here = true;
+      }
+      // Stick: the ramp ends where n falls back onto it (Eq. 8).
+      Real t;
+      if (!(convex && onset_here) && stick_end(g, pos, shift, convex, t)) {
+        add_stick(g, pos, t, shift);
+        close_stick(t, shift);
+        s_ = n(g, t);
+        pos = t;
+        ended_here = true;
+        continue;
+      }
+      add_stick(g, pos, g.v, shift);
+      return;
+    }
+  }
+
+  // First t in (p0, v] with n(t) ≤ ramp(t), if any. d = n − ramp has d' = n' − β monotone.
+  bool stick_end(const Segment& g, const Real& p0, const Real& shift, bool convex, Real& t) {
+    auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
+    auto dd = [&](const Real& x) -> Real { return dn(g, x) - beta_; };
+    const Real& v = g.v;
+    if (!(v > p0)) return false;
+    const Real dv = d(v);
+    const bool linear = !g.contact || g.linear;
+    if (linear) {
+      if (dv > 0) return false;
+      // d is linear here: interpolate between the ends, where d(p0) > 0 ≥ d(v), so t stays in
+      // the bracket even when n' equals β to rounding (then d0/(β − n') would divide by ~0).
+      const Real d0 = d(p0);
+      t = d0 <= 0 ? p0 : Real(p0 + (v - p0) * (d0 / (d0 - dv)));
+      if (t > v) t = v;
+      ++events_;
+      return true;
+    }
+    const Real dd0 = dd(p0);
+    Real lo = p0, hi = v, dlo, dhi = dv;
+    if (convex) {
+      // d convex: decreasing up to the zero of d' (if any), then increasing.
+      if (dd0 >= 0) return false;
+      const Real ddv = dd(v);
+      if (ddv > 0) {
+        hi = slope_root(g, p0, v);
+        dhi = d(hi);
+      }
+      if (dhi > 0) return false;
+      dlo = d(lo);
+    } else {
+      // d concave: increasing up to the zero of d', then decreasing; d > 0 just after p0.
+      if (dv > 0) return false;
+      if (dd0 > 0) {
+        const Real ddv = dd(v);
+        lo = ddv >= 0 ? v : slope_root(g, p0, v);
+      }
+      dlo = d(lo);
+      if (dlo < 0 && lo > p0) {
+        // d(lo) ≥ d(p0) ≥ 0 in exact arithmetic; rounding near a tangency: end at lo.
+        dlo = 0;
+      }
+    }
+    ++events_;
+    t = stick_end_root(g, shift, lo, hi, dlo, dhi);
+    return true;
+  }
+
+  // Eq. 8 on [lo, hi] where d = n − ramp changes sign monotonically: a double-precision root
+  // from the waveform's shadow, then Newton at the working precision (or toms748 for types no
+  // wider than double, where the guess is already the answer's precision). long double takes
+  // the Newton path too: from the double guess it needs fewer x87 sin-cos evaluations than
+  // toms748 from the bracket (measured: the long double sine solve 2.97 -> 1.80 us).
+  Real stick_end_root(const Segment& g, const Real& shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
+    auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
+    if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<double>::digits) {
+      return bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
+    } else {
+      const double g_ = static_cast<double>(gamma_), b_ = static_cast<double>(beta_);
+      const double lvl = static_cast<double>(level_), a0 = static_cast<double>(a_), sh = static_cast<double>(shift - a_shift_);
+      auto dd = [&](double x) { return g_ + w_.approx_value(g.piece, x) - (lvl + b_ * ((x - a0) + sh)); };
+      const double l = static_cast<double>(lo), h = static_cast<double>(hi);
+      double guess = (l + h) / 2;
+      const double fl = dd(l), fh = dd(h);
+      if ((fl > 0) != (fh > 0)) {
+        std::uintmax_t it = 100;
+        const auto r = boost::math::tools::toms748_solve(dd, l, h, fl, fh, boost::math::tools::eps_tolerance<double>(), it);
+        guess = (r.first + r.second) / 2;
+      }
+      // Newton asks for d and d' at the same phase: evaluate n and n' together, remember both.
+      auto d_joint = [&](const Real& x) -> Real {
+        if (!g.contact || n_memo_.find(g.piece, x)) return d(x);
+        auto [v, sl] = w_.value_and_slope(g.piece, x);
+        evaluations_ += 2;
+        n_memo_.put(g.piece, x, gamma_ + v);
+        dn_memo_.put(g.piece, x, std::move(sl));
+        return d(x);
+      };
+      // d is a difference of values of size |γ| + |w| ≤ |γ| + 2 and of the ramp: its rounding.
+      using std::abs;
+      const Real noise = 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
+      return polished_root<Real>(d_joint, [&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi, dlo, dhi,
+                                 Real(guess), noise, "stick end (Eq. 8)", stats_);
+    }
+  }
+
+  // Zero of n' − β on [lo, hi], where n' crosses β monotonically (Eq. 4, and the top of
+  // n − ramp on a concave segment): the waveform's closed form if it has one, else toms748.
+  Real slope_root(const Segment& g, const Real& lo, const Real& hi) {
+    ++events_;
+    if (auto r = w_.solve_slope(g.piece, beta_)) return *r < lo ? lo : (*r > hi ? hi : *r);
+    return bracketed_root<Real>([&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi,
+                                Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_), "n' = beta (Eq. 4)", stats_);
+  }
+
+  void open_stick(const Real& at, const Real& shift, const Real& level) {
+    using std::abs;
+    sticking_ = true;
+    a_ = at;
+    a_shift_ = shift;
+    level_ = level;
+    // The level is a value of n; the anchor phase is rounded. At an onset by n' = β the two
+    // errors cancel to first order (the ramp is tangent to n, and n' is nearly constant over the
+    // phase error: Waveform::unresolved); at first contact or a jump the ramp shifts by β times
+    // the phase error.
+    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift);
+    ++events_;
+  }
+  void close_stick(const Real& at, const Real& shift) {
+    sticking_ = false;
+    stick_.push_back({a_, Real(at + (shift - a_shift_)), level_});
+  }
+
+  // Rounding bounds, in eps. Event phases carry an error of about eps·(1 + |φ|), but the areas
+  // are stationary in them wherever s and n are continuous (at a stick end d/dt of the retained
+  // area is ramp − n = 0; at a contact boundary n = 0; pieces join continuously), so phases
+  // enter only through where a ramp is anchored (open_stick). Bound of one evaluation of n = γ + w:
+  Real value_bound() const {
+    using std::abs;
+    return abs(gamma_) + w_.maximum() - w_.minimum();
+  }
+
+  // ∫ n over [p, q] of segment g, exact or by quadrature; adds its rounding bound to `err`.
+  Real area_n(const Segment& g, const Real& p, const Real& q, Real& err) {
+    if (!g.contact || !(q > p)) return Real(0);
+    using std::abs;
+    err += (q - p) * value_bound();
+    if (method_ == AreaMethod::exact) {
+      const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
+      err += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
+      return gamma_ * (q - p) + (wq - wp);
+    }
+    return quad([&](const Real& x) -> Real { return n(g, x); }, p, q, err);
+  }
+
+  template <class F>
+  Real quad(F f, const Real& p, const Real& q, Real& err_bound) {
+    ++quadratures_;
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real tol = opt_.quadrature_tolerance > 0 ? Real(opt_.quadrature_tolerance) : Real(sqrt(eps));
+    Real err = 0, l1 = 0;
+    std::size_t levels = 0;
+    Real value;
+    try {
+      value = integrator<Real>(opt_.max_quadrature_levels).integrate(f, p, q, tol, &err, &l1, &levels);
+    } catch (const std::exception& e) {
+      throw SolverError(std::string("tanh-sinh quadrature failed: ") + e.what());
+    }
+    if (!(err <= tol * l1) && l1 > 0)
+      throw SolverError("tanh-sinh quadrature did not converge on [" + short_str(p) + ", " +
+                        short_str(q) + "]: error estimate " + short_str(err) + " after " +
+                        std::to_string(levels) + " levels");
+    // tanh-sinh: rounding of the weighted sum, plus the estimate (which overstates the error
+    // of the last level: convergence is doubly exponential).
+    err_bound += 4 * l1 + err / eps;
+    return value;
+  }
+
+  void add_slip(const Segment& g, const Real& p, const Real& q) {
+    Real err = 0;
+    const Real a = area_n(g, p, q, err);
+    normal_ += a;
+    retained_ += a;
+    err_normal_ += err;
+    err_retained_ += err;
+  }
+  void add_stick(const Segment& g, const Real& p, const Real& q, const Real& shift) {
+    if (!(q > p)) return;
+    using std::abs;
+    const Real rp = ramp(p, shift), rq = ramp(q, shift);
+    const Real r = (q - p) * (rp + rq) / 2;
+    // Ramp: rounding of its values, and the uncertainty of where it is anchored.
+    const Real ramp_err = (q - p) * (abs(rp) + abs(rq) + level_err_);
+    retained_ += r;
+    err_retained_ += ramp_err;
+    Real err = 0;
+    if (method_ == AreaMethod::exact || !g.contact) {
+      const Real a = area_n(g, p, q, err);
+      normal_ += a;
+      lost_ += a - r;
+      err_normal_ += err;
+      err_lost_ += err + ramp_err;
+    } else {
+      normal_ += area_n(g, p, q, err);
+      err_normal_ += err;
+      Real lerr = 0;
+      lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); }, p, q, lerr);
+      err_lost_ += lerr + ramp_err + err;
+    }
+  }
+
+  const Contact<Real>& c_;
+  const Waveform<Real>& w_;
+  Real beta_, gamma_;
+  Options opt_;
+  AreaMethod method_;
+  RootStats stats_;
+  bool sticking_ = false;
+  Real s_ = 0, a_ = 0, a_shift_ = 0, level_ = 0;
+  Real retained_ = 0, normal_ = 0, lost_ = 0;
+  Memo n_memo_, dn_memo_, w_memo_;
+  Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0;
+  std::vector<StickPhase<Real>> stick_;
+  std::size_t events_ = 0, quadratures_ = 0, evaluations_ = 0;
+};
+
+template <class Real>
+std::string context(const Waveform<Real>& w, const Real& beta, const Real* gamma) {
+  std::string s = "wave " + w.name() + ", beta = " + short_str(beta);
+  if (gamma) s += ", gamma = " + short_str(*gamma);
+  return s;
+}
+
+template <class Real>
+void check_beta(const Waveform<Real>& w, const Real& beta) {
+  using std::isfinite;
+  if (!(beta > 0) || !isfinite(beta))
+    throw InputError("beta = " + short_str(beta) + " for wave " + w.name() + ": expected a finite number > 0");
+  if (const std::string why = w.unresolved(); !why.empty()) throw PrecisionError("wave " + w.name() + ": " + why);
+}
+
+}  // namespace detail
+
+// The Contact of (w, γ) after checking γ: finite, and contact exists (γ + max w > 0; γ ≤ −1
+// for the catalogue is a DomainError). Throws SolverError if a contact boundary cannot be found.
+template <class Real>
+Contact<Real> make_contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) {
+  using std::isfinite;
+  if (!isfinite(gamma))
+    throw InputError("gamma = " + detail::short_str(gamma) + ": expected a finite number");
+  if (!(gamma + w.maximum() > 0))
+    throw DomainError("gamma = " + detail::short_str(gamma) + " gives no contact for wave " + w.name() +
+                      ": expected gamma > " + detail::short_str(Real(-w.maximum())));
+  try {
+    return Contact<Real>(w, gamma, opt);
+  } catch (const SolverError& e) {
+    throw SolverError("wave " + w.name() + ", gamma = " + detail::short_str(gamma) + ": " + e.what());
+  }
+}
+
+// μ̄/μ0 = g_w(β, γ) with diagnostics, for a Contact built once per γ (a sweep over β reuses
+// it). Precondition: β > 0 finite. β ≥ β_c(γ) gives exactly 1 (Eq. 6). Throws SolverError,
+// naming wave, β and γ, if an event cannot be bracketed or a root finder or integrator does not
+// converge.
+template <class Real>
+Result<Real> solve(const Contact<Real>& contact, const Real& beta, const Options& opt = {}) {
+  detail::check_beta(contact.wave(), beta);
+  try {
+    return detail::Sweep<Real>(contact, beta, opt).run();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
+  }
+}
+
+// The same from (w, β, γ): make_contact's checks on γ, then solve.
+template <class Real>
+Result<Real> solve(const Waveform<Real>& w, const Real& beta, const Real& gamma, const Options& opt = {}) {
+  detail::check_beta(w, beta);
+  return solve(make_contact(w, gamma, opt), beta, opt);
+}
+
+// Ψ_w(β) = ∫(n − s) without jumping (Eq. 12), computed at γ = −min w (n touches zero), where
+// it holds for every γ ≥ −min w (Eq. 13). The value is lost_area of the result.
+template <class Real>
+Result<Real> psi(const Waveform<Real>& w, const Real& beta, const Options& opt = {}) {
+  detail::check_beta(w, beta);
+  const Real gamma = -w.minimum();
+  try {
+    const Contact<Real> contact(w, gamma, opt);
+    return detail::Sweep<Real>(contact, beta, opt).run();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context<Real>(w, beta, nullptr) + ": " + e.what());
+  }
+}
+
+// s(φ) of a solved state, for φ ∈ [0, 1): on a stick phase the ramp, elsewhere n (model.md).
+template <class Real>
+Real tangential_force(const Waveform<Real>& w, const Result<Real>& r, const Real& beta,
+                      const Real& gamma, const Real& phi) {
+  for (const auto& st : r.stick_phases) {
+    for (int k = 0; k < 2; ++k) {
+      const Real x = phi + k;
+      if (x > st.begin && x < st.end) return st.level + beta * (x - st.begin);
+    }
+  }
+  const Real v = gamma + w(phi);
+  return v > 0 ? v : Real(0);
+}
+
+// The solver is compiled once per number type of the API, in lib/core/src/solver_<type>.cpp
+// (explicit instantiation definitions); every other translation unit sees these declarations
+// and links to that copy instead of instantiating its own ([temp.explicit]). Other types are
+// instantiated where they are used, as before.
+#define VIBROFRIC_SOLVER_INSTANCES(EXTERN, Real)                                                          \
+  EXTERN template Contact<Real> make_contact<Real>(const Waveform<Real>&, const Real&, const Options&);    \
+  EXTERN template Result<Real> solve<Real>(const Contact<Real>&, const Real&, const Options&);             \
+  EXTERN template Result<Real> solve<Real>(const Waveform<Real>&, const Real&, const Real&, const Options&); \
+  EXTERN template Result<Real> psi<Real>(const Waveform<Real>&, const Real&, const Options&);
+
+VIBROFRIC_SOLVER_INSTANCES(extern, double)
+VIBROFRIC_SOLVER_INSTANCES(extern, long double)
+VIBROFRIC_SOLVER_INSTANCES(extern, bin50)
+VIBROFRIC_SOLVER_INSTANCES(extern, bin100)
+VIBROFRIC_SOLVER_INSTANCES(extern, mpfr)
+
+}  // namespace vibrofric

@@ -1,0 +1,469 @@
+// Periodic waveforms w(φ) of Eq. (2): unit period, zero mean, unit amplitude; the catalogue of
+// model.md (the paper's Eq. 16 for tri, str, stl) and user waveforms (Fourier series, samples).
+//
+// A waveform is a list of pieces [x_i, x_{i+1}] covering [0, 1). On each piece it has one smooth
+// branch, valid on the closed piece (so the ends give one-sided limits and jumps are seen), and
+// on each piece both w and w' are monotone. The solver relies on this: every event of Eqs. (4)
+// and (8) is then the single root of a monotone function on a known bracket.
+#pragma once
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+#include <string>
+#include <vector>
+
+#include "vibrofric/core/detail/roots.hpp"
+#include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
+
+namespace vibrofric {
+
+namespace detail {
+
+template <class Real>
+inline constexpr bool wider_than_hardware_v = std::numeric_limits<Real>::digits > std::numeric_limits<long double>::digits;
+
+// sin x and cos x together (one MPFR call for mpfr).
+template <class Real>
+std::pair<Real, Real> sin_cos(const Real& x) {
+  Real s, c;
+  if constexpr (std::is_same_v<Real, boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
+                                                                 boost::multiprecision::et_off>>) {
+    mpfr_sin_cos(s.backend().data(), c.backend().data(), x.backend().data(), MPFR_RNDN);
+  } else {
+    using std::cos;
+    using std::sin;
+    s = sin(x);
+    c = cos(x);
+  }
+  return {s, c};
+}
+
+// acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
+// from a double guess (two steps to 100 digits; θ/2 ≤ π/4 keeps it well conditioned, and small
+// θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos.
+template <class Real>
+Real acos_fast(const Real& y) {
+  using std::acos;
+  if constexpr (!wider_than_hardware_v<Real>) {
+    return acos(y);
+  } else {
+    using std::abs;
+    using std::cbrt;
+    using std::sqrt;
+    if (y < 0) return boost::math::constants::pi<Real>() - acos_fast(Real(-y));
+    if (y >= 1) return Real(0);
+    const Real t = sqrt((1 - y) / 2);
+    Real h = std::asin(static_cast<double>(t));
+    const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
+    for (int it = 0; it < 64; ++it) {
+      const auto [sh, ch] = sin_cos(h);
+      const Real f = sh - t;
+      if (f == 0) break;
+      // Halley: Δ = 2 f f' / (2 f'² − f f''), with f' = cos h, f'' = −sin h.
+      const Real step = 2 * f * ch / (2 * ch * ch + f * sh);
+      h -= step;
+      if (abs(step) <= tol * abs(h)) return 2 * h;
+    }
+    if (abs(sin_cos(h).first - t) <= 4 * std::numeric_limits<Real>::epsilon() * t) return 2 * h;
+    throw SolverError("acos(" + short_str(y) + "): Halley iteration did not converge");
+  }
+}
+
+}  // namespace detail
+
+// How a user waveform was brought to zero mean and unit amplitude: w = (raw − offset) / scale,
+// with scale = (max − min)/2 of the zero-mean signal, so that max w − min w = 2.
+template <class Real>
+struct Normalisation {
+  bool applied = false;  // false for the catalogue, which is normalised by definition
+  Real offset = 0;       // mean of the raw signal
+  Real scale = 1;        // half the raw peak-to-peak amplitude
+};
+
+template <class Real>
+class Waveform {
+ public:
+  virtual ~Waveform() = default;
+
+  const std::string& name() const { return name_; }
+  std::size_t piece_count() const { return begins_.size(); }
+  const Real& piece_begin(std::size_t i) const { return begins_[i]; }
+  const Real& piece_end(std::size_t i) const { return ends_[i]; }
+
+  // Smooth branch of piece i at φ ∈ [x_i, x_{i+1}], its slope, and (if has_antiderivative) an
+  // antiderivative; only differences within one piece are meaningful.
+  virtual Real value(std::size_t i, const Real& phi) const = 0;
+  virtual Real slope(std::size_t i, const Real& phi) const = 0;
+  virtual bool has_antiderivative() const { return false; }
+  virtual Real antiderivative(std::size_t, const Real&) const {
+    throw SolverError("waveform " + name_ + " has no antiderivative");
+  }
+  // value and slope at one phase (a waveform may share the work, as sin and cos do).
+  virtual std::pair<Real, Real> value_and_slope(std::size_t i, const Real& phi) const { return {value(i, phi), slope(i, phi)}; }
+  // Double-precision shadows of value and slope, for initial guesses only (the default converts
+  // through Real; waveforms override them with their own double formulas).
+  virtual double approx_value(std::size_t i, double phi) const { return static_cast<double>(value(i, Real(phi))); }
+  virtual double approx_slope(std::size_t i, double phi) const { return static_cast<double>(slope(i, Real(phi))); }
+  // Closed-form solutions on piece i, where known: φ with value(i, φ) = y, φ with slope = b.
+  // Called only when the root exists on the piece; the generic root finder is the fallback.
+  virtual std::optional<Real> solve_value(std::size_t, const Real&) const { return std::nullopt; }
+  virtual std::optional<Real> solve_slope(std::size_t, const Real&) const { return std::nullopt; }
+  // Why the current working precision cannot resolve this waveform ("" if it can): the solver's
+  // rounding bounds take n' as nearly constant over a phase's rounding error.
+  virtual std::string unresolved() const { return {}; }
+
+  // One-sided values and slopes at the piece ends, computed once.
+  const Real& begin_value(std::size_t i) const { return begin_value_[i]; }
+  const Real& end_value(std::size_t i) const { return end_value_[i]; }
+  const Real& begin_slope(std::size_t i) const { return begin_slope_[i]; }
+  const Real& end_slope(std::size_t i) const { return end_slope_[i]; }
+  bool linear(std::size_t i) const { return begin_slope_[i] == end_slope_[i]; }
+  bool convex(std::size_t i) const { return begin_slope_[i] <= end_slope_[i]; }
+
+  // Right-continuous value and slope at any phase (reduced modulo 1).
+  Real operator()(const Real& phi) const { return value(locate(phi), reduce(phi)); }
+  Real slope_at(const Real& phi) const { return slope(locate(phi), reduce(phi)); }
+
+  // True if w is discontinuous at breakpoint i (its one-sided limits differ by more than
+  // rounding): only there can n jump. Continuous joins (samples, Fourier) are never jumps.
+  bool jump_at(std::size_t i) const { return jump_[i]; }
+
+  const Real& minimum() const { return min_; }
+  const Real& maximum() const { return max_; }
+  // Index of the breakpoint where the minimum is reached (as a one-sided limit).
+  std::size_t argmin_break() const { return argmin_; }
+  const Normalisation<Real>& normalisation() const { return norm_; }
+
+  // Piece i reduced to where γ + w > 0: returns false if there is no contact on the piece.
+  bool contact_part(std::size_t i, const Real& gamma, Real& c0, Real& c1,
+                    detail::RootStats& stats) const {
+    c0 = begins_[i];
+    c1 = ends_[i];
+    const Real g0 = gamma + begin_value_[i], g1 = gamma + end_value_[i];
+    if (g0 <= 0 && g1 <= 0) return false;
+    if ((g0 < 0) != (g1 < 0)) {
+      const Real c = solve_value_root(i, -gamma, c0, c1, g0, g1, stats);
+      (g0 < 0 ? c0 : c1) = c;
+    }
+    return true;
+  }
+
+  // φ in [lo, hi] ⊂ piece i with value(i, φ) = y, where g_lo = value − y at lo, g_hi at hi.
+  Real solve_value_root(std::size_t i, const Real& y, const Real& lo, const Real& hi,
+                        const Real& g_lo, const Real& g_hi, detail::RootStats& stats) const {
+    if (auto r = solve_value(i, y)) return clamp(*r, lo, hi);
+    return detail::bracketed_root<Real>(
+        [&](const Real& x) -> Real { return value(i, x) - y; }, lo, hi, g_lo, g_hi,
+        "contact boundary (γ + w = 0)", stats);
+  }
+
+ protected:
+  explicit Waveform(std::string name) : name_(std::move(name)) {}
+
+  // Sets the pieces (begins[0] = 0, increasing, all < 1) and the extrema from the pieces' ends.
+  void set_pieces(std::vector<Real> begins) {
+    begins_ = std::move(begins);
+    ends_.assign(begins_.begin() + 1, begins_.end());
+    ends_.push_back(Real(1));
+    const std::size_t m = begins_.size();
+    begin_value_.clear();
+    end_value_.clear();
+    begin_slope_.clear();
+    end_slope_.clear();
+    for (std::size_t i = 0; i < m; ++i) {
+      begin_value_.push_back(value(i, begins_[i]));
+      end_value_.push_back(value(i, ends_[i]));
+      begin_slope_.push_back(slope(i, begins_[i]));
+      end_slope_.push_back(slope(i, ends_[i]));
+    }
+    min_ = max_ = begin_value_[0];
+    argmin_ = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      const Real &a = begin_value_[i], &b = end_value_[i];
+      if (a < min_) { min_ = a; argmin_ = i; }
+      if (b < min_) { min_ = b; argmin_ = (i + 1) % m; }
+      if (a > max_) max_ = a;
+      if (b > max_) max_ = b;
+    }
+    jump_.assign(m, false);
+    using std::abs;
+    const Real tiny = 64 * std::numeric_limits<Real>::epsilon() * (max_ - min_);
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t prev = (i + m - 1) % m;
+      jump_[i] = abs(end_value_[prev] - begin_value_[i]) > tiny;
+    }
+  }
+
+  Normalisation<Real> norm_;
+
+ private:
+  static Real reduce(const Real& phi) {
+    using std::floor;
+    Real r = phi - floor(phi);
+    return r >= 1 ? Real(0) : r;
+  }
+  std::size_t locate(const Real& phi) const {
+    const Real r = reduce(phi);
+    std::size_t i = begins_.size() - 1;
+    while (i > 0 && r < begins_[i]) --i;
+    return i;
+  }
+  static Real clamp(const Real& x, const Real& lo, const Real& hi) {
+    return x < lo ? lo : (x > hi ? hi : x);
+  }
+
+  std::string name_;
+  std::vector<Real> begins_, ends_;
+  std::vector<Real> begin_value_, end_value_, begin_slope_, end_slope_;
+  std::vector<bool> jump_;
+  Real min_ = 0, max_ = 0;
+  std::size_t argmin_ = 0;
+};
+
+// sin 2πφ. Pieces split at the extrema (1/4, 3/4) and inflections (0, 1/2).
+template <class Real>
+class Sine final : public Waveform<Real> {
+ public:
+  Sine() : Waveform<Real>("sine") {
+    const Real q = Real(1) / 4;
+    this->set_pieces({Real(0), q, 2 * q, 3 * q});
+  }
+  Real value(std::size_t, const Real& phi) const override { return trig(phi).first; }
+  std::pair<Real, Real> value_and_slope(std::size_t, const Real& phi) const override {
+    const auto& [s, c] = trig(phi);
+    return {s, two_pi_ * c};
+  }
+  double approx_value(std::size_t, double phi) const override { return std::sin(2 * M_PI * phi); }
+  double approx_slope(std::size_t, double phi) const override { return 2 * M_PI * std::cos(2 * M_PI * phi); }
+  Real slope(std::size_t, const Real& phi) const override { return two_pi_ * trig(phi).second; }
+  bool has_antiderivative() const override { return true; }
+  Real antiderivative(std::size_t, const Real& phi) const override { return -trig(phi).second / two_pi_; }
+  // acos keeps the distance from the nearest extremum accurate (the contact width near γ = −1).
+  std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
+    using detail::acos_fast;
+    const Real q = Real(1) / 4;
+    switch (i) {
+      case 0: return q - acos_fast(y) / two_pi_;
+      case 1: return q + acos_fast(y) / two_pi_;
+      case 2: return 3 * q - acos_fast(Real(-y)) / two_pi_;
+      default: return 3 * q + acos_fast(Real(-y)) / two_pi_;
+    }
+  }
+  // Rising pieces only (0 and 3): the solver asks for positive slopes.
+  std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
+    using detail::acos_fast;
+    const Real c = b / two_pi_;
+    if (i == 0) return acos_fast(c) / two_pi_;
+    if (i == 3) return 1 - acos_fast(c) / two_pi_;
+    return std::nullopt;
+  }
+
+ private:
+  static Real two_pi() { return boost::math::constants::two_pi<Real>(); }
+
+  // sin and cos 2πφ of the last phases asked for on this thread (at this precision): value,
+  // slope and antiderivative at one event then cost one sin_cos. Every Sine is the same
+  // function, so the cache needs no owner.
+  const std::pair<Real, Real>& trig(const Real& phi) const {
+    struct Entry {
+      int digits = -1;
+      Real phi;
+      std::pair<Real, Real> sc;
+    };
+    thread_local Entry last[2];
+    thread_local int next = 0;
+    const int d = working_digits10<Real>();
+    for (const Entry& e : last)
+      if (e.digits == d && e.phi == phi) return e.sc;
+    Entry& e = last[next];
+    next ^= 1;
+    e.digits = d;
+    e.phi = phi;
+    e.sc = sin_cos_2pi(phi);
+    return e.sc;
+  }
+  // sin 2πφ and cos 2πφ from the nearest quarter period: φ = k/4 + r, |r| ≤ 1/8, r exact
+  // (Sterbenz). Exact at the quarters, accurate near the extrema, and it spares MPFR the
+  // hard-to-round arguments next to multiples of π/2.
+  std::pair<Real, Real> sin_cos_2pi(const Real& phi) const {
+    using std::floor;
+    long k;
+    if constexpr (std::is_floating_point_v<Real>) {
+      // From φ rounded to double, truncated by one SSE instruction: x87 rounding of long double
+      // switches the control word twice (floor, then the conversion), measured 40 % of this
+      // function. k may then be one off where 4φ + 1/2 is within a double rounding of an
+      // integer; r is still exact and |2πr| ≤ π/4 + 2^-50, where sin and cos are as accurate.
+      const double t = 4 * static_cast<double>(phi) + 0.5;
+      k = static_cast<long>(t);
+      if (t < static_cast<double>(k)) --k;
+    } else {
+      k = static_cast<long>(floor(4 * phi + Real(1) / 2));
+    }
+    const Real r = phi - Real(k) / 4;
+    long q = k % 4;
+    if (q < 0) q += 4;
+    Real s = 0, c = 1;
+    if (r != 0) std::tie(s, c) = detail::sin_cos(Real(two_pi_ * r));
+    switch (q) {  // rotate by q quarter turns
+      case 0: return {s, c};
+      case 1: return {c, Real(-s)};
+      case 2: return {Real(-s), Real(-c)};
+      default: return {Real(-c), s};
+    }
+  }
+  Real two_pi_ = two_pi();
+};
+
+// Piecewise linear through (x_i, y_i) with slope s_i on each piece: triangle, sawteeth, square
+// (Eq. 16) and sampled user signals.
+template <class Real>
+class PiecewiseLinear : public Waveform<Real> {
+ public:
+  struct Piece {
+    Real begin, anchor, slope;  // value = anchor + slope·(φ − begin)
+  };
+  PiecewiseLinear(std::string name, std::vector<Piece> pieces)
+      : Waveform<Real>(std::move(name)), pieces_(std::move(pieces)) {
+    std::vector<Real> begins;
+    for (const auto& p : pieces_) begins.push_back(p.begin);
+    this->set_pieces(std::move(begins));
+  }
+  Real value(std::size_t i, const Real& phi) const override {
+    const Piece& p = pieces_[i];
+    return p.anchor + p.slope * (phi - p.begin);
+  }
+  Real slope(std::size_t i, const Real&) const override { return pieces_[i].slope; }
+  bool has_antiderivative() const override { return true; }
+  Real antiderivative(std::size_t i, const Real& phi) const override {
+    const Piece& p = pieces_[i];
+    const Real d = phi - p.begin;
+    return d * (p.anchor + p.slope * d / 2);
+  }
+  std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
+    const Piece& p = pieces_[i];
+    if (p.slope == 0) return std::nullopt;
+    return p.begin + (y - p.anchor) / p.slope;
+  }
+
+ protected:
+  std::vector<Piece> pieces_;
+};
+
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_triangle() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>(
+      "triangle", std::vector<P>{{Real(0), Real(-1), Real(4)}, {Real(1) / 2, Real(1), Real(-4)}});
+}
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_sawtooth_right() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>("sawtooth-right",
+                                                 std::vector<P>{{Real(0), Real(-1), Real(2)}});
+}
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_sawtooth_left() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>("sawtooth-left",
+                                                 std::vector<P>{{Real(0), Real(1), Real(-2)}});
+}
+template <class Real>
+std::unique_ptr<Waveform<Real>> make_square() {
+  using P = typename PiecewiseLinear<Real>::Piece;
+  return std::make_unique<PiecewiseLinear<Real>>(
+      "square", std::vector<P>{{Real(0), Real(1), Real(0)}, {Real(1) / 2, Real(-1), Real(0)}});
+}
+
+// power:p — 1 − |4φ − 1|^p on [0, 1/2), −(1 − |4φ − 3|^p) on [1/2, 1), p ≥ 1 (model.md).
+// Near each peak it is exactly a power-law cap of order p. With u the distance to the nearest
+// peak in units of 1/4, piece i has w = ±(1 − u^p).
+template <class Real>
+class Power final : public Waveform<Real> {
+ public:
+  explicit Power(const Real& p, std::string name)
+      : Waveform<Real>(std::move(name)), p_(p), pd_(static_cast<double>(p)) {
+    if (!(p >= 1))
+      throw InputError("power:p needs p >= 1 (got " + detail::short_str(p) + ")");
+    const Real q = Real(1) / 4;
+    this->set_pieces({Real(0), q, 2 * q, 3 * q});
+  }
+  const Real& exponent() const { return p_; }
+  // Near u = 1 (the flanks at φ = 0 and 1/2) n''/n' ≈ 4p: over a phase error of a few ulp n'
+  // changes by a factor exp(16·p·eps), so p·eps must stay small. Above 2^-10/eps (double: p >
+  // 4.4e12) the flank is left to more digits (the ladder escalates; 50 digits: p ≤ 1.9e47).
+  std::string unresolved() const override {
+    if (p_ * std::numeric_limits<Real>::epsilon() * 1024 <= 1) return {};
+    return "power:p with p = " + detail::short_str(p_) + " has flanks (width ~1/p) that " +
+           std::to_string(working_digits10<Real>()) + " digits do not resolve: expected p ≤ 2^-10/eps";
+  }
+  double approx_value(std::size_t i, double phi) const override {
+    const double up = std::pow(static_cast<double>(distance(i, Real(phi))), pd_);
+    return i < 2 ? 1 - up : up - 1;
+  }
+  double approx_slope(std::size_t i, double phi) const override {
+    const double d = 4 * pd_ * std::pow(static_cast<double>(distance(i, Real(phi))), pd_ - 1);
+    return (i == 0 || i == 3) ? d : -d;
+  }
+  Real value(std::size_t i, const Real& phi) const override {
+    using std::pow;
+    const Real up = pow(distance(i, phi), p_);
+    return i < 2 ? 1 - up : up - 1;
+  }
+  Real slope(std::size_t i, const Real& phi) const override {
+    using std::pow;
+    const Real d = 4 * p_ * pow(distance(i, phi), p_ - 1);
+    return (i == 0 || i == 3) ? d : Real(-d);
+  }
+  bool has_antiderivative() const override { return true; }
+  Real antiderivative(std::size_t i, const Real& phi) const override {
+    using std::pow;
+    // d/dφ [u^{p+1}/(4(p+1))] = u^p·(du/dφ)/4, with du/dφ = −4, +4, −4, +4 on pieces 0–3.
+    const Real t = pow(distance(i, phi), p_ + 1) / (4 * (p_ + 1));
+    switch (i) {
+      case 0: return phi + t;
+      case 1: return phi - t;
+      case 2: return -phi - t;
+      default: return -phi + t;
+    }
+  }
+  std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
+    using std::pow;
+    const Real u = pow(i < 2 ? Real(1 - y) : Real(1 + y), 1 / p_);
+    return from_distance(i, u);
+  }
+  std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
+    using std::pow;
+    if (p_ == 1 || (i != 0 && i != 3)) return std::nullopt;
+    return from_distance(i, pow(b / (4 * p_), 1 / (p_ - 1)));
+  }
+
+ private:
+  // u ∈ [0, 1]: distance from the peak of the piece's half-wave, in units of 1/4.
+  static Real distance(std::size_t i, const Real& phi) {
+    switch (i) {
+      case 0: return 1 - 4 * phi;
+      case 1: return 4 * phi - 1;
+      case 2: return 3 - 4 * phi;
+      default: return 4 * phi - 3;
+    }
+  }
+  static Real from_distance(std::size_t i, const Real& u) {
+    switch (i) {
+      case 0: return (1 - u) / 4;
+      case 1: return (1 + u) / 4;
+      case 2: return (3 - u) / 4;
+      default: return (3 + u) / 4;
+    }
+  }
+  Real p_;
+  double pd_;
+};
+
+}  // namespace vibrofric

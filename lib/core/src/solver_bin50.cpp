@@ -1,0 +1,8 @@
+// The flat-punch and curved solvers in bin50, compiled once (solver.hpp, curved.hpp).
+#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/solver.hpp"
+
+namespace vibrofric {
+VIBROFRIC_SOLVER_INSTANCES(, bin50)
+VIBROFRIC_CURVED_INSTANCES(, bin50)
+}  // namespace vibrofric

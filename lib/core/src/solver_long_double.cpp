@@ -1,0 +1,8 @@
+// The flat-punch and curved solvers in long double, compiled once (solver.hpp, curved.hpp).
+#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/solver.hpp"
+
+namespace vibrofric {
+VIBROFRIC_SOLVER_INSTANCES(, long double)
+VIBROFRIC_CURVED_INSTANCES(, long double)
+}  // namespace vibrofric

@@ -1,5 +1,0 @@
-#include "vibrofric/detail/evaluate_impl.hpp"
-
-namespace vibrofric {
-VIBROFRIC_INSTANTIATE_EVALUATE(vibrofric::bin100)
-}  // namespace vibrofric

@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""The layers of lib/ (README, "Layers"): what each folder's files may include of the project.
+
+    core/          vibrofric/core/ only: templates on the number type, no text formats, no files
+    api/           core and api
+    verification/  core, api and verification
+    tool/, python/ api, and verification/claims.hpp (the `verify` command): the front ends
+
+Exit status 1 with one line per include that crosses a layer the wrong way, 0 otherwise.
+Usage: check.py [LIB_DIR]   (default: the lib/ folder next to tests/)
+       check.py --self-test   (the check finds a planted violation of each kind)
+"""
+import pathlib
+import re
+import sys
+import tempfile
+
+ALLOWED = {
+    "core": ("vibrofric/core/",),
+    "api": ("vibrofric/core/", "vibrofric/api/"),
+    "verification": ("vibrofric/core/", "vibrofric/api/", "vibrofric/verification/"),
+    "tool": ("vibrofric/api/", "vibrofric/verification/claims.hpp"),
+    "python": ("vibrofric/api/", "vibrofric/verification/claims.hpp"),
+}
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](vibrofric/[^>"]+)[>"]')
+
+
+def violations(lib):
+    found = []
+    for path in sorted(lib.rglob("*")):
+        if path.suffix not in (".hpp", ".cpp", ".h") or not path.is_file():
+            continue
+        layer = path.relative_to(lib).parts[0]
+        if layer not in ALLOWED:
+            found.append(f"{path}: in no layer (expected under one of {', '.join(ALLOWED)})")
+            continue
+        # A header's own folder must match its layer: lib/core/include/vibrofric/core/...
+        rel = path.relative_to(lib / layer).as_posix()
+        if rel.startswith("include/") and not rel.startswith(f"include/vibrofric/{layer}/"):
+            found.append(f"{path}: a {layer} header outside include/vibrofric/{layer}/")
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            m = INCLUDE.match(line)
+            if m and not m.group(1).startswith(ALLOWED[layer]):
+                found.append(f"{path}:{number}: {layer} includes {m.group(1)} "
+                             f"(a {layer} file may include {', '.join(ALLOWED[layer])})")
+    return found
+
+
+def self_test():
+    with tempfile.TemporaryDirectory() as tmp:
+        lib = pathlib.Path(tmp)
+        files = {
+            "core/include/vibrofric/core/a.hpp": '#include "vibrofric/api/evaluate.hpp"\n',
+            "api/src/b.cpp": '#include "vibrofric/verification/envelope.hpp"\n',
+            "tool/main.cpp": '#include "vibrofric/core/solver.hpp"\n#include "vibrofric/verification/claims.hpp"\n',
+            "core/include/vibrofric/api/c.hpp": "",
+            "other/d.cpp": "",
+        }
+        for name, text in files.items():
+            (lib / name).parent.mkdir(parents=True, exist_ok=True)
+            (lib / name).write_text(text)
+        found = violations(lib)
+    expected = ["a.hpp:1: core includes vibrofric/api/", "b.cpp:1: api includes vibrofric/verification/",
+                "main.cpp:1: tool includes vibrofric/core/", "c.hpp: a core header outside", "d.cpp: in no layer"]
+    missing = [e for e in expected if not any(e in f for f in found)]
+    if missing or len(found) != len(expected):
+        print("self-test failed: expected", expected, "found", found)
+        return 1
+    print(f"self-test: {len(found)} planted violations found, the allowed include passes")
+    return 0
+
+
+def main():
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
+    lib = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2] / "lib"
+    found = violations(lib)
+    for line in found:
+        print(line)
+    if not found:
+        print(f"layers: every include under {lib} stays in its layer")
+    return 1 if found else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
