@@ -157,9 +157,23 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--stop-on-failure", action="store_true",
                     help="stop a mutant's ctest at its first failing test (faster; lists one killer)")
+    ap.add_argument("--check-patches", action="store_true",
+                    help="only check that every mutant applies to this tree (patch --dry-run), then exit")
     a = ap.parse_args()
 
     rows, equivalent = read_index()
+    if a.check_patches:
+        stale = []
+        for r in rows:
+            code, out, _ = sh(["patch", "-p1", "--dry-run", "-s", "-N", "-i",
+                               os.path.join(PATCHES, r["id"] + ".patch")], cwd=ROOT)
+            if code != 0:
+                why = [l for l in out.splitlines() if "FAILED" in l or "can't find" in l]
+                stale.append("%s: does not apply (%s)" % (r["id"], why[0].strip() if why else "patch --dry-run failed"))
+        for line in stale:
+            print("stale mutant " + line)
+        print("%d of %d mutants apply to %s" % (len(rows) - len(stale), len(rows), ROOT))
+        sys.exit(1 if stale else 0)
     by_id = {r["id"]: r for r in rows}
     chosen = list(SMOKE) if a.smoke else ([s for s in a.only.split(",") if s] or [r["id"] for r in rows])
     for c in chosen:
