@@ -324,32 +324,17 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
 // the decimal γ as written and the waveform at 60 digits or more, so that every number type gives
 // the same decision (a sampled sine at γ = −1 has a contact or not by the 17th digit of its mean,
 // which double rounds away). γ that is not a decimal is left to the typed path's message.
-// max w at the current mpfr precision: 1 for the catalogue; for samples (hi − mean)/scale from the
-// decimals, streamed (a 10-million-sample file is not built at 60 digits), at the digits the
-// offset cancels on top; for Fourier the waveform's own maximum.
+// max w at the current mpfr precision: 1 for the catalogue; for samples (hi − mean)/scale by the
+// normalisation the wave itself gets (normalise_samples, streamed: a 10-million-sample file is not
+// built at 60 digits); for Fourier the waveform's own maximum.
 inline mpfr exact_maximum(const WaveSpec& spec) {
   if (spec.kind == WaveKind::fourier) return make_waveform<mpfr>(spec)->maximum();
   if (spec.kind != WaveKind::samples) return mpfr(1);
-  const std::size_t n = spec.samples.size();
-  for (int extra = 0;; extra += 40) {
-    PrecisionScope scope(static_cast<unsigned>(working_digits10<mpfr>() + extra));
-    const auto phase = [&](std::size_t j) {
-      if (j == n) return mpfr(1);
-      const mpfr t0(spec.times.front());
-      return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
-    };
-    mpfr sum = 0, lo(spec.samples[0]), hi = lo;
-    for (std::size_t j = 0; j < n; ++j) {
-      const mpfr v(spec.samples[j]);
-      sum += spec.times.empty() ? v : mpfr(v * (phase(j + 1) - (j ? phase(j - 1) : mpfr(phase(n - 1) - 1))) / 2);
-      lo = v < lo ? v : lo;
-      hi = v > hi ? v : hi;
-    }
-    if (!(hi > lo)) return mpfr(1);  // constant: the typed path names it
-    const mpfr mean = spec.times.empty() ? mpfr(sum / n) : sum;
-    const mpfr big = abs(lo) > abs(hi) ? mpfr(abs(lo)) : mpfr(abs(hi));
-    if (extra >= 400 || log10(2 * big / (hi - lo)) < extra + 20) return mpfr((hi - mean) / ((hi - lo) / 2));
-  }
+  const SampleNormalisation nz =
+      normalise_samples(spec.name, spec.samples.size(), [&](std::size_t j) { return detail::sample_value(spec, j); },
+                        detail::distinct_digits(spec), detail::sample_phase(spec), working_digits10<mpfr>());
+  PrecisionScope scope(nz.digits);
+  return mpfr((nz.hi - nz.mean) / nz.scale);
 }
 
 // The contact check of one worker, point by point, its state kept for the whole stream: γ checked
