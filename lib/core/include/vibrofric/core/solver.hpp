@@ -478,7 +478,7 @@ class Sweep {
   // enter only through where a ramp is anchored (open_stick). Bound of one evaluation of n = γ + w:
   Real value_bound() const {
     using std::abs;
-    return abs(gamma_) + w_.maximum() - w_.minimum();
+    return abs(gamma_) + w_.maximum() - w_.minimum() + w_.value_error();
   }
 
   // ∫ n over [p, q] of segment g, exact or by quadrature; adds its rounding bound to `err`.
@@ -488,7 +488,8 @@ class Sweep {
     err += (q - p) * value_bound();
     if (method_ == AreaMethod::exact) {
       const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
-      err += abs(wq) + abs(wp) + abs(gamma_) * (q - p);
+      err += abs(wq) + abs(wp) + w_.antiderivative_error(g.piece, q) + w_.antiderivative_error(g.piece, p) +
+             abs(gamma_) * (q - p);
       return gamma_ * (q - p) + (wq - wp);
     }
     return quad([&](const Real& x) -> Real { return n(g, x); }, p, q, err);

@@ -144,8 +144,28 @@ class FourierSeries final : public Waveform<Real> {
     for (const Real& x : all)
       if (x - begins.back() > gap && 1 - x > gap) begins.push_back(x);
     this->set_pieces(std::move(begins));
+
+    // Rounding of one evaluation (derivative()): K products and sums, and cos/sin of 2πkφ by the
+    // recurrence, whose angle carries about k·(2π + 4) eps: E = Σ_k (|a_k| + |b_k|)(K + 4 + (2π + 4)k).
+    // The wave in this type: coefficients rounded once (Σ(|a_k| + |b_k|)) and divided by a scale
+    // read from extrema computed with error E, which scales w by up to E relative (E·max|w|).
+    using std::abs;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    Real eval = 0, sum = 0, integral = 0;
+    for (unsigned j = 1; j <= max_k_; ++j) {
+      const Real c = abs(a_[j]) + abs(b_[j]);
+      const Real per = c * (max_k_ + 4 + (two_pi + 4) * j);
+      sum += c;
+      eval += per;
+      integral += per / (two_pi * j);
+    }
+    const Real top = std::max(Real(abs(this->maximum())), Real(abs(this->minimum())));
+    value_error_ = eval * (1 + top) + sum;
+    antiderivative_error_ = integral * (1 + top) + sum;
   }
 
+  Real value_error() const override { return value_error_; }
+  Real antiderivative_error(std::size_t, const Real&) const override { return antiderivative_error_; }
   Real value(std::size_t, const Real& phi) const override { return derivative(phi, 0); }
   Real slope(std::size_t, const Real& phi) const override { return derivative(phi, 1); }
   bool has_antiderivative() const override { return true; }
@@ -237,6 +257,7 @@ class FourierSeries final : public Waveform<Real> {
 
   std::vector<Real> a_, b_;
   unsigned max_k_ = 0;
+  Real value_error_ = 0, antiderivative_error_ = 0;
 };
 
 // The normalisation of samples y_0 … y_{N−1} (model.md, "Waveform catalogue": user waves are
@@ -333,7 +354,20 @@ std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t 
   struct Sampled final : PiecewiseLinear<Real> {
     Sampled(std::string nm, std::vector<P> p, Normalisation<Real> nz) : PiecewiseLinear<Real>(std::move(nm), std::move(p)) {
       this->norm_ = nz;
+      // Every phase φ_j, value w_j and slope rounded once to the type: a vertex moves by up to
+      // eps·φ_j ≤ eps in phase, which on a steep piece is |slope|·eps in value; plus eps·|w_j|,
+      // and the slope's own rounding over a piece, eps·|Δw| ≤ 2 eps; the evaluation's
+      // subtraction φ − φ_j adds eps·|Δw| again.
+      using std::abs;
+      Real steep = 0, top = 0;
+      for (std::size_t i = 0; i < this->piece_count(); ++i) {
+        steep = std::max(steep, Real(abs(this->begin_slope(i))));
+        top = std::max(top, Real(abs(this->begin_value(i))));
+      }
+      value_error_ = steep + top + 4;
     }
+    Real value_error() const override { return value_error_; }
+    Real value_error_ = 0;
   };
   return std::make_unique<Sampled>(std::move(name), std::move(pieces), norm);
 }

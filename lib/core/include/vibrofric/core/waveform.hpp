@@ -118,6 +118,16 @@ class Waveform {
   // Why the current working precision cannot resolve this waveform ("" if it can): the solver's
   // rounding bounds take n' as nearly constant over a phase's rounding error.
   virtual std::string unresolved() const { return {}; }
+  // Errors of the wave in this type beyond the solver's own allowances (solver.hpp: eps times
+  // |γ| + max − min per value, eps·|W| per antiderivative value W), in units of eps: a bound on
+  // |value(i, φ) − w(φ)| at every φ, where w is the exact wave the input defines, and on the
+  // rounding of antiderivative(i, φ). They cover the wave's representation (coefficients,
+  // normalisation, sample phases rounded to the type) and evaluations whose rounding is not
+  // proportional to the result (a sum of harmonics; an antiderivative that cancels within its
+  // piece). Near the contact edge the normal area is small and these errors dominate its
+  // relative error (tests/robustness/test_stress.cpp found both).
+  virtual Real value_error() const { return Real(0); }
+  virtual Real antiderivative_error(std::size_t, const Real&) const { return Real(0); }
 
   // One-sided values and slopes at the piece ends, computed once.
   const Real& begin_value(std::size_t i) const { return begin_value_[i]; }
@@ -345,6 +355,14 @@ class PiecewiseLinear : public Waveform<Real> {
     const Piece& p = pieces_[i];
     const Real d = phi - p.begin;
     return d * (p.anchor + p.slope * d / 2);
+  }
+  // d, the product, the sum and the outer product each round once: the error is eps times
+  // 3|d|(|anchor| + |slope·d|), which exceeds eps·|W| where anchor and slope·d/2 cancel.
+  Real antiderivative_error(std::size_t i, const Real& phi) const override {
+    using std::abs;
+    const Piece& p = pieces_[i];
+    const Real d = abs(Real(phi - p.begin));
+    return 3 * d * (abs(p.anchor) + abs(p.slope) * d);
   }
   std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
     const Piece& p = pieces_[i];
