@@ -356,13 +356,21 @@ class PiecewiseLinear : public Waveform<Real> {
     const Real d = phi - p.begin;
     return d * (p.anchor + p.slope * d / 2);
   }
-  // d, the product, the sum and the outer product each round once: the error is eps times
-  // 3|d|(|anchor| + |slope·d|), which exceeds eps·|W| where anchor and slope·d/2 cancel.
+  // d = φ − begin, slope·d, the sum and the outer product each round once (first order):
+  // W̃ = W + slope·d²(δ1 + δ2)/2 + W(δ1 + δ3 + δ4). δ1 = 0 where Sterbenz's lemma makes the
+  // subtraction exact (begin = 0, or begin/2 ≤ φ ≤ 2·begin), δ2 = 0 where slope is a power of two
+  // and d is exact (the catalogue's ±4, ±2). Where anchor and slope·d/2 cancel this exceeds the
+  // solver's eps·|W| by far (samples next to a steep piece).
   Real antiderivative_error(std::size_t i, const Real& phi) const override {
     using std::abs;
+    using std::frexp;
     const Piece& p = pieces_[i];
-    const Real d = abs(Real(phi - p.begin));
-    return 3 * d * (abs(p.anchor) + abs(p.slope) * d);
+    const Real d = phi - p.begin;
+    const bool d_exact = p.begin == 0 || (p.begin > 0 && phi >= p.begin / 2 && phi <= 2 * p.begin);
+    int e = 0;
+    const bool product_exact = d_exact && (p.slope == 0 || abs(Real(frexp(p.slope, &e))) == Real(0.5));
+    const int rounded = (d_exact ? 0 : 1) + (product_exact ? 0 : 1);
+    return abs(p.slope) * d * d * rounded / 2 + abs(Real(d * (p.anchor + p.slope * d / 2))) * (d_exact ? 1 : 2);
   }
   std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
     const Piece& p = pieces_[i];
