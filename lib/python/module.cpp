@@ -385,9 +385,9 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   options.threads = e.threads;
   options.escalate = e.escalate;
   if (e.max_iterations) {
-    if (*e.max_iterations < 1 || *e.max_iterations > max_root_iterations)
+    if (*e.max_iterations < 1 || *e.max_iterations > root_iterations_limit)
       throw InputError("max_iterations = " + std::to_string(*e.max_iterations) + ": expected 1 to " +
-                       std::to_string(max_root_iterations));
+                       std::to_string(root_iterations_limit));
     options.solver.max_root_iterations = static_cast<std::uintmax_t>(*e.max_iterations);
   }
 
@@ -488,8 +488,8 @@ BatchOptions solver_controls(const py::object& max_iterations, bool escalate) {
   BatchOptions options;
   options.escalate = escalate;
   if (const auto mi = optional_int(max_iterations, "max_iterations")) {
-    if (*mi < 1 || *mi > max_root_iterations)
-      throw InputError("max_iterations = " + std::to_string(*mi) + ": expected 1 to " + std::to_string(max_root_iterations));
+    if (*mi < 1 || *mi > root_iterations_limit)
+      throw InputError("max_iterations = " + std::to_string(*mi) + ": expected 1 to " + std::to_string(root_iterations_limit));
     options.solver.max_root_iterations = static_cast<std::uintmax_t>(*mi);
   }
   return options;

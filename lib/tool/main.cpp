@@ -36,7 +36,7 @@ namespace {
 using namespace vibrofric;
 
 // The help texts quote the limits of limits.hpp as literals.
-static_assert(max_digits == 10000 && max_root_iterations == 100000 && max_trace_points == 1000000 &&
+static_assert(max_digits == 10000 && root_iterations_limit == 100000 && max_trace_points == 1000000 &&
                   min_trace_points == 2 && max_fit_harmonics == 10000,
               "update the help texts below");
 
@@ -406,7 +406,7 @@ Options parse_solver_options(const Args& a) {
       throw InputError("--area '" + detail::visible(m) + "': expected auto, exact or quadrature");
   }
   if (a.flags.count("max-iterations"))
-    o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, max_root_iterations));
+    o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, root_iterations_limit));
   if (a.flags.count("max-levels"))
     o.max_quadrature_levels = static_cast<std::size_t>(parse_int(a.flags.at("max-levels"), "--max-levels", 4, 30));
   if (a.flags.count("quadrature-tolerance")) {

@@ -6,7 +6,7 @@ namespace vibrofric {
 
 inline constexpr int min_digits = 1;      // significant digits of an mpfr request
 inline constexpr int max_digits = 10000;
-inline constexpr int max_root_iterations = 100000;  // the solver's root budget per event, if set
+inline constexpr int root_iterations_limit = 100000;  // the largest Options::max_root_iterations a caller may set
 inline constexpr int min_trace_points = 2;          // trace: N + 1 phases
 inline constexpr int max_trace_points = 1000000;
 inline constexpr int max_range_points = 1000000;    // sweep ranges FROM:TO:N

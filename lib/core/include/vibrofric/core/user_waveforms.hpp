@@ -359,12 +359,9 @@ std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t 
       // and the slope's own rounding over a piece, eps·|Δw| ≤ 2 eps; the evaluation's
       // subtraction φ − φ_j adds eps·|Δw| again.
       using std::abs;
-      Real steep = 0, top = 0;
-      for (std::size_t i = 0; i < this->piece_count(); ++i) {
-        steep = std::max(steep, Real(abs(this->begin_slope(i))));
-        top = std::max(top, Real(abs(this->begin_value(i))));
-      }
-      value_error_ = steep + top + 4;
+      Real steep = 0;
+      for (std::size_t i = 0; i < this->piece_count(); ++i) steep = std::max(steep, Real(abs(this->begin_slope(i))));
+      value_error_ = steep + std::max(Real(abs(this->maximum())), Real(abs(this->minimum()))) + 4;
     }
     Real value_error() const override { return value_error_; }
     Real value_error_ = 0;
