@@ -45,7 +45,7 @@ RESULTS = os.path.join(HERE, "results")
 # run builds one small program instead of the library (it runs inside the CI's 30 minutes).
 SMOKE = ["m18-root-tolerance-half", "m45-polished-root-sign-unchecked"]
 SMOKE_TARGETS = ["test_roots"]
-SMOKE_TESTS = "^Roots/"
+SMOKE_TESTS = "^Roots\\."
 
 # Stage 1 of a mutant: the library, the tool and the core test programs, and their tests (a third
 # of the build). Most mutants die here; one that survives is built in full and put through the
@@ -224,6 +224,8 @@ def main():
     if code != 0:
         fail("the unmutated tree fails its tests: %s (see %s)" % (", ".join(failed_tests(build)), log))
     base_times = test_times(out)
+    if not base_times:
+        fail("the selection runs no tests (see %s)" % log)
     timeout = max(120, int(5 * max(base_times.values() or [60])))
     print("baseline: build %.0f s, %d tests pass in %.0f s; per-test timeout %d s" %
           (t_build, len(base_times), t_test, timeout), flush=True)
