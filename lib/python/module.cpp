@@ -518,14 +518,14 @@ bool is_decimal(const std::string& s) {
   }
 }
 
-// `physical` (commands.hpp): the tool's inputs by flag name, as decimal texts of the Python values;
-// the tool's outputs by name, shape a string and the rest in the Form of the precision.
-py::dict physical_dict(const WaveSpec& wave, const std::map<std::string, std::string>& inputs,
-                       const Precision& precision, const BatchOptions& options, bool strings) {
+// `physical` (commands.hpp): the inputs as decimal texts of the Python values, named by their
+// keywords; the outputs by name, shape a string and the rest in the Form of the precision.
+py::dict physical_dict(const WaveSpec& wave, const PhysicalRequest& request, const Precision& precision,
+                       const BatchOptions& options, bool strings) {
   PhysicalOutputs record;
   {
     py::gil_scoped_release release;
-    record = physical_point(wave, inputs, precision, options);
+    record = physical_point(wave, request, precision, options);
   }
   const Converter convert(result_form(precision, strings), precision);
   py::dict d;
@@ -632,7 +632,7 @@ gamma, u_mean_m (given F_N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, beta_c (in
 beta), contact_fraction and stick_fraction (flat). Values as float (type None/'double': the
 nearest double of the tool's --type double text), numpy.longdouble, or for digits=D mpmath.mpf /
 decimal strings equal to `vibrofric physical --digits D --format json`; strings=True gives the
-tool's strings for every type. ValueError with the library's message (naming the input as --NAME).
+tool's strings for every type. ValueError with the library's message (naming the input by its keyword).
 )doc";
 
 constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False) -> (phi, n, s)
@@ -845,18 +845,19 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
         const BatchOptions options = solver_controls(max_iterations, escalate);
         if (!py::isinstance<py::str>(shape))
           throw py::type_error("shape = " + py_repr(shape) + ": expected 'flat', 'sphere', 'cone', 'wearflat' or 'profile:FILE'");
-        // The tool's flag names (commands.hpp), Python's argument names.
-        const std::vector<std::tuple<const char*, const char*, const py::object*>> given{
-            {"E1", "E1", &E1},        {"nu1", "nu1", &nu1},         {"E2", "E2", &E2},
-            {"nu2", "nu2", &nu2},     {"G1", "G1", &G1},            {"G2", "G2", &G2},
-            {"v0", "v0", &v0},        {"f", "f", &f},               {"A", "A", &A},
-            {"u-mean", "u_mean", &u_mean}, {"F-N", "F_N", &F_N},    {"mu0", "mu0", &mu0},
-            {"radius", "radius", &radius}, {"R", "R", &R},          {"half-angle", "half_angle", &half_angle},
-            {"flat-radius", "flat_radius", &flat_radius}};
-        std::map<std::string, std::string> inputs{{"shape", shape.cast<std::string>()}};
-        for (const auto& [flag, name, value] : given)
-          if (!value->is_none()) inputs[flag] = scalar_text(*value, name);
-        return physical_dict(w, inputs, precision, options, strings);
+        // The keywords are the request's member names, which its messages use.
+        PhysicalRequest request;
+        request.shape.text = shape.cast<std::string>();
+        const std::map<std::string, const py::object*> given{
+            {"E1", &E1},   {"nu1", &nu1},       {"E2", &E2},   {"nu2", &nu2},   {"G1", &G1},
+            {"G2", &G2},   {"v0", &v0},         {"f", &f},     {"A", &A},       {"u_mean", &u_mean},
+            {"F_N", &F_N}, {"mu0", &mu0},       {"radius", &radius}, {"R", &R}, {"half_angle", &half_angle},
+            {"flat_radius", &flat_radius}};
+        for (auto& [member, input] : request.inputs()) {
+          const auto it = given.find(member);
+          if (it != given.end() && !it->second->is_none()) input->text = scalar_text(*it->second, member);
+        }
+        return physical_dict(w, request, precision, options, strings);
       },
       "wave"_a, py::kw_only(), "E1"_a, "nu1"_a, "E2"_a, "nu2"_a, "v0"_a, "f"_a, "A"_a, "mu0"_a,
       "u_mean"_a = py::none(), "F_N"_a = py::none(), "G1"_a = py::none(), "G2"_a = py::none(), "shape"_a = "flat",

@@ -607,16 +607,19 @@ int run_sweep(const Args& a) {
   return 0;
 }
 
-// `physical`'s inputs as typed, by flag name (commands.hpp), and its controls.
+// `physical`'s inputs as typed, each named by its flag (the input u_mean is --u-mean), and its controls.
 PhysicalOutputs physical_record(const Args& a, const WaveSpec& wave) {
   BatchOptions options;
   options.escalate = !switch_on(a, "no-escalate");
   options.solver = parse_solver_options(a);
-  std::map<std::string, std::string> inputs;
-  for (const char* name : {"E1", "nu1", "E2", "nu2", "G1", "G2", "v0", "f", "A", "u-mean", "F-N", "mu0", "shape", "radius",
-                           "R", "half-angle", "flat-radius"})
-    if (a.flags.count(name)) inputs[name] = a.flags.at(name);
-  return physical_point(wave, inputs, parse_precision(a), options);
+  PhysicalRequest request;
+  for (auto& [member, input] : request.inputs()) {
+    std::string flag = member;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    input->name = "--" + flag;
+    if (a.flags.count(flag)) input->text = a.flags.at(flag);
+  }
+  return physical_point(wave, request, parse_precision(a), options);
 }
 
 // Names and values of output records, for CSV and JSON.

@@ -136,6 +136,7 @@ def raises(names, **kw):
         vibrofric.physical("sine", **kw)
     msg = str(info.value)
     assert "\n" not in msg and msg
+    assert "--" not in msg, msg  # named by the keywords, not by the tool's flags
     for n in names:
         assert n in msg, (n, msg)
     return msg
@@ -143,12 +144,14 @@ def raises(names, **kw):
 
 def test_bad_inputs():
     inputs = dict(BASE, radius=1e-3)
-    raises(("u-mean", "F-N", "missing"), **inputs)
-    raises(("u-mean", "F-N", "both"), u_mean=1e-7, F_N=3, **inputs)
-    raises(("E1", "-1", "> 0"), **dict(inputs, E1=-1.0, u_mean=1e-7))
+    raises(("missing u_mean", "F_N"), **inputs)
+    raises(("u_mean and F_N both",), u_mean=1e-7, F_N=3, **inputs)
+    raises(("E1 = -1", "> 0"), **dict(inputs, E1=-1.0, u_mean=1e-7))
     raises(("nu2", "0.7"), **dict(inputs, nu2=0.7, u_mean=1e-7))
-    raises(("radius", "missing"), **dict(BASE, u_mean=1e-7))  # the punch needs its radius
-    raises(("radius", "sphere"), **dict(BASE, shape="sphere", radius=1e-3, R=0.01, u_mean=1e-7))
+    raises(("missing radius",), **dict(BASE, u_mean=1e-7))  # the punch needs its radius
+    raises(("radius does not apply to shape sphere",), **dict(BASE, shape="sphere", radius=1e-3, R=0.01, u_mean=1e-7))
+    raises(("half_angle = 95", "degrees"), **dict(BASE, shape="cone", half_angle=95, u_mean=1e-7))
+    raises(("u_mean = -2e-06 with A = ", "no contact"), **dict(inputs, u_mean=-2e-6))
     raises(("ball",), **dict(inputs, shape="ball", u_mean=1e-7))
     raises(("gamma",), **dict(inputs, u_mean=-2e-6))  # no contact: gamma = -2
     raises(("v0", "nan"), **dict(inputs, v0=float("nan"), u_mean=1e-7))

@@ -60,7 +60,7 @@ TYPED_TEST(Roots, PolishedRootIsWithinFourUlpOfTheClosedForm) {
   auto cubic = [](const Real& x) { return Real(x * x * x - x - 1); };
   auto slope = [](const Real& x) { return Real(3 * x * x - 1); };
   // From a guess good to two digits, as from a lower type, and from none (the midpoint).
-  for (const Real guess : {Real(33) / 25, Real(0)}) {
+  for (const Real& guess : {Real(33) / 25, Real(0)}) {
     const Real x = polished_root<Real>(cubic, slope, Real(1), Real(2), Real(-1), Real(5), guess, Real(0), "plastic",
                                        stats);
     EXPECT_LE(ulp_distance(x, plastic()), 4) << "guess " << guess << ": " << x;

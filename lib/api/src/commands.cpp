@@ -13,51 +13,62 @@
 
 namespace vibrofric {
 
-PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string, std::string>& inputs,
-                               const Precision& prec, const BatchOptions& base) {
-  const auto need = [&](const char* name) -> const std::string& {
-    const auto it = inputs.find(name);
-    if (it == inputs.end()) throw InputError(std::string("missing --") + name + " for 'physical'");
-    return it->second;
-  };
+std::vector<std::pair<const char*, PhysicalInputText*>> PhysicalRequest::inputs() {
+  return {{"E1", &E1},         {"nu1", &nu1},        {"E2", &E2},   {"nu2", &nu2},
+          {"G1", &G1},         {"G2", &G2},          {"v0", &v0},   {"f", &f},
+          {"A", &A},           {"u_mean", &u_mean},  {"F_N", &F_N}, {"mu0", &mu0},
+          {"shape", &shape},   {"radius", &radius},  {"R", &R},     {"half_angle", &half_angle},
+          {"flat_radius", &flat_radius}};
+}
+
+PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
+                               const BatchOptions& base) {
+  using Input = PhysicalInputText;
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
-  auto get = [&](const char* name) { return parse_real<mpfr>(need(name), std::string("--") + name); };
-  auto opt = [&](const char* name) {
-    return inputs.count(name) ? parse_real<mpfr>(inputs.at(name), std::string("--") + name) : mpfr(0);
+  const auto text = [](const Input& in) -> const std::string& {
+    if (!in.given()) throw InputError("missing " + in.name + " for 'physical'");
+    return *in.text;
   };
-  auto positive = [&](const char* name) {
-    const mpfr v = get(name);
-    if (!(v > 0)) throw InputError(std::string("--") + name + " = " + inputs.at(name) + ": expected a value > 0");
+  const auto get = [&](const Input& in) { return parse_real<mpfr>(text(in), in.name); };
+  const auto opt = [&](const Input& in) { return in.given() ? parse_real<mpfr>(*in.text, in.name) : mpfr(0); };
+  const auto positive = [&](const Input& in) {
+    const mpfr v = get(in);
+    if (!(v > 0)) throw InputError(in.name + " = " + *in.text + ": expected a value > 0");
     return v;
   };
-  // The indenter (model.md MDR): which geometry flags it takes, its profile and length unit L.
-  const std::string shape = inputs.count("shape") ? inputs.at("shape") : "flat";
-  const std::map<std::string, std::set<std::string>> geometry{
-      {"flat", {"radius"}}, {"sphere", {"R"}}, {"cone", {"half-angle"}}, {"wearflat", {"R", "flat-radius"}}, {"profile", {}}};
+  // The indenter (model.md MDR): which geometry inputs it takes, its profile and length unit L.
+  const std::string shape = r.shape.given() ? *r.shape.text : "flat";
   const std::string kind = shape.rfind("profile:", 0) == 0 ? "profile" : shape;
+  const std::map<std::string, std::set<const Input*>> geometry{{"flat", {&r.radius}},
+                                                               {"sphere", {&r.R}},
+                                                               {"cone", {&r.half_angle}},
+                                                               {"wearflat", {&r.R, &r.flat_radius}},
+                                                               {"profile", {}}};
   if (!geometry.count(kind))
-    throw InputError("--shape '" + detail::visible(shape) + "': expected flat, sphere, cone, wearflat or profile:FILE");
-  for (const char* g : {"radius", "R", "half-angle", "flat-radius"})
-    if (inputs.count(g) && !geometry.at(kind).count(g))
-      throw InputError(std::string("--") + g + " does not apply to --shape " + detail::visible(shape));
-  const mpfr A = positive("A");
+    throw InputError(r.shape.name + " '" + detail::visible(shape) + "': expected flat, sphere, cone, wearflat or profile:FILE");
+  for (const Input* g : {&r.radius, &r.R, &r.half_angle, &r.flat_radius})
+    if (g->given() && !geometry.at(kind).count(g))
+      throw InputError(g->name + " does not apply to " + r.shape.name + " " + detail::visible(shape));
+  const mpfr A = positive(r.A);
   // The mean indentation, or the mean normal load an experimenter sets (then γ solves ⟨F_N⟩(γ) = F_N).
-  const bool by_load = inputs.count("F-N") > 0;
-  if (by_load && inputs.count("u-mean")) throw InputError("--u-mean and --F-N both given: expected one of them");
-  if (!by_load && !inputs.count("u-mean")) throw InputError("missing --u-mean (mean indentation) or --F-N (mean normal load) for 'physical'");
+  const bool by_load = r.F_N.given();
+  if (by_load && r.u_mean.given())
+    throw InputError(r.u_mean.name + " and " + r.F_N.name + " both given: expected one of them");
+  if (!by_load && !r.u_mean.given())
+    throw InputError("missing " + r.u_mean.name + " (mean indentation) or " + r.F_N.name +
+                     " (mean normal load) for 'physical'");
   // Checked here with the values as typed (physical_groups checks them again, for library users).
-  auto poisson = [&](const char* name) {
-    const mpfr v = get(name);
-    if (!(v > -1 && v <= mpfr("0.5")))
-      throw InputError(std::string("--") + name + " = " + inputs.at(name) + ": expected -1 < nu <= 0.5");
+  const auto poisson = [&](const Input& in) {
+    const mpfr v = get(in);
+    if (!(v > -1 && v <= mpfr("0.5"))) throw InputError(in.name + " = " + *in.text + ": expected -1 < nu <= 0.5");
     return v;
   };
-  PhysicalInput<mpfr> in{positive("E1"), poisson("nu1"), positive("E2"), poisson("nu2"), opt("G1"), opt("G2"),
-                         kind == "flat" ? positive("radius") : mpfr(0), positive("v0"), positive("f"), A,
-                         by_load ? mpfr(0) : get("u-mean"), positive("mu0")};
-  if (inputs.count("G1") && !(in.G1 > 0)) throw InputError("--G1 = " + inputs.at("G1") + ": expected a value > 0");
-  if (inputs.count("G2") && !(in.G2 > 0)) throw InputError("--G2 = " + inputs.at("G2") + ": expected a value > 0");
+  PhysicalInput<mpfr> in{positive(r.E1), poisson(r.nu1), positive(r.E2), poisson(r.nu2), opt(r.G1), opt(r.G2),
+                         kind == "flat" ? positive(r.radius) : mpfr(0), positive(r.v0), positive(r.f), A,
+                         by_load ? mpfr(0) : get(r.u_mean), positive(r.mu0)};
+  for (const Input* G : {&r.G1, &r.G2})
+    if (G->given() && !(opt(*G) > 0)) throw InputError(G->name + " = " + *G->text + ": expected a value > 0");
   auto g = physical_groups(in);
   BatchOptions options = base;
   options.profile = ProfileSpec{};
@@ -65,20 +76,20 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string,
   std::string lambda;
   if (kind == "sphere") {
     options.profile = parse_profile("sphere");
-    length = sphere_length(positive("R"), A);
+    length = sphere_length(positive(r.R), A);
   } else if (kind == "cone") {
-    const mpfr theta = positive("half-angle");
-    if (!(theta < 90)) throw InputError("--half-angle = " + inputs.at("half-angle") + ": expected degrees in (0, 90)");
+    const mpfr theta = positive(r.half_angle);
+    if (!(theta < 90)) throw InputError(r.half_angle.name + " = " + *r.half_angle.text + ": expected degrees in (0, 90)");
     options.profile = parse_profile("cone");
     length = cone_length(theta, A);
   } else if (kind == "wearflat") {
-    const mpfr R = positive("R"), b = positive("flat-radius");
+    const mpfr R = positive(r.R), b = positive(r.flat_radius);
     lambda = format_significant(mpfr(b * b / (R * A)), digits + 15);
     options.profile = parse_profile("wearflat:" + lambda);
     length = b;
   } else if (kind == "profile") {
     options.profile = parse_profile(shape);
-    options.profile.height_unit = inputs.at("A");  // heights in metres, the library's in units of A
+    options.profile.height_unit = *r.A.text;  // heights in metres, the library's in units of A
   }
   // ⟨F_N⟩(γ) = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope: N does
   // not depend on β. Also the largest contact radius (curved) in units of L.
@@ -86,7 +97,8 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string,
   const auto p = kind == "flat" ? nullptr : make_profile<mpfr>(options.profile);
   // Contact needs gamma + max w > 0 (Eq. 14: u_mean > -A max w), said in the inputs' own terms.
   if (!by_load && !(g.gamma + w->maximum() > 0))
-    throw DomainError("--u-mean = " + inputs.at("u-mean") + " with --A = " + inputs.at("A") + " gives no contact for wave " +
+    throw DomainError(r.u_mean.name + " = " + *r.u_mean.text + " with " + r.A.name + " = " + *r.A.text +
+                      " gives no contact for wave " +
                       wave.name + ": expected u_mean > -A max w = " + format_significant(mpfr(-A * w->maximum()), 6) +
                       " m (gamma = u_mean/A > " + format_significant(mpfr(-w->maximum()), 6) + ")");
   auto load = [&](const mpfr& gam, mpfr* edge_out) {
@@ -102,11 +114,11 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string,
     return kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
   };
   if (by_load) {
-    const mpfr F_N = positive("F-N");
+    const mpfr F_N = positive(r.F_N);
     // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
     mpfr lo = -w->maximum(), hi = lo + 1;
     for (int k = 0; load(hi, nullptr) < F_N; ++k) {
-      if (k == 200) throw InputError("--F-N = " + inputs.at("F-N") + ": expected a load the contact can carry");
+      if (k == 200) throw InputError(r.F_N.name + " = " + *r.F_N.text + ": expected a load the contact can carry");
       lo = hi;
       hi = lo + pow(mpfr(2), k + 1);
     }
@@ -114,7 +126,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string,
     const auto bracket = boost::math::tools::toms748_solve(
         [&](const mpfr& gam) { return mpfr(load(gam, nullptr) - F_N); }, lo, hi,
         boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
-    if (iterations >= 400) throw SolverError("--F-N = " + inputs.at("F-N") + ": the mean indentation did not converge");
+    if (iterations >= 400) throw SolverError(r.F_N.name + " = " + *r.F_N.text + ": the mean indentation did not converge");
     g.gamma = (bracket.first + bracket.second) / 2;
   }
   const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);

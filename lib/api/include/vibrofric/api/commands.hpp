@@ -3,7 +3,7 @@
 // and `trace`, n(φ) and s(φ) over one period (Fig. 2).
 #pragma once
 #include <array>
-#include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,13 +19,33 @@ namespace vibrofric {
 // contact_fraction and stick_fraction.
 using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
 
-// `inputs` by the tool's flag names, values as typed: E1, nu1, E2, nu2, G1, G2 (optional), v0, f,
-// A (zero-to-peak), u-mean or F-N (the mean normal load, γ then solves ⟨F_N⟩(γ) = F_N), mu0,
-// shape (flat | sphere | cone | wearflat | profile:FILE, default flat) and its geometry: radius,
-// R, half-angle (degrees), flat-radius. `options` gives the solver controls and escalation (its
-// profile is set from the shape). InputError names the input as --NAME.
-PhysicalOutputs physical_point(const WaveSpec& wave, const std::map<std::string, std::string>& inputs,
-                               const Precision& precision, const BatchOptions& options = {});
+// One input of `physical`: its value as decimal text, as typed (none: not given), and the name
+// the caller knows it by, which every message about it uses (the tool's "--E1", Python's "E1").
+struct PhysicalInputText {
+  std::optional<std::string> text;
+  std::string name;
+  bool given() const { return text.has_value(); }
+};
+
+// The inputs of `physical` in SI units: E1, nu1, E2, nu2, G1 and G2 (optional: by default
+// E/(2(1+nu))), v0, f, A (zero-to-peak), u_mean or F_N (the mean normal load; γ then solves
+// ⟨F_N⟩(γ) = F_N), mu0; shape (flat | sphere | cone | wearflat | profile:FILE, default flat) and
+// its geometry: radius (flat), R (sphere, wearflat), half_angle (cone, degrees), flat_radius
+// (wearflat). Each is named by its member's name until the caller renames it.
+struct PhysicalRequest {
+  PhysicalInputText E1{{}, "E1"}, nu1{{}, "nu1"}, E2{{}, "E2"}, nu2{{}, "nu2"}, G1{{}, "G1"}, G2{{}, "G2"};
+  PhysicalInputText v0{{}, "v0"}, f{{}, "f"}, A{{}, "A"}, u_mean{{}, "u_mean"}, F_N{{}, "F_N"}, mu0{{}, "mu0"};
+  PhysicalInputText shape{{}, "shape"}, radius{{}, "radius"}, R{{}, "R"}, half_angle{{}, "half_angle"};
+  PhysicalInputText flat_radius{{}, "flat_radius"};
+
+  // Every input with its member's name, in this order, for a front end that fills them by name.
+  std::vector<std::pair<const char*, PhysicalInputText*>> inputs();
+};
+
+// `physical` at one point (Eqs. 1, 5, 14; MDR for the curved shapes). `options` gives the solver
+// controls and escalation (its profile is set from the shape).
+PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& request, const Precision& precision,
+                               const BatchOptions& options = {});
 
 // Rows (φ, n, s) over one period, φ ascending: `points` + 1 equally spaced phases, both ends of
 // every stick phase and the contact boundaries (where n = s = 0 exactly), `digits` significant
