@@ -95,3 +95,38 @@ def test_profile_keeps_the_triangle_closed_form():
     r = [0, 1, 2, 3, 4]
     f = [0, 0.25, 1.0, 2.25, 4.0]
     assert vibrofric.mu("triangle", 1.5, 0.2, profile=vibrofric.profile(r, f)) == nearest_double(mu_triangle(1.5, 0.2))
+
+
+def file_message_as_array(message, path, label, header_lines):
+    """The message a file reader gives, in an array's terms: 'samples:PATH' and PATH become the
+    label, PATH:LINE becomes label[j] with j = LINE - 1 - header_lines (the array index)."""
+    import re
+    message = re.sub(re.escape(path) + r":(\d+)", lambda m: "%s[%d]" % (label, int(m.group(1)) - 1 - header_lines), message)
+    for prefix in ("samples:", "fourier:", "profile:"):
+        message = message.replace(prefix + path, label)
+    return message.replace(path, label)
+
+
+@pytest.mark.parametrize("kind, arrays, lines, header_lines", [
+    ("samples", dict(y=[0.0, 1.0, 0.0, 1.0]), ["0", "1", "0", "1"], 0),                     # two periods
+    ("samples", dict(y=[0.0, 1.0, 2.0, 0.0]), ["0", "1", "2", "0"], 0),                     # end point repeated
+    ("samples", dict(y=[0.0, 1.0, 2.0], t=[0.0, 2.0, 1.0]), ["time,value", "0,0", "2,1", "1,2"], 1),
+    ("samples", dict(y=[0.0, 1.0, 2.0], t=[0.0, 1.0, 2.0]), ["time,value", "0,0", "1,1", "2,2"], 1),
+    ("fourier", dict(a=[0.0, 0.0], b=[0.0, 0.0]), ["1 0 0", "2 0 0"], 0),                  # no amplitude
+    ("profile", dict(r=[0.0, 1.0, 2.0], f=[0.0, 1.0, 1.5]), ["0 0", "1 1", "2 1.5"], 0),    # concave corner
+    ("profile", dict(r=[0.0, 1.0, 1.0], f=[0.0, 1.0, 2.0]), ["0 0", "1 1", "1 2"], 0),      # r not increasing
+    ("profile", dict(r=[0.0, 1.0], f=[0.0, 0.0]), ["0 0", "1 0"], 0),                       # flat
+])
+def test_array_refusals_are_the_file_refusals(tmp_path, kind, arrays, lines, header_lines):
+    """An array is refused with the message of a file holding the same numbers, in its own terms
+    (the file readers' checks, detail/tables.hpp; no file is written for the array)."""
+    path = write(tmp_path / "w.txt", lines)
+    with pytest.raises(ValueError) as by_array:
+        w = getattr(vibrofric, kind)(**arrays)
+        vibrofric.mu(w, 1.0, 0.5) if kind != "profile" else vibrofric.mu("sine", 1.0, 0.5, profile=w)
+    with pytest.raises(ValueError) as by_file:
+        if kind == "profile":
+            vibrofric.mu("sine", 1.0, 0.5, profile="profile:" + path)
+        else:
+            vibrofric.mu(kind + ":" + path, 1.0, 0.5)
+    assert str(by_array.value) == file_message_as_array(str(by_file.value), path, kind, header_lines)

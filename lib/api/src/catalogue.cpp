@@ -1,4 +1,6 @@
 #include "vibrofric/api/catalogue.hpp"
+
+#include "vibrofric/api/detail/tables.hpp"
 #include "vibrofric/api/limits.hpp"
 
 #include <algorithm>
@@ -20,97 +22,6 @@ namespace {
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 using detail::visible;
-
-// A user waveform file as a table (README, "File formats"): a UTF-8 byte-order mark and CR line
-// ends are dropped, '#' starts a comment, blank lines are skipped; a line with ',' or ';' has its
-// fields between them (so a header may hold spaces: 'time [s], value'), a line with tabs between
-// runs of tabs, any other line between runs of whitespace. A first line without any number is
-// the header.
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::pair<int, std::vector<std::string>>> rows;  // line number, fields
-};
-
-Table read_table(const std::string& path, const std::string& wave) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError("file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)) + " is a directory: expected a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)));
-  Table t;
-  std::string line;
-  int number = 0;
-  constexpr std::size_t max_lines = 10'000'000;
-  while (std::getline(in, line)) {
-    ++number;
-    if (static_cast<std::size_t>(number) > max_lines)
-      throw InputError("file " + quoted(visible(path)) + " has more than " + std::to_string(max_lines) + " lines: expected fewer");
-    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find('\0') != std::string::npos)
-      throw InputError("file " + quoted(visible(path)) + " line " + std::to_string(number) + " holds a NUL byte: expected text");
-    if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
-    // A line with ',' or ';' is split there (fields trimmed; an empty one is an error, except
-    // after a trailing separator); any other line at runs of whitespace.
-    std::vector<std::string> fields;
-    const auto space = [](char c) { return c == ' ' || c == '\t'; };
-    if (line.find_first_of(",;") != std::string::npos) {
-      std::size_t start = 0;
-      for (;;) {
-        const std::size_t end = line.find_first_of(",;", start);
-        std::string f = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
-        while (!f.empty() && space(f.back())) f.pop_back();
-        std::size_t lead = 0;
-        while (lead < f.size() && space(f[lead])) ++lead;
-        f.erase(0, lead);
-        // A field in double quotes (RFC 4180, as spreadsheets export headers) is its contents, a
-        // doubled quote one quote; a separator inside quotes is not supported (the columns then
-        // disagree with the header: an error, never a shifted column).
-        if (f.size() >= 2 && f.front() == '"' && f.back() == '"') {
-          std::string inner;
-          for (std::size_t k = 1; k + 1 < f.size(); ++k) {
-            inner += f[k];
-            if (f[k] == '"' && f[k + 1] == '"') ++k;
-          }
-          f = inner;
-        }
-        if (end == std::string::npos) {
-          if (!f.empty()) fields.push_back(f);
-          break;
-        }
-        if (f.empty())
-          throw InputError(path + ":" + std::to_string(number) + ": empty field before " +
-                           quoted(std::string(1, line[end])) + ": expected a value between separators");
-        fields.push_back(f);
-        start = end + 1;
-      }
-    } else if (line.find('\t') != std::string::npos) {
-      // Tab-separated (a rig's export): fields between runs of tabs, so that a header name may
-      // hold spaces ('time [s]<TAB>displacement [um]'); spaces around them trimmed.
-      std::size_t start = 0;
-      while (start < line.size()) {
-        const std::size_t end = std::min(line.find('\t', start), line.size());
-        std::string f = line.substr(start, end - start);
-        while (!f.empty() && f.back() == ' ') f.pop_back();
-        f.erase(0, std::min(f.find_first_not_of(' '), f.size()));
-        if (!f.empty()) fields.push_back(f);
-        start = end + 1;
-      }
-    } else {
-      std::istringstream ls(line);
-      for (std::string f; ls >> f;) fields.push_back(f);
-    }
-    if (fields.empty()) continue;
-    bool names = true;  // a header holds no number at all
-    for (const auto& f : fields) names = names && !is_decimal(f);
-    if (names && t.rows.empty() && t.header.empty()) {
-      t.header = fields;
-      continue;
-    }
-    t.rows.emplace_back(number, std::move(fields));
-  }
-  return t;
-}
 
 // The name of a time column, as rigs export it: "time", "t", "timestamp", with a unit in brackets
 // ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("time in ms").
@@ -181,6 +92,104 @@ std::size_t choose_column(const std::string& column, const std::vector<std::stri
 }
 
 }  // namespace
+
+std::string detail::RowSource::where(int line) const {
+  return arrays ? name + "[" + std::to_string(line - 1 - header_lines) + "]" : name + ":" + std::to_string(line);
+}
+
+detail::RowSource detail::file_source(const std::string& path, const std::string& wave) { return {path, wave, false, 0}; }
+
+detail::RowSource detail::array_source(const std::string& label, int header_lines) {
+  return {label, label, true, header_lines};
+}
+
+detail::Table detail::read_table_file(const std::string& path, const std::string& wave) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)) + " is a directory: expected a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)));
+  return read_table(in, file_source(path, wave));
+}
+
+detail::Table detail::read_table(std::istream& in, const RowSource& source) {
+  Table t;
+  std::string line;
+  int number = 0;
+  constexpr std::size_t max_lines = 10'000'000;
+  while (std::getline(in, line)) {
+    ++number;
+    if (static_cast<std::size_t>(number) > max_lines)
+      throw InputError("file " + quoted(visible(source.name)) + " has more than " + std::to_string(max_lines) +
+                       " lines: expected fewer");
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos)
+      throw InputError("file " + quoted(visible(source.name)) + " line " + std::to_string(number) +
+                       " holds a NUL byte: expected text");
+    if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
+    // A line with ',' or ';' is split there (fields trimmed; an empty one is an error, except
+    // after a trailing separator); any other line at runs of whitespace.
+    std::vector<std::string> fields;
+    const auto space = [](char c) { return c == ' ' || c == '\t'; };
+    if (line.find_first_of(",;") != std::string::npos) {
+      std::size_t start = 0;
+      for (;;) {
+        const std::size_t end = line.find_first_of(",;", start);
+        std::string f = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        while (!f.empty() && space(f.back())) f.pop_back();
+        std::size_t lead = 0;
+        while (lead < f.size() && space(f[lead])) ++lead;
+        f.erase(0, lead);
+        // A field in double quotes (RFC 4180, as spreadsheets export headers) is its contents, a
+        // doubled quote one quote; a separator inside quotes is not supported (the columns then
+        // disagree with the header: an error, never a shifted column).
+        if (f.size() >= 2 && f.front() == '"' && f.back() == '"') {
+          std::string inner;
+          for (std::size_t k = 1; k + 1 < f.size(); ++k) {
+            inner += f[k];
+            if (f[k] == '"' && f[k + 1] == '"') ++k;
+          }
+          f = inner;
+        }
+        if (end == std::string::npos) {
+          if (!f.empty()) fields.push_back(f);
+          break;
+        }
+        if (f.empty())
+          throw InputError(source.where(number) + ": empty field before " +
+                           quoted(std::string(1, line[end])) + ": expected a value between separators");
+        fields.push_back(f);
+        start = end + 1;
+      }
+    } else if (line.find('\t') != std::string::npos) {
+      // Tab-separated (a rig's export): fields between runs of tabs, so that a header name may
+      // hold spaces ('time [s]<TAB>displacement [um]'); spaces around them trimmed.
+      std::size_t start = 0;
+      while (start < line.size()) {
+        const std::size_t end = std::min(line.find('\t', start), line.size());
+        std::string f = line.substr(start, end - start);
+        while (!f.empty() && f.back() == ' ') f.pop_back();
+        f.erase(0, std::min(f.find_first_not_of(' '), f.size()));
+        if (!f.empty()) fields.push_back(f);
+        start = end + 1;
+      }
+    } else {
+      std::istringstream ls(line);
+      for (std::string f; ls >> f;) fields.push_back(f);
+    }
+    if (fields.empty()) continue;
+    bool names = true;  // a header holds no number at all
+    for (const auto& f : fields) names = names && !is_decimal(f);
+    if (names && t.rows.empty() && t.header.empty()) {
+      t.header = fields;
+      continue;
+    }
+    t.rows.emplace_back(number, std::move(fields));
+  }
+  return t;
+}
+
 
 std::string detail::visible(const std::string& s) {
   std::string out;
@@ -264,6 +273,138 @@ void check_decimal(const std::string& text, const std::string& what) {
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
 }
 
+WaveSpec detail::fourier_from_table(const Table& table, const RowSource& source) {
+  WaveSpec s;
+  s.name = source.wave;
+  s.kind = WaveKind::fourier;
+  std::set<unsigned> seen;
+  if (!table.header.empty() && table.header.size() != 3)
+    throw InputError(source.name + ": header " + quoted(visible(table.header[0])) + "… has " + std::to_string(table.header.size()) +
+                     " fields: expected three, such as 'k a_k b_k'");
+  for (const auto& [line, tok] : table.rows) {
+    const std::string where = source.where(line);
+    if (tok.size() != 3)
+      throw InputError(where + ": expected three fields 'k a_k b_k', got " + std::to_string(tok.size()));
+    if (!std::regex_match(tok[0], std::regex("[0-9]{1,6}")))
+      throw InputError(where + ": harmonic k = " + quoted(visible(tok[0])) + ": expected an integer 0 ≤ k ≤ " +
+                     std::to_string(max_harmonic_index));
+    const auto k = static_cast<unsigned>(std::stoul(tok[0]));
+    if (k > max_harmonic_index)
+      throw InputError(where + ": harmonic k = " + tok[0] + ": expected k ≤ " + std::to_string(max_harmonic_index));
+    if (!seen.insert(k).second) throw InputError(where + ": harmonic k = " + tok[0] + " given twice");
+    check_decimal(tok[1], where + " a_" + tok[0]);
+    check_decimal(tok[2], where + " b_" + tok[0]);
+    s.harmonics.push_back({k, tok[1], tok[2]});
+  }
+  if (s.harmonics.empty()) throw InputError("file " + quoted(visible(source.name)) + " has no coefficients: expected lines 'k a_k b_k'");
+  return s;
+}
+
+WaveSpec detail::samples_from_table(const Table& table, const RowSource& source, const WaveReadOptions& options) {
+  WaveSpec s;
+  s.name = source.wave;
+  const bool chosen = !options.column.empty();
+  s.kind = WaveKind::samples;
+  const auto& rows = table.rows;
+  // A header of names and nothing numeric after it, or a non-numeric field further down.
+  for (const auto& [line, tok] : rows)
+    for (const auto& t : tok) check_decimal(t, source.where(line) + " sample");
+  std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
+  if (!chosen && rows.size() == 1 && table.header.empty()) {
+    s.samples = rows[0].second;  // one line of values: one period
+  } else {
+    for (const auto& [line, tok] : rows)
+      if (tok.size() != columns)
+        throw InputError(source.where(line) + ": " + std::to_string(tok.size()) + " fields, line " +
+                         std::to_string(rows[0].first) + " has " + std::to_string(columns) +
+                         ": expected the same number on every line");
+    if (!table.header.empty() && !rows.empty() && table.header.size() != columns)
+      throw InputError(source.name + ": the header names " + std::to_string(table.header.size()) + " columns, the data have " +
+                       std::to_string(columns) + ": expected one name per column");
+    const auto& header = table.header;
+    std::size_t vc = 0, tc = std::string::npos;  // value and time column (npos: none)
+    if (chosen && (!rows.empty() || !header.empty())) {
+      if (columns == 0) columns = header.size();
+      vc = choose_column(options.column, header, columns, source.name);
+      std::vector<std::size_t> time_columns;
+      for (std::size_t i = 0; i < header.size(); ++i)
+        if (is_time_name(header[i])) time_columns.push_back(i);
+      if (time_columns.size() > 1)
+        throw InputError(quoted(visible(source.name)) + ": the header names " + std::to_string(time_columns.size()) + " time columns, " +
+                         quoted(visible(header[time_columns[0]])) + " and " + quoted(visible(header[time_columns[1]])) +
+                         ": expected at most one column named 'time' or 't'");
+      if (!time_columns.empty()) tc = time_columns[0];
+      if (vc == tc)
+        throw InputError("column " + quoted(visible(options.column)) + " of " + quoted(visible(source.name)) + " is its time column " +
+                         quoted(visible(header[tc])) + ": expected a column of values");
+      if (!header.empty() && std::count(header.begin(), header.end(), header[vc]) == 1)
+        s.column = header[vc];
+      else
+        s.column = std::to_string(vc + 1);
+      s.name = source.wave + "#" + s.column;
+    } else if (chosen) {
+      // No rows and no header: nothing to choose from; the sample count below says so.
+    } else if (columns == 2) {
+      const bool t0 = !header.empty() && is_time_name(header[0]);
+      const bool t1 = !header.empty() && is_time_name(header[1]);
+      if (header.empty() || t0 == t1)
+        throw InputError(source.name + ": two columns" +
+                         (header.empty() ? std::string(" and no header")
+                                         : " named " + quoted(visible(header[0])) + ", " + quoted(visible(header[1]))) +
+                         ": expected one column of values, or a header naming one column 'time' (or 't'), e.g. 'time,value'");
+      tc = t0 ? 0 : 1;
+      vc = 1 - tc;
+    } else if (columns > 2) {
+      std::string names;
+      for (const auto& h : header) names += (names.empty() ? " (" : ", ") + quoted(visible(h));
+      throw InputError(source.name + ": " + std::to_string(columns) + " columns" + (names.empty() ? "" : names + ")") +
+                       ": expected one column of values, two with one named 'time', or a value column chosen by name or "
+                       "1-based index (--column)");
+    }
+    for (const auto& [line, tok] : rows) {
+      if (tc != std::string::npos) s.times.push_back(tok[tc]);
+      s.samples.push_back(tok[vc]);
+    }
+    if (!header.empty() && vc < header.size()) s.value_column = header[vc];
+    if (tc != std::string::npos) s.time_column = header[tc];
+  }
+  if (s.samples.size() < 2 + (s.times.empty() ? 0 : 1))
+    throw InputError("file " + quoted(visible(source.name)) + " has " + std::to_string(s.samples.size()) + " sample(s): expected at least " +
+                     (s.times.empty() ? "2" : "3 (one period and its end point)"));
+  if (!s.times.empty()) {
+    // One period with its end point: the time column sets the period, the last value repeats the first.
+    PrecisionScope scope(60);
+    for (std::size_t j = 1; j < s.times.size(); ++j)
+      if (!(exact_value(s.times[j]) > exact_value(s.times[j - 1])))
+        throw InputError(source.name + ": time " + quoted(visible(s.times[j])) + " after " + quoted(visible(s.times[j - 1])) +
+                         ": expected strictly increasing time stamps");
+    const mpfr period = exact_value(s.times.back()) - exact_value(s.times.front());
+    for (std::size_t j = 1; j < s.times.size(); ++j)
+      if (exact_value(s.times[j]) - exact_value(s.times[j - 1]) < period * mpfr("1e-12"))
+        throw InputError(source.name + ": time stamps " + quoted(visible(s.times[j - 1])) + " and " + quoted(visible(s.times[j])) +
+                         " are closer than 1e-12 of the period: expected distinct phases");
+    if (exact_value(s.samples.back()) != exact_value(s.samples.front()))
+      throw InputError(source.name + ": the last value " + quoted(visible(s.samples.back())) + " differs from the first " +
+                       quoted(visible(s.samples.front())) +
+                       ": with a time column the file holds one period and its end point; append the line at time t0 + "
+                       "period with the first value");
+    s.samples.pop_back();  // the end point: its time stays, as the period's end
+  }
+  const std::size_t period = smallest_period(s.samples, s.times);
+  if (period == 1)
+    throw InputError("sampled waveform " + quoted(visible(source.wave)) + " is constant: expected a signal with non-zero amplitude");
+  if (s.times.empty() && s.samples.size() >= 3 && exact_value(s.samples.back()) == exact_value(s.samples.front())) {
+    throw InputError(source.name + ": the last sample " + quoted(visible(s.samples.back())) +
+                     " repeats the first: a one-column file holds one period without its end point (y_j at phi = j/N); "
+                     "remove the last value, or add a time column (then the end point is expected)");
+  }
+  if (period < s.samples.size())
+    throw InputError(source.name + ": the samples repeat every " + std::to_string(period) + " of " + std::to_string(s.samples.size()) +
+                     ": the file holds " + std::to_string(s.samples.size() / period) +
+                     " identical periods; expected one period (the frequency f is that of one period)");
+  return s;
+}
+
 WaveSpec parse_wave(const std::string& text) { return parse_wave(text, WaveReadOptions{}); }
 
 WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
@@ -298,132 +439,11 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
   }
   if (colon != std::string::npos && head == "fourier") {
     if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected fourier:FILE");
-    s.kind = WaveKind::fourier;
-    std::set<unsigned> seen;
-    const Table table = read_table(arg, text);
-    if (!table.header.empty() && table.header.size() != 3)
-      throw InputError(arg + ": header " + quoted(visible(table.header[0])) + "… has " + std::to_string(table.header.size()) +
-                       " fields: expected three, such as 'k a_k b_k'");
-    for (const auto& [line, tok] : table.rows) {
-      const std::string where = arg + ":" + std::to_string(line);
-      if (tok.size() != 3)
-        throw InputError(where + ": expected three fields 'k a_k b_k', got " + std::to_string(tok.size()));
-      if (!std::regex_match(tok[0], std::regex("[0-9]{1,6}")))
-        throw InputError(where + ": harmonic k = " + quoted(visible(tok[0])) + ": expected an integer 0 ≤ k ≤ " +
-                       std::to_string(max_harmonic_index));
-      const auto k = static_cast<unsigned>(std::stoul(tok[0]));
-      if (k > max_harmonic_index)
-        throw InputError(where + ": harmonic k = " + tok[0] + ": expected k ≤ " + std::to_string(max_harmonic_index));
-      if (!seen.insert(k).second) throw InputError(where + ": harmonic k = " + tok[0] + " given twice");
-      check_decimal(tok[1], where + " a_" + tok[0]);
-      check_decimal(tok[2], where + " b_" + tok[0]);
-      s.harmonics.push_back({k, tok[1], tok[2]});
-    }
-    if (s.harmonics.empty()) throw InputError("file " + quoted(visible(arg)) + " has no coefficients: expected lines 'k a_k b_k'");
-    return s;
+    return detail::fourier_from_table(detail::read_table_file(arg, text), detail::file_source(arg, text));
   }
   if (colon != std::string::npos && head == "samples") {
     if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected samples:FILE");
-    s.kind = WaveKind::samples;
-    const Table table = read_table(arg, text);
-    const auto& rows = table.rows;
-    // A header of names and nothing numeric after it, or a non-numeric field further down.
-    for (const auto& [line, tok] : rows)
-      for (const auto& t : tok) check_decimal(t, arg + ":" + std::to_string(line) + " sample");
-    std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
-    if (!chosen && rows.size() == 1 && table.header.empty()) {
-      s.samples = rows[0].second;  // one line of values: one period
-    } else {
-      for (const auto& [line, tok] : rows)
-        if (tok.size() != columns)
-          throw InputError(arg + ":" + std::to_string(line) + ": " + std::to_string(tok.size()) + " fields, line " +
-                           std::to_string(rows[0].first) + " has " + std::to_string(columns) +
-                           ": expected the same number on every line");
-      if (!table.header.empty() && !rows.empty() && table.header.size() != columns)
-        throw InputError(arg + ": the header names " + std::to_string(table.header.size()) + " columns, the data have " +
-                         std::to_string(columns) + ": expected one name per column");
-      const auto& header = table.header;
-      std::size_t vc = 0, tc = std::string::npos;  // value and time column (npos: none)
-      if (chosen && (!rows.empty() || !header.empty())) {
-        if (columns == 0) columns = header.size();
-        vc = choose_column(options.column, header, columns, arg);
-        std::vector<std::size_t> time_columns;
-        for (std::size_t i = 0; i < header.size(); ++i)
-          if (is_time_name(header[i])) time_columns.push_back(i);
-        if (time_columns.size() > 1)
-          throw InputError(quoted(visible(arg)) + ": the header names " + std::to_string(time_columns.size()) + " time columns, " +
-                           quoted(visible(header[time_columns[0]])) + " and " + quoted(visible(header[time_columns[1]])) +
-                           ": expected at most one column named 'time' or 't'");
-        if (!time_columns.empty()) tc = time_columns[0];
-        if (vc == tc)
-          throw InputError("column " + quoted(visible(options.column)) + " of " + quoted(visible(arg)) + " is its time column " +
-                           quoted(visible(header[tc])) + ": expected a column of values");
-        if (!header.empty() && std::count(header.begin(), header.end(), header[vc]) == 1)
-          s.column = header[vc];
-        else
-          s.column = std::to_string(vc + 1);
-        s.name = text + "#" + s.column;
-      } else if (chosen) {
-        // No rows and no header: nothing to choose from; the sample count below says so.
-      } else if (columns == 2) {
-        const bool t0 = !header.empty() && is_time_name(header[0]);
-        const bool t1 = !header.empty() && is_time_name(header[1]);
-        if (header.empty() || t0 == t1)
-          throw InputError(arg + ": two columns" +
-                           (header.empty() ? std::string(" and no header")
-                                           : " named " + quoted(visible(header[0])) + ", " + quoted(visible(header[1]))) +
-                           ": expected one column of values, or a header naming one column 'time' (or 't'), e.g. 'time,value'");
-        tc = t0 ? 0 : 1;
-        vc = 1 - tc;
-      } else if (columns > 2) {
-        std::string names;
-        for (const auto& h : header) names += (names.empty() ? " (" : ", ") + quoted(visible(h));
-        throw InputError(arg + ": " + std::to_string(columns) + " columns" + (names.empty() ? "" : names + ")") +
-                         ": expected one column of values, two with one named 'time', or a value column chosen by name or "
-                         "1-based index (--column)");
-      }
-      for (const auto& [line, tok] : rows) {
-        if (tc != std::string::npos) s.times.push_back(tok[tc]);
-        s.samples.push_back(tok[vc]);
-      }
-      if (!header.empty() && vc < header.size()) s.value_column = header[vc];
-      if (tc != std::string::npos) s.time_column = header[tc];
-    }
-    if (s.samples.size() < 2 + (s.times.empty() ? 0 : 1))
-      throw InputError("file " + quoted(visible(arg)) + " has " + std::to_string(s.samples.size()) + " sample(s): expected at least " +
-                       (s.times.empty() ? "2" : "3 (one period and its end point)"));
-    if (!s.times.empty()) {
-      // One period with its end point: the time column sets the period, the last value repeats the first.
-      PrecisionScope scope(60);
-      for (std::size_t j = 1; j < s.times.size(); ++j)
-        if (!(exact_value(s.times[j]) > exact_value(s.times[j - 1])))
-          throw InputError(arg + ": time " + quoted(visible(s.times[j])) + " after " + quoted(visible(s.times[j - 1])) +
-                           ": expected strictly increasing time stamps");
-      const mpfr period = exact_value(s.times.back()) - exact_value(s.times.front());
-      for (std::size_t j = 1; j < s.times.size(); ++j)
-        if (exact_value(s.times[j]) - exact_value(s.times[j - 1]) < period * mpfr("1e-12"))
-          throw InputError(arg + ": time stamps " + quoted(visible(s.times[j - 1])) + " and " + quoted(visible(s.times[j])) +
-                           " are closer than 1e-12 of the period: expected distinct phases");
-      if (exact_value(s.samples.back()) != exact_value(s.samples.front()))
-        throw InputError(arg + ": the last value " + quoted(visible(s.samples.back())) + " differs from the first " +
-                         quoted(visible(s.samples.front())) +
-                         ": with a time column the file holds one period and its end point; append the line at time t0 + "
-                         "period with the first value");
-      s.samples.pop_back();  // the end point: its time stays, as the period's end
-    }
-    const std::size_t period = smallest_period(s.samples, s.times);
-    if (period == 1)
-      throw InputError("sampled waveform " + quoted(visible(text)) + " is constant: expected a signal with non-zero amplitude");
-    if (s.times.empty() && s.samples.size() >= 3 && exact_value(s.samples.back()) == exact_value(s.samples.front())) {
-      throw InputError(arg + ": the last sample " + quoted(visible(s.samples.back())) +
-                       " repeats the first: a one-column file holds one period without its end point (y_j at phi = j/N); "
-                       "remove the last value, or add a time column (then the end point is expected)");
-    }
-    if (period < s.samples.size())
-      throw InputError(arg + ": the samples repeat every " + std::to_string(period) + " of " + std::to_string(s.samples.size()) +
-                       ": the file holds " + std::to_string(s.samples.size() / period) +
-                       " identical periods; expected one period (the frequency f is that of one period)");
-    return s;
+    return detail::samples_from_table(detail::read_table_file(arg, text), detail::file_source(arg, text), options);
   }
   throw InputError("unknown wave " + quoted(visible(text)) +
                    ": expected sine, triangle, sawtooth-right, sawtooth-left, square, power:P, fourier:FILE or samples:FILE");

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/detail/tables.hpp"
 
 namespace vibrofric {
 
@@ -63,10 +64,8 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
     throw InputError("profile file " + as_typed(path) + " is a directory: expected a file of 'r f' lines");
   std::ifstream in(path);
   if (!in) throw InputError("cannot read profile file " + as_typed(path));
-  ProfileSpec s;
-  s.kind = ProfileKind::measured;
-  s.name = text;
-  constexpr std::size_t max_samples = 100000;
+  // Lines 'r f': '#' starts a comment, ',', ';', tabs and spaces separate, blank lines are skipped.
+  detail::Rows rows;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
@@ -75,8 +74,18 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
     std::istringstream ls(line);
     std::vector<std::string> tok;
     for (std::string t; ls >> t;) tok.push_back(t);
-    if (tok.empty()) continue;
-    const std::string where = path + ":" + std::to_string(number);
+    if (!tok.empty()) rows.emplace_back(number, std::move(tok));
+  }
+  return detail::profile_from_rows(rows, detail::file_source(path, text));
+}
+
+ProfileSpec detail::profile_from_rows(const Rows& rows, const RowSource& source) {
+  ProfileSpec s;
+  s.kind = ProfileKind::measured;
+  s.name = source.wave;
+  constexpr std::size_t max_samples = 100000;
+  for (const auto& [number, tok] : rows) {
+    const std::string where = source.where(number);
     if (tok.size() != 2) throw InputError(where + ": expected two fields 'r f', got " + std::to_string(tok.size()));
     check_decimal(tok[0], where + " r");
     check_decimal(tok[1], where + " f");
@@ -105,15 +114,15 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
       }
     }
     if (s.r.size() == max_samples)
-      throw InputError("profile file " + as_typed(path) + " has more than " + std::to_string(max_samples) + " samples");
+      throw InputError("profile file " + as_typed(source.name) + " has more than " + std::to_string(max_samples) + " samples");
     s.r.push_back(tok[0]);
     s.f.push_back(tok[1]);
   }
   if (s.r.size() < 2)
-    throw InputError("profile file " + as_typed(path) + " has " + std::to_string(s.r.size()) +
+    throw InputError("profile file " + as_typed(source.name) + " has " + std::to_string(s.r.size()) +
                      " sample(s): expected at least 2 lines 'r f'");
   if (compare_decimal(s.f.back(), "0") == 0)
-    throw InputError("profile file " + as_typed(path) + " is flat (f = 0 everywhere): use --profile flat");
+    throw InputError("profile file " + as_typed(source.name) + " is flat (f = 0 everywhere): use --profile flat");
   return s;
 }
 

@@ -1,6 +1,6 @@
 // Waves and profiles from numbers instead of files, for front ends that hold arrays (the Python
-// module): the numbers become the decimal text a file would hold, and that text goes through the
-// file readers of catalogue.hpp and profile.hpp, so an array is accepted, refused and normalised
+// module): the numbers, as decimal text, become the rows a file would give and go through the
+// file readers' checks (detail/tables.hpp), so an array is accepted, refused and normalised
 // exactly as the same numbers in a samples:FILE, fourier:FILE or profile:FILE (model.md, "Waveform
 // catalogue": user waves are normalised to zero mean and unit amplitude).
 #pragma once

@@ -1,0 +1,52 @@
+// The readers of user waves and profiles in two steps (README, "File formats"; model.md,
+// "Waveform catalogue"): a file's text becomes rows of fields, and rows are checked and become a
+// WaveSpec or ProfileSpec. A front end that holds arrays (arrays.hpp) builds the rows itself, so
+// an array is checked exactly as a file holding the same numbers, with its messages naming
+// label[j] where a file's name PATH:LINE.
+#pragma once
+#include <istream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/profile_spec.hpp"
+
+namespace vibrofric::detail {
+
+// Where rows come from, for messages: a file (rows by PATH:LINE) or a front end's arrays (rows by
+// label[j], j = line − 1 − header_lines, the array index).
+struct RowSource {
+  std::string name;  // the path, or the label
+  std::string wave;  // the wave as messages name it: samples:PATH as typed, or the label
+  bool arrays = false;
+  int header_lines = 0;
+  std::string where(int line) const;
+};
+RowSource file_source(const std::string& path, const std::string& wave);
+RowSource array_source(const std::string& label, int header_lines);
+
+using Rows = std::vector<std::pair<int, std::vector<std::string>>>;  // line number, fields
+
+struct Table {
+  std::vector<std::string> header;
+  Rows rows;
+};
+
+// A user wave file's text as a table: a UTF-8 byte-order mark and CR line ends are dropped, '#'
+// starts a comment, blank lines are skipped; a line with ',' or ';' has its fields between them
+// (so a header may hold spaces: 'time [s], value'), a line with tabs between runs of tabs, any
+// other line between runs of whitespace. A first line without any number is the header.
+Table read_table(std::istream& in, const RowSource& source);
+Table read_table_file(const std::string& path, const std::string& wave);
+
+// The rows of a samples:FILE, or of a fourier:FILE ('k a_k b_k'), checked: the WaveSpec that
+// parse_wave returns for that file.
+WaveSpec samples_from_table(const Table& table, const RowSource& source, const WaveReadOptions& options);
+WaveSpec fourier_from_table(const Table& table, const RowSource& source);
+
+// The rows 'r f' of a profile:FILE, checked: r from 0 and increasing, f(0) = 0, f non-decreasing
+// and convex. `wave` of the source is the profile as typed (profile:PATH), its name.
+ProfileSpec profile_from_rows(const Rows& rows, const RowSource& source);
+
+}  // namespace vibrofric::detail
