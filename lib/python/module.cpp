@@ -940,13 +940,33 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
           else
             checks.push_back(check_claim(key, d));
         }
-        // The tool's JSON (claims_json), as dicts; measured as (name, value) tuples, plus digits.
-        py::list out = py::module_::import("json").attr("loads")(claims_json(checks, d))["claims"];
-        for (std::size_t i = 0; i < checks.size(); ++i) {
+        // The fields of the tool's JSON (claims_json), in its order, from the ClaimCheck itself;
+        // measured as (name, value) tuples, plus digits.
+        py::list out;
+        for (const ClaimCheck& c : checks) {
+          py::dict j;
+          j["key"] = c.key;
+          j["id"] = c.id;
+          j["source"] = c.source;
+          j["statement"] = c.statement;
+          j["method"] = c.method;
+          j["how"] = c.how;
+          j["criterion"] = c.criterion;
+          j["proof"] = c.proof;
+          j["worst"] = c.worst;
+          j["verdict"] = verdict_name(c.verdict);
+          j["scope"] = c.scope;
+          j["fails_where"] = c.fails_where;
+          j["corrected"] = c.corrected;
+          j["cases"] = c.cases;
+          j["deviation"] = c.deviation_text;
+          j["deviation_unit"] = c.deviation_unit;
+          j["corrected_deviation"] = c.corrected_deviation ? py::object(py::str(c.corrected_deviation_text)) : py::none();
           py::list measured;
-          for (const auto& m : checks[i].measured) measured.append(py::make_tuple(m.name, m.value));
-          out[i]["measured"] = measured;
-          out[i]["digits"] = checks[i].digits;
+          for (const auto& m : c.measured) measured.append(py::make_tuple(m.name, m.value));
+          j["measured"] = measured;
+          j["digits"] = c.digits;
+          out.append(j);
         }
         return out;
       },

@@ -27,3 +27,23 @@ def test_eq24_fails_as_printed():
 def test_claim_keys():
     assert "eq17" in vibrofric.claims and "eq24" in vibrofric.claims
     assert vibrofric.catalogue[0] == "sine"
+
+
+def test_same_fields_and_values_as_the_tool_json():
+    """The dicts hold what `vibrofric verify --format json` prints, field for field and in its order
+    (the module builds them from the checks; the tool writes JSON)."""
+    import json
+    import os
+    import subprocess
+    tool = os.environ["VIBROFRIC_TOOL"]
+    out = subprocess.run([tool, "verify", "--claim", "eq24", "--digits", "10", "--format", "json"],
+                         capture_output=True, text=True, check=True).stdout
+    (want,) = json.loads(out)["claims"]
+    (row,) = vibrofric.verify("eq24", digits=10)
+    assert list(row)[:len(want)] == list(want)
+    for name, value in want.items():
+        got = row[name]
+        if name == "measured":
+            got = [list(m) for m in got]
+        assert got == value, name
+    assert row["digits"] == 10
