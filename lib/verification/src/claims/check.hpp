@@ -58,17 +58,11 @@ class Solver {
   }
 
   Result<Real> run(const Real& beta, const Real* gamma) {
-    const int outer = working_digits10<Real>();
-    int work = outer;
     const Real target = pow(Real(10), -(digits_ + 2));
-    for (int attempt = 0; attempt < 8; ++attempt) {
-      PrecisionScope scope(static_cast<unsigned>(work));
-      Result<Real> r = gamma ? solve(contact(*gamma), beta) : psi_at(beta);
-      const Real& err = gamma ? r.relative_error : r.lost_relative_error;
-      if (err <= target) return r;
-      using std::isfinite;
-      work += isfinite(err) ? static_cast<int>(std::ceil(static_cast<double>(log10(err / target)))) + 10 : work;
-    }
+    const auto r = raise_precision(
+        working_digits10<Real>(), RaisePolicy{}, [&] { return gamma ? solve(contact(*gamma), beta) : psi_at(beta); },
+        [&](const Result<Real>& x) { return shortfall(gamma ? x.relative_error : x.lost_relative_error, target); });
+    if (r) return *r;
     throw SolverError("claims: wave " + spec_.name + ", beta = " + str(beta, 20) +
                       (gamma ? ", gamma = " + str(*gamma, 20) : std::string()) + ": could not reach " +
                       std::to_string(digits_ + 2) + " digits");

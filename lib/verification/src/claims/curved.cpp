@@ -71,32 +71,21 @@ int& solver_retries() {
 // silently inaccurate number.
 CurvedResult<Real> curved(const std::string& wave, const ProfileFactory& profile, const Real& beta, const Real& gamma,
                           int digits) {
-  int work = working_digits10<Real>(), failures = 0;
   const Real target = pow(Real(10), -(digits + 2));
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    PrecisionScope scope(static_cast<unsigned>(work));
-    const auto w = make_waveform<Real>(parse_wave(wave));
-    const auto p = profile();
-    CurvedResult<Real> r;
-    try {
-      // Asked for an eighth of the target (as evaluate.hpp does): its estimate may exceed what it
-      // was asked for by a small factor, which would cost a recomputation at more digits.
-      r = solve_curved(*w, *p, Real(beta), Real(gamma), Options{}, Real(target / 8));
-    } catch (const PrecisionError&) {
-      work *= 2;
-      continue;
-    } catch (const SolverError&) {
-      if (++failures > 2) throw;
-      ++solver_retries();
-      work = work * 3 / 2;
-      continue;
-    }
-    if (r.relative_error <= target) return r;
-    using std::isfinite;
-    work += isfinite(r.relative_error)
-                ? static_cast<int>(std::ceil(static_cast<double>(log10(r.relative_error / target)))) + 10
-                : work;
-  }
+  RaisePolicy policy;
+  policy.solver_retries = 2;
+  policy.on_solver_retry = [] { ++solver_retries(); };
+  const auto r = raise_precision(
+      working_digits10<Real>(), policy,
+      [&] {
+        const auto w = make_waveform<Real>(parse_wave(wave));
+        const auto p = profile();
+        // Asked for an eighth of the target (as evaluate.hpp does): its estimate may exceed what it
+        // was asked for by a small factor, which would cost a recomputation at more digits.
+        return solve_curved(*w, *p, Real(beta), Real(gamma), Options{}, Real(target / 8));
+      },
+      [&](const CurvedResult<Real>& x) { return shortfall(x.relative_error, target); });
+  if (r) return *r;
   throw SolverError("claims: wave " + wave + ", profile " + profile()->name() + ", beta = " + str(beta, 20) +
                     ", gamma = " + str(gamma, 20) + ": could not reach " + std::to_string(digits + 2) + " digits");
 }

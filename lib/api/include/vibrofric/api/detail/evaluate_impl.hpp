@@ -17,6 +17,7 @@
 #include <boost/math/special_functions/next.hpp>
 
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/ladder.hpp"
 #include "vibrofric/core/curved.hpp"
 
 namespace vibrofric::detail {
@@ -190,27 +191,14 @@ template <class Real>
 std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantity q, const Point& p,
                            int digits, const Options& opt) {
   if constexpr (is_runtime_precision_v<Real>) {
-    int work = digits + guard_digits(digits);
-    for (int attempt = 0; attempt < 8; ++attempt) {
-      PrecisionScope scope(static_cast<unsigned>(work));
-      PointValue<Real> v;
-      try {
-        v = compute_point(waves, q, p, opt, Real(pow(Real(10), -digits) / 8));
-      } catch (const PrecisionError&) {
-        if (attempt == 7 || 2 * work > 4 * max_digits) throw;
-        work *= 2;  // the waveform needs more digits than these (power:P with P ~ 10^work)
-        continue;
-      }
-      const Real target = pow(Real(10), -digits) / 2;
-      if (v.relative_error <= target) return format_significant(v.value, digits);
-      using std::isfinite;
-      using std::log10;
-      if (isfinite(v.relative_error))
-        work += static_cast<int>(std::ceil(static_cast<double>(log10(v.relative_error / target)))) + guard_digits(digits);
-      else
-        work *= 2;  // the areas were lost entirely: no estimate of how much is missing
-      if (work > 4 * max_digits) break;
-    }
+    RaisePolicy policy;
+    policy.guard = guard_digits(digits);
+    policy.max_work = 4 * max_digits;
+    const auto v = raise_precision(
+        digits + guard_digits(digits), policy,
+        [&] { return compute_point(waves, q, p, opt, Real(pow(Real(10), -digits) / 8)); },
+        [&](const PointValue<Real>& r) { return shortfall(r.relative_error, Real(pow(Real(10), -digits) / 2)); });
+    if (v) return format_significant(v->value, digits);
     throw SolverError("wave " + spec.name + ", beta = " + p.beta +
                       (q == Quantity::mu ? ", gamma = " + p.gamma : std::string()) +
                       ": could not reach " + std::to_string(digits) + " digits (ill-conditioned)");
