@@ -392,7 +392,7 @@ TEST(BadInput, LongDecimalIsNotAStackOverflow) {
 // power:P, degenerate Fourier critical points) after it; the comments describe each bug as it was.
 
 // detail::integrator() throws InputError for fewer than 4 levels ("bad input", as the tool's
-// --max-levels check says), but Sweep::quad catches every std::exception around it and rethrows
+// --max-levels check says), but EventPass::quad catches every std::exception around it and rethrows
 // SolverError: a library caller (evaluate() with BatchOptions) gets a solver failure, exit 1.
 // Contact is decided once from the decimal γ and the waveform at 60 digits or more, so every number
 // type makes the same decision. A sampled sine written with 17 digits has a mean of order 1e-18, so

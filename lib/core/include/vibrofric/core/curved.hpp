@@ -30,7 +30,7 @@ namespace vibrofric {
 template <class Real>
 struct CurvedResult {
   Real mu;                 // μ̄/μ0 = friction_integral / normal_integral
-  Real friction_integral;  // ∫₀^X Φ_w(β, γ − σ(x)) dx over the half-row (profile units)
+  Real friction_integral;  // ∫₀^X Φ_w(β, γ − σ(x)) dx over the half-row (profile units; Φ_w: a spring's retained_area)
   Real normal_integral;    // ∫₀^X N_w(γ − σ(x)) dx
   Real contact_radius;     // X: σ(X) = γ + max w, the edge of the contact (profile units)
   Real beta_c;             // β_c(γ) of the central spring; β ≥ β_c gives μ̄ = μ0 exactly (Eq. 6)
@@ -129,10 +129,11 @@ std::vector<Real> graded_pieces(const std::vector<Real>& ts) {
   return out;
 }
 
-// One spring: (Φ, N) and the bound on their absolute rounding error; no contact gives zeros.
+// One spring: Φ_w = ∫s dφ and N_w = ∫n dφ (model.md, MDR; the retained_area and normal_area of
+// its flat-punch Result) and the bound on their absolute rounding error; no contact gives zeros.
 template <class Real>
 struct SpringValue {
-  Real phi, n, err;
+  Real retained_area, normal_area, err;
 };
 
 template <class Real>
@@ -197,17 +198,18 @@ class QuadraticSprings {
       k[1] = (b - a) / (2 * c);
       k[2] = (a + b - 2 * m) * 2 / 3;
     };
-    coefficients(y0.phi, y1.phi, y2.phi, phi_);
-    coefficients(y0.n, y1.n, y2.n, n_);
+    coefficients(y0.retained_area, y1.retained_area, y2.retained_area, phi_);
+    coefficients(y0.normal_area, y1.normal_area, y2.normal_area, n_);
     e_[0] = y0.err;
     e_[1] = y1.err;
     e_[2] = y2.err;
     Real size = 0;  // S: the largest |Φ| or |N| at the nodes
-    for (const auto* y : {&y0, &y1, &y2}) size = std::max(size, std::max(Real(abs(y->phi)), Real(abs(y->n))));
+    for (const auto* y : {&y0, &y1, &y2}) size = std::max(size, std::max(Real(abs(y->retained_area)), Real(abs(y->normal_area))));
     rounding_ = 48 * std::numeric_limits<Real>::epsilon() * size;
     for (const Real& g : {Real(mid_ - half_ * 15 / 16), Real(mid_ + half_ * 15 / 16)}) {
       const SpringValue<Real> q = at(g), v = row.at(g);
-      if (abs(q.phi - v.phi) > q.err + v.err || abs(q.n - v.n) > q.err + v.err) return false;
+      if (abs(q.retained_area - v.retained_area) > q.err + v.err || abs(q.normal_area - v.normal_area) > q.err + v.err)
+        return false;
     }
     return true;
   }
@@ -360,12 +362,8 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
                                 const Real& gamma, const Options& opt = {}, Real target = 0) {
   using detail::short_str;
   using std::abs;
-  using std::isfinite;
   detail::check_beta(w, beta);
-  if (!isfinite(gamma)) throw InputError("gamma = " + short_str(gamma) + ": expected a finite number");
-  if (!(gamma + w.maximum() > 0))
-    throw DomainError("gamma = " + short_str(gamma) + " gives no contact for wave " + w.name() +
-                      ": expected gamma > " + short_str(Real(-w.maximum())));
+  detail::check_contact(w, gamma);
   const Real sigma_max = gamma + w.maximum();
   if (sigma_max > profile.sigma_limit())
     throw DomainError("gamma = " + short_str(gamma) + " for profile " + profile.name() + ": the contact reaches beyond its last sample (sigma = " +
@@ -430,8 +428,8 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     };
     auto weighted = [&](std::size_t k, detail::SpringValue<Real> v, const Real& t) {
       const Real wgt = profile.dx_dt(t);
-      v.phi *= wgt;
-      v.n *= wgt;
+      v.retained_area *= wgt;
+      v.normal_area *= wgt;
       v.err *= abs(wgt);
       if (v.err > worst[k]) worst[k] = v.err;
       return v;
@@ -447,13 +445,13 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     // Boost's four levels, not digits it cannot reach relative to its own tiny size.
     Real scale = N;
     for (std::size_t k = 0; k + 1 < ps.size(); ++k)
-      if (ps[k + 1] > ps[k]) scale += (ps[k + 1] - ps[k]) * spring(k, Real((ps[k] + ps[k + 1]) / 2)).n;
+      if (ps[k + 1] > ps[k]) scale += (ps[k + 1] - ps[k]) * spring(k, Real((ps[k] + ps[k + 1]) / 2)).normal_area;
     using std::sqrt;
     auto& quad = detail::integrator<Real>(opt.max_quadrature_levels);
     for (std::size_t k = 0; k + 1 < ps.size(); ++k) {
       const Real &a = ps[k], &b = ps[k + 1];
       if (!(b > a)) continue;
-      const Real size = (b - a) * spring(k, Real((a + b) / 2)).n;
+      const Real size = (b - a) * spring(k, Real((a + b) / 2)).normal_area;
       // A quadratic's segment costs no springs: it is integrated to the type's own precision,
       // whatever the target. Its first rule keeps the size the digits give: σ = t^N with N = 1e6
       // changes within 1e-6 of the end, which rules of 8 and 12 points both miss (they agreed on
@@ -470,7 +468,7 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
                                        : Real(b - width * (1 - u) * (1 - u) * (1 + 2 * u));
         if (!(t > a) || !(t < b)) return Real(0);  // dt/du = 0 at the ends
         const auto v = spring(k, t);
-        return (n ? v.n : v.phi) * 6 * width * u * (1 - u);
+        return (n ? v.normal_area : v.retained_area) * 6 * width * u * (1 - u);
       };
       for (int which = sticks ? 0 : 1; which < 2; ++which) {
         Real err = 0, l1 = 0;

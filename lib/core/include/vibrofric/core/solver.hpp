@@ -188,10 +188,12 @@ boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
   return *slot;
 }
 
+// One point's pass over the events of a period (Eqs. 4 and 8): the stick phases, their ends and
+// the areas that solve() returns (the tool's `sweep` over many points is another thing).
 template <class Real>
-class Sweep {
+class EventPass {
  public:
-  Sweep(const Contact<Real>& contact, const Real& beta, const Options& opt)
+  EventPass(const Contact<Real>& contact, const Real& beta, const Options& opt)
       : c_(contact), w_(contact.wave()), beta_(beta), gamma_(contact.gamma()), opt_(opt) {
     const Waveform<Real>& w = w_;
     stats_.max_iterations = root_budget<Real>(opt);
@@ -583,18 +585,28 @@ void check_beta(const Waveform<Real>& w, const Real& beta) {
   if (const std::string why = w.unresolved(); !why.empty()) throw PrecisionError("wave " + w.name() + ": " + why);
 }
 
+// The one message for γ without contact (γ + max w ≤ 0), γ as the caller has it (as typed, or the
+// number) and the bound on γ as text.
+inline DomainError no_contact(const std::string& gamma, const std::string& wave, const std::string& bound) {
+  return DomainError("gamma = " + gamma + " gives no contact for wave " + wave + ": expected gamma > " + bound);
+}
+
+// γ finite (InputError) with contact (γ + max w > 0, else DomainError): the check of make_contact
+// and solve_curved.
+template <class Real>
+void check_contact(const Waveform<Real>& w, const Real& gamma) {
+  using std::isfinite;
+  if (!isfinite(gamma)) throw InputError("gamma = " + short_str(gamma) + ": expected a finite number");
+  if (!(gamma + w.maximum() > 0)) throw no_contact(short_str(gamma), w.name(), short_str(Real(-w.maximum())));
+}
+
 }  // namespace detail
 
 // The Contact of (w, γ) after checking γ: finite, and contact exists (γ + max w > 0; γ ≤ −1
 // for the catalogue is a DomainError). Throws SolverError if a contact boundary cannot be found.
 template <class Real>
 Contact<Real> make_contact(const Waveform<Real>& w, const Real& gamma, const Options& opt = {}) {
-  using std::isfinite;
-  if (!isfinite(gamma))
-    throw InputError("gamma = " + detail::short_str(gamma) + ": expected a finite number");
-  if (!(gamma + w.maximum() > 0))
-    throw DomainError("gamma = " + detail::short_str(gamma) + " gives no contact for wave " + w.name() +
-                      ": expected gamma > " + detail::short_str(Real(-w.maximum())));
+  detail::check_contact(w, gamma);
   try {
     return Contact<Real>(w, gamma, opt);
   } catch (const SolverError& e) {
@@ -610,7 +622,7 @@ template <class Real>
 Result<Real> solve(const Contact<Real>& contact, const Real& beta, const Options& opt = {}) {
   detail::check_beta(contact.wave(), beta);
   try {
-    return detail::Sweep<Real>(contact, beta, opt).run();
+    return detail::EventPass<Real>(contact, beta, opt).run();
   } catch (const SolverError& e) {
     throw SolverError(detail::context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
   }
@@ -631,7 +643,7 @@ Result<Real> psi(const Waveform<Real>& w, const Real& beta, const Options& opt =
   const Real gamma = -w.minimum();
   try {
     const Contact<Real> contact(w, gamma, opt);
-    return detail::Sweep<Real>(contact, beta, opt).run();
+    return detail::EventPass<Real>(contact, beta, opt).run();
   } catch (const SolverError& e) {
     throw SolverError(detail::context<Real>(w, beta, nullptr) + ": " + e.what());
   }

@@ -352,8 +352,7 @@ class ContactCheck {
       }
       const mpfr gamma(p.gamma);
       if (!(gamma + *top_ > 0))
-        throw DomainError("gamma = " + p.gamma + " gives no contact for wave " + spec_.name + ": expected gamma > " +
-                          detail::short_str(mpfr(-*top_)));
+        throw no_contact(p.gamma, spec_.name, short_str(mpfr(-*top_)));
     }
     last_ = p.gamma;  // only a γ that passed
   }
