@@ -331,6 +331,29 @@ TEST(BadInput, FileGrammarCornersAreAccepted) {
   EXPECT_EQ(parse_wave("samples:" + two.path()).samples.size(), 2u);
 }
 
+TEST(BadInput, QuotedFieldsMayHoldTheSeparator) {
+  // RFC 4180 (libcsv): a quoted name may hold the separator; a doubled quote is one quote.
+  const ScratchFile quoted("\"time [s]\", \"disp, \"\"raw\"\"\"\n0,0\n0.25,1\n0.5,0\n0.75,-1\n1,0\n");
+  const WaveSpec w = parse_wave("samples:" + quoted.path());
+  EXPECT_EQ(w.time_column, "time [s]");
+  EXPECT_EQ(w.value_column, "disp, \"raw\"");
+  EXPECT_EQ(w.samples, (std::vector<std::string>{"0", "1", "0", "-1"}));
+  // ';' separates where it stands: decimal commas are then fields that are not numbers, named as
+  // typed (the first line, holding no number, is read as the header).
+  const ScratchFile semicolons("0,5;1,5\n2,5;0,25\n");
+  try {
+    parse_wave("samples:" + semicolons.path());
+    ADD_FAILURE() << "decimal commas read as numbers";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":2 sample = '2,5'"), std::string::npos) << e.what();
+  }
+  // An empty field between separators is still an error, a trailing separator is not.
+  const ScratchFile empty("1;;2\n");
+  EXPECT_THROW(parse_wave("samples:" + empty.path()), InputError);
+  const ScratchFile trailing("1;2;3;\n");
+  EXPECT_EQ(parse_wave("samples:" + trailing.path()).samples.size(), 3u);
+}
+
 TEST(BadInput, DomainAndArguments) {
   PrecisionScope digits(30);
   const ScratchFile samples(kSamples);

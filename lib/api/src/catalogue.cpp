@@ -1,5 +1,7 @@
 #include "vibrofric/api/catalogue.hpp"
 
+#include <csv.h>
+
 #include "vibrofric/api/detail/tables.hpp"
 #include "vibrofric/api/limits.hpp"
 
@@ -22,6 +24,38 @@ namespace {
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 using detail::visible;
+
+// The separator of a line of a table: ';' where one stands outside double quotes (an export
+// whose decimals may hold commas), else ',' outside quotes, else none.
+char separator_of(const std::string& line) {
+  bool inside = false, comma = false;
+  for (const char c : line) {
+    if (c == '"')
+      inside = !inside;
+    else if (!inside && c == ';')
+      return ';';
+    else if (!inside && c == ',')
+      comma = true;
+  }
+  return comma ? ',' : '\0';
+}
+
+// The fields of one line at `delim`, read by libcsv (RFC 4180): a field in double quotes may hold
+// the separator, a doubled quote in it is one quote, and spaces and tabs around a field go.
+std::vector<std::string> separated_fields(const std::string& line, char delim) {
+  csv_parser parser;
+  if (csv_init(&parser, 0) != 0) throw std::bad_alloc();
+  csv_set_delim(&parser, static_cast<unsigned char>(delim));
+  std::vector<std::string> fields;
+  const auto field = [](void* text, std::size_t size, void* out) {
+    static_cast<std::vector<std::string>*>(out)->emplace_back(text ? static_cast<const char*>(text) : "", text ? size : 0);
+  };
+  const bool ok = csv_parse(&parser, line.data(), line.size(), field, nullptr, &fields) == line.size() &&
+                  csv_fini(&parser, field, nullptr, &fields) == 0;
+  csv_free(&parser);
+  if (!ok) throw std::bad_alloc();  // libcsv fails only when out of memory (not in strict mode)
+  return fields;
+}
 
 // The name of a time column, as rigs export it: "time", "t", "timestamp", with a unit in brackets
 // ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("time in ms").
@@ -128,40 +162,17 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
       throw InputError("file " + quoted(visible(source.name)) + " line " + std::to_string(number) +
                        " holds a NUL byte: expected text");
     if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
-    // A line with ',' or ';' is split there (fields trimmed; an empty one is an error, except
-    // after a trailing separator); any other line at runs of whitespace.
+    // A line with ';' or ',' outside quotes is split at that separator (fields trimmed; an empty
+    // one is an error, except after a trailing separator); any other line at tabs or whitespace.
     std::vector<std::string> fields;
-    const auto space = [](char c) { return c == ' ' || c == '\t'; };
-    if (line.find_first_of(",;") != std::string::npos) {
-      std::size_t start = 0;
-      for (;;) {
-        const std::size_t end = line.find_first_of(",;", start);
-        std::string f = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
-        while (!f.empty() && space(f.back())) f.pop_back();
-        std::size_t lead = 0;
-        while (lead < f.size() && space(f[lead])) ++lead;
-        f.erase(0, lead);
-        // A field in double quotes (RFC 4180, as spreadsheets export headers) is its contents, a
-        // doubled quote one quote; a separator inside quotes is not supported (the columns then
-        // disagree with the header: an error, never a shifted column).
-        if (f.size() >= 2 && f.front() == '"' && f.back() == '"') {
-          std::string inner;
-          for (std::size_t k = 1; k + 1 < f.size(); ++k) {
-            inner += f[k];
-            if (f[k] == '"' && f[k + 1] == '"') ++k;
-          }
-          f = inner;
-        }
-        if (end == std::string::npos) {
-          if (!f.empty()) fields.push_back(f);
-          break;
-        }
+    if (const char delim = separator_of(line)) {
+      fields = separated_fields(line, delim);
+      // An empty field is an error, except after a trailing separator.
+      if (!fields.empty() && fields.back().empty()) fields.pop_back();
+      for (const auto& f : fields)
         if (f.empty())
-          throw InputError(source.where(number) + ": empty field before " +
-                           quoted(std::string(1, line[end])) + ": expected a value between separators");
-        fields.push_back(f);
-        start = end + 1;
-      }
+          throw InputError(source.where(number) + ": empty field before " + quoted(std::string(1, delim)) +
+                           ": expected a value between separators");
     } else if (line.find('\t') != std::string::npos) {
       // Tab-separated (a rig's export): fields between runs of tabs, so that a header name may
       // hold spaces ('time [s]<TAB>displacement [um]'); spaces around them trimmed.

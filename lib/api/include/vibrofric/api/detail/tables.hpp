@@ -34,9 +34,11 @@ struct Table {
 };
 
 // A user wave file's text as a table: a UTF-8 byte-order mark and CR line ends are dropped, '#'
-// starts a comment, blank lines are skipped; a line with ',' or ';' has its fields between them
-// (so a header may hold spaces: 'time [s], value'), a line with tabs between runs of tabs, any
-// other line between runs of whitespace. A first line without any number is the header.
+// starts a comment, blank lines are skipped; a line with ';' outside double quotes has its fields
+// between the ';' (else one with ',' between the ','; libcsv, RFC 4180: a quoted field may hold
+// the separator), so a header may hold spaces ('time [s], value'); a line with tabs has them
+// between runs of tabs, any other line between runs of whitespace. A first line without any
+// number is the header.
 Table read_table(std::istream& in, const RowSource& source);
 Table read_table_file(const std::string& path, const std::string& wave);
 
