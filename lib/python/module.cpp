@@ -16,6 +16,7 @@
 #include <string>
 #include <system_error>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "vibrofric/api/arrays.hpp"
@@ -940,31 +941,23 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
           else
             checks.push_back(check_claim(key, d));
         }
-        // The fields of the tool's JSON (claims_json), in its order, from the ClaimCheck itself;
-        // measured as (name, value) tuples, plus digits.
+        // The fields of the tool's JSON, in its order (for_each_field); measured as (name, value)
+        // tuples, plus digits.
         py::list out;
         for (const ClaimCheck& c : checks) {
           py::dict j;
-          j["key"] = c.key;
-          j["id"] = c.id;
-          j["source"] = c.source;
-          j["statement"] = c.statement;
-          j["method"] = c.method;
-          j["how"] = c.how;
-          j["criterion"] = c.criterion;
-          j["proof"] = c.proof;
-          j["worst"] = c.worst;
-          j["verdict"] = verdict_name(c.verdict);
-          j["scope"] = c.scope;
-          j["fails_where"] = c.fails_where;
-          j["corrected"] = c.corrected;
-          j["cases"] = c.cases;
-          j["deviation"] = c.deviation_text;
-          j["deviation_unit"] = c.deviation_unit;
-          j["corrected_deviation"] = c.corrected_deviation ? py::object(py::str(c.corrected_deviation_text)) : py::none();
-          py::list measured;
-          for (const auto& m : c.measured) measured.append(py::make_tuple(m.name, m.value));
-          j["measured"] = measured;
+          for_each_field(c, [&](const char* name, const auto& value) {
+            using V = std::decay_t<decltype(value)>;
+            if constexpr (std::is_same_v<V, std::optional<std::string>>) {
+              j[name] = value ? py::object(py::str(*value)) : py::none();
+            } else if constexpr (std::is_same_v<V, std::vector<Measurement>>) {
+              py::list measured;
+              for (const auto& m : value) measured.append(py::make_tuple(m.name, m.value));
+              j[name] = measured;
+            } else {
+              j[name] = value;
+            }
+          });
           j["digits"] = c.digits;
           out.append(j);
         }

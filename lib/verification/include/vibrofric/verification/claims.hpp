@@ -74,8 +74,34 @@ std::vector<ClaimCheck> verify_claims(int digits);
 inline constexpr int min_verify_digits = 10;  // the front ends' range for verify
 inline constexpr int max_verify_digits = 300;
 
-// The checks as one JSON document (`verify --format json`, the report generator, the Python
-// module): {"digits": D, "claims": [{key, id, source, statement, method, how, criterion, proof,
+// The fields of a check as the JSON document below and the Python module's dicts show them, in
+// that order: f(name, value) with value a std::string, a std::size_t (cases), a
+// std::optional<std::string> (corrected_deviation: none without a corrected statement) or the
+// measurements.
+template <class F>
+void for_each_field(const ClaimCheck& c, F&& f) {
+  f("key", c.key);
+  f("id", c.id);
+  f("source", c.source);
+  f("statement", c.statement);
+  f("method", c.method);
+  f("how", c.how);
+  f("criterion", c.criterion);
+  f("proof", c.proof);
+  f("worst", c.worst);
+  f("verdict", verdict_name(c.verdict));
+  f("scope", c.scope);
+  f("fails_where", c.fails_where);
+  f("corrected", c.corrected);
+  f("cases", c.cases);
+  f("deviation", c.deviation_text);
+  f("deviation_unit", c.deviation_unit);
+  f("corrected_deviation", c.corrected_deviation ? std::optional<std::string>(c.corrected_deviation_text) : std::nullopt);
+  f("measured", c.measured);
+}
+
+// The checks as one JSON document (`verify --format json`, the report generator): {"digits": D,
+// "claims": [{key, id, source, statement, method, how, criterion, proof,
 // worst, verdict, scope, fails_where, corrected, cases, deviation, deviation_unit,
 // corrected_deviation, measured: [[name, value], ...]}, ...]}. Deviations are decimal strings at
 // the working precision (a JSON number would pass through a double and underflow beyond 300
