@@ -352,6 +352,13 @@ TEST(BadInput, QuotedFieldsMayHoldTheSeparator) {
   EXPECT_THROW(parse_wave("samples:" + empty.path()), InputError);
   const ScratchFile trailing("1;2;3;\n");
   EXPECT_EQ(parse_wave("samples:" + trailing.path()).samples.size(), 3u);
+  // A line is one row: a CR inside it (a file with old Mac line ends) stays in its field, so two
+  // columns are never read as one line of six values.
+  const ScratchFile cr_only("0,0\r0.5,1\r1,0\r0.25,-1\r");
+  EXPECT_THROW(parse_wave("samples:" + cr_only.path()), InputError);
+  // A quote opens a quoted field only at the field's start: 'dia 5"' is a name, ',' separates.
+  const ScratchFile inch("t, dia 5\"\n0,0\n0.25,1\n0.5,0\n0.75,-1\n1,0\n");
+  EXPECT_EQ(parse_wave("samples:" + inch.path()).value_column, "dia 5\"");
 }
 
 TEST(BadInput, DomainAndArguments) {

@@ -9,6 +9,9 @@ namespace vibrofric {
 
 namespace {
 
+// The label as the file readers quote a file's name (their messages name an array by its label).
+std::string quoted_label(const std::string& label) { return "'" + detail::visible(label) + "'"; }
+
 void check_all(const std::vector<std::string>& values, const std::string& name) {
   for (std::size_t j = 0; j < values.size(); ++j) check_decimal(values[j], name + "[" + std::to_string(j) + "]");
 }
@@ -25,6 +28,9 @@ WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::
   if (!t.empty() && t.size() != y.size())
     throw InputError(label + ": t has " + std::to_string(t.size()) + " values and y " + std::to_string(y.size()) +
                      ": expected one time stamp per value (one period with its end point)");
+  if (y.size() + (t.empty() ? 0 : 1) > detail::max_table_lines)
+    throw InputError("file " + quoted_label(label) + " has more than " + std::to_string(detail::max_table_lines) +
+                     " lines: expected fewer");
   check_all(y, label + " y");
   check_all(t, label + " t");
   // The rows a file 'time,value' (header on line 1) or of one value per line would give.

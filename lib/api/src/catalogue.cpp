@@ -25,36 +25,49 @@ std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 using detail::visible;
 
-// The separator of a line of a table: ';' where one stands outside double quotes (an export
-// whose decimals may hold commas), else ',' outside quotes, else none.
-char separator_of(const std::string& line) {
-  bool inside = false, comma = false;
-  for (const char c : line) {
-    if (c == '"')
-      inside = !inside;
-    else if (!inside && c == ';')
-      return ';';
-    else if (!inside && c == ',')
-      comma = true;
-  }
-  return comma ? ',' : '\0';
+// The fields of one line at `delim`, read by libcsv (RFC 4180): a field that opens with a double
+// quote may hold the separator, a doubled quote in it is one quote, and spaces and tabs around a
+// field go. No character ends the row (the line is one row: a stray CR stays in its field).
+std::vector<std::string> separated_fields(const std::string& line, char delim) {
+  struct Parser {
+    csv_parser p;
+    Parser() {
+      if (csv_init(&p, 0) != 0) throw std::bad_alloc();
+    }
+    ~Parser() { csv_free(&p); }
+  } parser;
+  csv_set_delim(&parser.p, static_cast<unsigned char>(delim));
+  csv_set_term_func(&parser.p, [](unsigned char) { return 0; });
+  struct Out {
+    std::vector<std::string> fields;
+    bool failed = false;
+  } out;
+  const auto field = [](void* text, std::size_t size, void* data) {
+    auto* o = static_cast<Out*>(data);
+    try {  // nothing may be thrown through libcsv's C frames
+      o->fields.emplace_back(text ? static_cast<const char*>(text) : "", text ? size : 0);
+    } catch (...) {
+      o->failed = true;
+    }
+  };
+  const bool ok = csv_parse(&parser.p, line.data(), line.size(), field, nullptr, &out) == line.size() &&
+                  csv_fini(&parser.p, field, nullptr, &out) == 0;
+  if (!ok || out.failed) throw std::bad_alloc();  // libcsv fails only when out of memory (not in strict mode)
+  return std::move(out.fields);
 }
 
-// The fields of one line at `delim`, read by libcsv (RFC 4180): a field in double quotes may hold
-// the separator, a doubled quote in it is one quote, and spaces and tabs around a field go.
-std::vector<std::string> separated_fields(const std::string& line, char delim) {
-  csv_parser parser;
-  if (csv_init(&parser, 0) != 0) throw std::bad_alloc();
-  csv_set_delim(&parser, static_cast<unsigned char>(delim));
-  std::vector<std::string> fields;
-  const auto field = [](void* text, std::size_t size, void* out) {
-    static_cast<std::vector<std::string>*>(out)->emplace_back(text ? static_cast<const char*>(text) : "", text ? size : 0);
-  };
-  const bool ok = csv_parse(&parser, line.data(), line.size(), field, nullptr, &fields) == line.size() &&
-                  csv_fini(&parser, field, nullptr, &fields) == 0;
-  csv_free(&parser);
-  if (!ok) throw std::bad_alloc();  // libcsv fails only when out of memory (not in strict mode)
-  return fields;
+// The fields of a line split at ';' if libcsv finds one outside quotes (an export whose decimals
+// may hold commas), else at ',' likewise; empty if the line has neither.
+std::vector<std::string> fields_at_separator(const std::string& line, char* delim) {
+  for (const char d : {';', ','}) {
+    if (line.find(d) == std::string::npos) continue;
+    auto fields = separated_fields(line, d);
+    if (fields.size() > 1) {
+      *delim = d;
+      return fields;
+    }
+  }
+  return {};
 }
 
 // The name of a time column, as rigs export it: "time", "t", "timestamp", with a unit in brackets
@@ -150,11 +163,10 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
   Table t;
   std::string line;
   int number = 0;
-  constexpr std::size_t max_lines = 10'000'000;
   while (std::getline(in, line)) {
     ++number;
-    if (static_cast<std::size_t>(number) > max_lines)
-      throw InputError("file " + quoted(visible(source.name)) + " has more than " + std::to_string(max_lines) +
+    if (static_cast<std::size_t>(number) > max_table_lines)
+      throw InputError("file " + quoted(visible(source.name)) + " has more than " + std::to_string(max_table_lines) +
                        " lines: expected fewer");
     if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -165,8 +177,8 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
     // A line with ';' or ',' outside quotes is split at that separator (fields trimmed; an empty
     // one is an error, except after a trailing separator); any other line at tabs or whitespace.
     std::vector<std::string> fields;
-    if (const char delim = separator_of(line)) {
-      fields = separated_fields(line, delim);
+    char delim = 0;
+    if (fields = fields_at_separator(line, &delim); delim) {
       // An empty field is an error, except after a trailing separator.
       if (!fields.empty() && fields.back().empty()) fields.pop_back();
       for (const auto& f : fields)

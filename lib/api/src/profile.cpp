@@ -75,6 +75,7 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
     std::vector<std::string> tok;
     for (std::string t; ls >> t;) tok.push_back(t);
     if (!tok.empty()) rows.emplace_back(number, std::move(tok));
+    if (rows.size() > detail::max_profile_samples) break;  // the checks refuse the file there
   }
   return detail::profile_from_rows(rows, detail::file_source(path, text));
 }
@@ -83,7 +84,6 @@ ProfileSpec detail::profile_from_rows(const Rows& rows, const RowSource& source)
   ProfileSpec s;
   s.kind = ProfileKind::measured;
   s.name = source.wave;
-  constexpr std::size_t max_samples = 100000;
   for (const auto& [number, tok] : rows) {
     const std::string where = source.where(number);
     if (tok.size() != 2) throw InputError(where + ": expected two fields 'r f', got " + std::to_string(tok.size()));
@@ -113,8 +113,9 @@ ProfileSpec detail::profile_from_rows(const Rows& rows, const RowSource& source)
                            "transform g(x) is monotone only then (smooth or convexify the measurement)");
       }
     }
-    if (s.r.size() == max_samples)
-      throw InputError("profile file " + as_typed(source.name) + " has more than " + std::to_string(max_samples) + " samples");
+    if (s.r.size() == max_profile_samples)
+      throw InputError("profile file " + as_typed(source.name) + " has more than " + std::to_string(max_profile_samples) +
+                       " samples");
     s.r.push_back(tok[0]);
     s.f.push_back(tok[1]);
   }

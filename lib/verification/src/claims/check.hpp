@@ -59,8 +59,10 @@ class Solver {
 
   Result<Real> run(const Real& beta, const Real* gamma) {
     const Real target = pow(Real(10), -(digits_ + 2));
+    RaisePolicy policy;
+    policy.double_on_precision_error = false;  // as before the one ladder: a wave beyond its type is an error
     const auto r = raise_precision(
-        working_digits10<Real>(), RaisePolicy{}, [&] { return gamma ? solve(contact(*gamma), beta) : psi_at(beta); },
+        working_digits10<Real>(), policy, [&] { return gamma ? solve(contact(*gamma), beta) : psi_at(beta); },
         [&](const Result<Real>& x) { return shortfall(gamma ? x.relative_error : x.lost_relative_error, target); });
     if (r) return *r;
     throw SolverError("claims: wave " + spec_.name + ", beta = " + str(beta, 20) +

@@ -32,6 +32,7 @@ struct RaisePolicy {
   int max_work = 0;       // working digits not to go beyond (0: no limit but the attempts)
   int solver_retries = 0; // SolverErrors retried at 1.5 times the digits before one is rethrown
   int attempts = 8;
+  bool double_on_precision_error = true;  // false: a PrecisionError is rethrown at once
   void (*on_solver_retry)() = nullptr;  // told of each such retry (a claim check reports them)
 };
 
@@ -50,7 +51,9 @@ auto raise_precision(int work, const RaisePolicy& policy, Compute compute, Judge
     try {
       r.emplace(compute());
     } catch (const PrecisionError&) {
-      if (attempt + 1 == policy.attempts || (policy.max_work > 0 && 2 * work > policy.max_work)) throw;
+      if (!policy.double_on_precision_error || attempt + 1 == policy.attempts ||
+          (policy.max_work > 0 && 2 * work > policy.max_work))
+        throw;
       work *= 2;
       continue;
     } catch (const SolverError&) {
