@@ -143,12 +143,9 @@ Precision to_precision(const std::optional<int>& digits, const py::object& type)
   if (!type.is_none() && !py::isinstance<py::str>(type))
     throw py::type_error("type = " + py_repr(type) + ": expected a string such as 'double' or 'mpfr'");
   const std::string t = type.is_none() ? (digits ? "mpfr" : "double") : type.cast<std::string>();
-  try {
-    p.type = parse_number_type(t);
-  } catch (const InputError&) {
-    throw InputError("type = " + py_repr(type) +
-                     ": expected double, long-double, cpp_bin_float_50, cpp_bin_float_100 or mpfr");
-  }
+  const auto named = number_type_named(t);
+  if (!named) throw InputError("type = " + py_repr(type) + ": expected " + number_type_choices);
+  p.type = *named;
   if (digits) {
     if (p.type != NumberType::mpfr)
       throw InputError("digits = " + std::to_string(*digits) + " with type = '" + t +
@@ -871,13 +868,15 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& points,
          const py::object& digits, bool strings) {
         const WaveSpec w = to_wave(wave);
-        const std::string b = scalar_text(beta, "beta"), g = scalar_text(gamma, "gamma");
-        const auto n = optional_int(points, "points");
-        const auto d = optional_int(digits, "digits");
+        TraceRequest request;
+        request.beta.text = scalar_text(beta, "beta");
+        request.gamma.text = scalar_text(gamma, "gamma");
+        if (const auto n = optional_int(points, "points")) request.points = *n;
+        if (const auto d = optional_int(digits, "digits")) request.digits = *d;
         std::vector<std::array<std::string, 3>> rows;
         {
           py::gil_scoped_release release;
-          rows = trace_rows(w, b, g, n ? *n : 1000, d ? *d : 17);
+          rows = trace_rows(w, request);
         }
         return trace_arrays(rows, strings);
       },

@@ -335,7 +335,11 @@ int parse_int(const std::string& text, const std::string& what, long lo, long hi
 Precision parse_precision(const Args& a) {
   Precision p;
   const bool has_digits = a.flags.count("digits"), has_type = a.flags.count("type");
-  if (has_type) p.type = parse_number_type(a.flags.at("type"));
+  if (has_type) {
+    const auto type = number_type_named(a.flags.at("type"));
+    if (!type) throw InputError("--type '" + a.flags.at("type") + "': expected " + number_type_choices);
+    p.type = *type;
+  }
   if (has_digits) {
     if (has_type && p.type != NumberType::mpfr)
       throw InputError("--digits goes with mpfr only: --type " + detail::visible(a.flags.at("type")) + " has fixed precision");
@@ -463,6 +467,7 @@ std::string pending_diagnostics;
 // user wave went through (model.md, user waveforms), for stderr so that stdout stays data.
 WaveSpec read_wave(const Args& a) {
   WaveReadOptions options;
+  options.column_name = "--column";
   if (a.flags.count("column")) options.column = a.flags.at("column");
   WaveSpec wave = parse_wave(need(a, "wave"), options);
   if (switch_on(a, "diagnostics"))
@@ -688,9 +693,15 @@ int run_physical(const Args& a) {
 // every stick phase, so that a plot shows the kinks where they are.
 int run_trace(const Args& a) {
   const WaveSpec wave = read_wave(a);
-  const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits) : 17;
-  const int points = a.flags.count("points") ? parse_int(a.flags.at("points"), "--points", min_trace_points, max_trace_points) : 1000;
-  const auto rows = trace_rows(wave, need(a, "beta"), need(a, "gamma"), points, digits);
+  TraceRequest request;
+  request.beta = {need(a, "beta"), "--beta"};
+  request.gamma = {need(a, "gamma"), "--gamma"};
+  request.points_name = "--points";
+  request.digits_name = "--digits";
+  if (a.flags.count("digits")) request.digits = parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits);
+  if (a.flags.count("points"))
+    request.points = parse_int(a.flags.at("points"), "--points", min_trace_points, max_trace_points);
+  const auto rows = trace_rows(wave, request);
   std::cout << "phi,n,s\n";
   for (const auto& r : rows) std::cout << r[0] << ',' << r[1] << ',' << r[2] << '\n';
   return 0;

@@ -1,5 +1,5 @@
 // Fuzz target: the number and name grammars the tool reads its arguments with — check_decimal,
-// parse_real<T> for every number type, parse_wave (catalogue names and power:P), parse_number_type
+// parse_real<T> for every number type, parse_wave (catalogue names and power:P), number_type_named
 // — and the input used as β and as γ of an evaluation in double and at 20 digits.
 //
 // Checks beyond "a value or a clean error": check_decimal accepts exactly the strings of an
@@ -121,6 +121,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
 
-  fuzz::clean(s, "parse_number_type", [&] { parse_number_type(s); });
+  fuzz::clean(s, "number_type_named", [&] { number_type_named(s); });
   return 0;
 }

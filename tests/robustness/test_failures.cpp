@@ -383,8 +383,10 @@ TEST(BadInput, DomainAndArguments) {
     for (int digits : {0, -1, 10001, std::numeric_limits<int>::max()})
       EXPECT_THROW(evaluate(spec, Quantity::mu, {{"1", "0.5"}}, {NumberType::mpfr, digits}), InputError) << digits;
   }
-  EXPECT_THROW(parse_number_type("float"), InputError);
-  EXPECT_THROW(parse_number_type(""), InputError);
+  for (NumberType t : {NumberType::float64, NumberType::float80, NumberType::bin50, NumberType::bin100, NumberType::mpfr})
+    EXPECT_EQ(number_type_named(number_type_name(t)), t);
+  EXPECT_FALSE(number_type_named("float").has_value());
+  EXPECT_FALSE(number_type_named("").has_value());
   // The solver's own checks, below evaluate().
   const Sine<double> sine;
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();

@@ -382,7 +382,7 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
       for (const auto& h : header) names += (names.empty() ? " (" : ", ") + quoted(visible(h));
       throw InputError(source.name + ": " + std::to_string(columns) + " columns" + (names.empty() ? "" : names + ")") +
                        ": expected one column of values, two with one named 'time', or a value column chosen by name or "
-                       "1-based index (--column)");
+                       "1-based index (" + options.column_name + ")");
     }
     for (const auto& [line, tok] : rows) {
       if (tc != std::string::npos) s.times.push_back(tok[tc]);

@@ -13,7 +13,7 @@
 
 namespace vibrofric {
 
-std::vector<std::pair<const char*, PhysicalInputText*>> PhysicalRequest::inputs() {
+std::vector<std::pair<const char*, InputText*>> PhysicalRequest::inputs() {
   return {{"E1", &E1},         {"nu1", &nu1},        {"E2", &E2},   {"nu2", &nu2},
           {"G1", &G1},         {"G2", &G2},          {"v0", &v0},   {"f", &f},
           {"A", &A},           {"u_mean", &u_mean},  {"F_N", &F_N}, {"mu0", &mu0},
@@ -23,7 +23,7 @@ std::vector<std::pair<const char*, PhysicalInputText*>> PhysicalRequest::inputs(
 
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
                                const BatchOptions& base) {
-  using Input = PhysicalInputText;
+  using Input = InputText;
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
   const auto text = [](const Input& in) -> const std::string& {
@@ -184,19 +184,24 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
 }
 
 
-std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const std::string& beta_text,
-                                                   const std::string& gamma_text, int n_points, int digits) {
-  check_decimal(beta_text, "--beta");
-  check_decimal(gamma_text, "--gamma");
+std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request) {
+  const auto text = [](const InputText& in) -> const std::string& {
+    if (!in.given()) throw InputError("missing " + in.name + " for 'trace'");
+    return *in.text;
+  };
+  check_decimal(text(request.beta), request.beta.name);
+  check_decimal(text(request.gamma), request.gamma.name);
+  const int n_points = request.points, digits = request.digits;
   if (n_points < min_trace_points || n_points > max_trace_points)
-    throw InputError("--points = " + std::to_string(n_points) + ": expected an integer from " +
+    throw InputError(request.points_name + " = " + std::to_string(n_points) + ": expected an integer from " +
                      std::to_string(min_trace_points) + " to " + std::to_string(max_trace_points));
   if (digits < min_digits || digits > max_digits)
-    throw InputError("--digits = " + std::to_string(digits) + ": expected an integer from " + std::to_string(min_digits) +
-                     " to " + std::to_string(max_digits));
+    throw InputError(request.digits_name + " = " + std::to_string(digits) + ": expected an integer from " +
+                     std::to_string(min_digits) + " to " + std::to_string(max_digits));
   PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
   const auto w = make_waveform<mpfr>(wave);
-  const mpfr beta = parse_real<mpfr>(beta_text, "--beta"), gamma = parse_real<mpfr>(gamma_text, "--gamma");
+  const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
+  const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);
   const Contact<mpfr> contact = make_contact(*w, gamma);
   const auto r = solve(contact, beta);
   // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32).

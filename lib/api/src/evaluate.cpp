@@ -4,13 +4,13 @@
 
 namespace vibrofric {
 
-NumberType parse_number_type(const std::string& text) {
+std::optional<NumberType> number_type_named(const std::string& text) {
   if (text == "double") return NumberType::float64;
   if (text == "long-double") return NumberType::float80;
   if (text == "cpp_bin_float_50") return NumberType::bin50;
   if (text == "cpp_bin_float_100") return NumberType::bin100;
   if (text == "mpfr") return NumberType::mpfr;
-  throw InputError("--type '" + text + "': expected double, long-double, cpp_bin_float_50, cpp_bin_float_100 or mpfr");
+  return std::nullopt;
 }
 
 std::string number_type_name(NumberType t) {
@@ -40,7 +40,7 @@ void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
                      const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink) {
   if (precision.type == NumberType::mpfr &&
       (precision.digits < min_digits || precision.digits > max_digits))
-    throw InputError("--digits " + std::to_string(precision.digits) + ": expected " +
+    throw InputError("digits = " + std::to_string(precision.digits) + ": expected " +
                      std::to_string(min_digits) + " to " + std::to_string(max_digits));
   const int digits = output_digits(precision);
   switch (precision.type) {

@@ -123,7 +123,7 @@ ProfileSpec detail::profile_from_rows(const Rows& rows, const RowSource& source)
     throw InputError("profile file " + as_typed(source.name) + " has " + std::to_string(s.r.size()) +
                      " sample(s): expected at least 2 lines 'r f'");
   if (compare_decimal(s.f.back(), "0") == 0)
-    throw InputError("profile file " + as_typed(source.name) + " is flat (f = 0 everywhere): use --profile flat");
+    throw InputError("profile file " + as_typed(source.name) + " is flat (f = 0 everywhere): expected a curved profile (this one is the flat punch)");
   return s;
 }
 

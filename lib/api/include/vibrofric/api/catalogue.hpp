@@ -43,6 +43,7 @@ struct WaveSpec {
 // one- and two-column layouts only, as without options.
 struct WaveReadOptions {
   std::string column;
+  std::string column_name = "column";  // what the caller calls the choice, for messages ("--column")
 };
 
 // Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,

@@ -19,9 +19,9 @@ namespace vibrofric {
 // contact_fraction and stick_fraction.
 using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
 
-// One input of `physical`: its value as decimal text, as typed (none: not given), and the name
-// the caller knows it by, which every message about it uses (the tool's "--E1", Python's "E1").
-struct PhysicalInputText {
+// One input: its value as decimal text, as typed (none: not given), and the name the caller knows
+// it by, which every message about it uses (the tool's "--E1", Python's "E1").
+struct InputText {
   std::optional<std::string> text;
   std::string name;
   bool given() const { return text.has_value(); }
@@ -33,13 +33,13 @@ struct PhysicalInputText {
 // its geometry: radius (flat), R (sphere, wearflat), half_angle (cone, degrees), flat_radius
 // (wearflat). Each is named by its member's name until the caller renames it.
 struct PhysicalRequest {
-  PhysicalInputText E1{{}, "E1"}, nu1{{}, "nu1"}, E2{{}, "E2"}, nu2{{}, "nu2"}, G1{{}, "G1"}, G2{{}, "G2"};
-  PhysicalInputText v0{{}, "v0"}, f{{}, "f"}, A{{}, "A"}, u_mean{{}, "u_mean"}, F_N{{}, "F_N"}, mu0{{}, "mu0"};
-  PhysicalInputText shape{{}, "shape"}, radius{{}, "radius"}, R{{}, "R"}, half_angle{{}, "half_angle"};
-  PhysicalInputText flat_radius{{}, "flat_radius"};
+  InputText E1{{}, "E1"}, nu1{{}, "nu1"}, E2{{}, "E2"}, nu2{{}, "nu2"}, G1{{}, "G1"}, G2{{}, "G2"};
+  InputText v0{{}, "v0"}, f{{}, "f"}, A{{}, "A"}, u_mean{{}, "u_mean"}, F_N{{}, "F_N"}, mu0{{}, "mu0"};
+  InputText shape{{}, "shape"}, radius{{}, "radius"}, R{{}, "R"}, half_angle{{}, "half_angle"};
+  InputText flat_radius{{}, "flat_radius"};
 
   // Every input with its member's name, in this order, for a front end that fills them by name.
-  std::vector<std::pair<const char*, PhysicalInputText*>> inputs();
+  std::vector<std::pair<const char*, InputText*>> inputs();
 };
 
 // `physical` at one point (Eqs. 1, 5, 14; MDR for the curved shapes). `options` gives the solver
@@ -47,10 +47,17 @@ struct PhysicalRequest {
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& request, const Precision& precision,
                                const BatchOptions& options = {});
 
+// The inputs of `trace`, each named in its caller's terms as in PhysicalRequest.
+struct TraceRequest {
+  InputText beta{{}, "beta"}, gamma{{}, "gamma"};
+  int points = 1000;  // in [min_trace_points, max_trace_points]
+  int digits = 17;    // in [min_digits, max_digits]
+  std::string points_name = "points", digits_name = "digits";
+};
+
 // Rows (φ, n, s) over one period, φ ascending: `points` + 1 equally spaced phases, both ends of
 // every stick phase and the contact boundaries (where n = s = 0 exactly), `digits` significant
 // digits each (at digits plus guard digits of working precision).
-std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const std::string& beta,
-                                                   const std::string& gamma, int points, int digits);
+std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request);
 
 }  // namespace vibrofric

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,10 @@ namespace vibrofric {
 
 enum class NumberType { float64, float80, bin50, bin100, mpfr };
 
-// Parses double, long-double, cpp_bin_float_50, cpp_bin_float_100, mpfr; InputError otherwise.
-NumberType parse_number_type(const std::string& text);
+// The type a name denotes (double, long-double, cpp_bin_float_50, cpp_bin_float_100, mpfr), or
+// none; a front end words the refusal in its own terms, listing number_type_choices.
+std::optional<NumberType> number_type_named(const std::string& text);
+inline constexpr const char* number_type_choices = "double, long-double, cpp_bin_float_50, cpp_bin_float_100 or mpfr";
 std::string number_type_name(NumberType t);
 
 struct Precision {

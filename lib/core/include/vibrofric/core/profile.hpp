@@ -138,7 +138,7 @@ class MeasuredProfile final : public Profile<Real> {
     flat_ = 0;
     for (std::size_t j = 0; j < m_.size() && m_[j] == 0; ++j) flat_ = j + 1;
     if (flat_ == m_.size())
-      throw InputError("profile " + this->name() + " is flat (f = 0 at every sample): use --profile flat");
+      throw InputError("profile " + this->name() + " is flat (f = 0 at every sample): expected a curved profile (this one is the flat punch)");
     limit_ = g(r_.back());
   }
   Real sigma_at_x(const Real& x) const override { return g(x); }

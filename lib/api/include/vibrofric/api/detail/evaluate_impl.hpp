@@ -171,7 +171,7 @@ PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& 
   const Real beta = parse_real<Real>(p.beta, "beta");
   // A positive β below the type's smallest number reads as 0: name what was written.
   if (beta == 0 && p.beta[0] != '-' && p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
-    throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: --digits)");
+    throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: more digits)");
   if (const Profile<Real>* profile = waves.profile()) {
     if (q == Quantity::psi)
       throw InputError("psi with profile " + profile->name() +
