@@ -289,16 +289,11 @@ plot %s, \\
 
 
 def closed_form_rows(claims):
-    """The closed forms of curved contacts (curved_closed_forms.hpp) against the solver, from the measured
-    fields "closed form: WAVE, PROFILE, beta = B, gamma = G" -> "closed / solver / relative difference"."""
-    rows = []
-    for c in claims:
-        for name, value in c["measured"]:
-            if name.startswith("closed form: "):
-                wave, prof, b, g = [t.strip() for t in name[len("closed form: "):].split(",")]
-                closed, solver, dev = [t.strip() for t in value.split("/")]
-                rows.append((wave, prof, b.split("=")[1].strip(), g.split("=")[1].strip(), closed, solver, dev))
-    return rows
+    """The closed forms of curved contacts (curved_closed_forms.hpp) against the solver: the fields of the
+    measurements "closed form: ..." (wave, profile, beta, gamma, closed_form, solver, relative_difference)."""
+    keys = ("wave", "profile", "beta", "gamma", "closed_form", "solver", "relative_difference")
+    return [tuple(m["fields"][k] for k in keys)
+            for c in claims for m in c["measured"] if m["name"].startswith("closed form: ")]
 
 
 def ulp_error(value_text, ref_text, bits):
@@ -508,8 +503,8 @@ def main():
         w("- **Corrected:** %s — largest measured deviation %s at %d digits%s" % (
             c["corrected"], c["corrected_deviation"], a.digits,
             " ([proof](../%s))" % c["proof"] if c["proof"] else ""))
-        for name, value in c["measured"]:
-            w("- %s: %s" % (name, value))
+        for m in c["measured"]:
+            w("- %s: %s" % (m["name"], m["value"]))
         w("")
     w("## Corrections to our own documents and our extensions")
     w("")
@@ -552,7 +547,7 @@ def main():
         if c["corrected"]:
             w("- **What holds:** %s" % c["corrected"])
         # The closed forms of curved contacts have their own table (section "Curved contacts").
-        rows = [(n, v) for n, v in c["measured"] if not n.startswith("closed form: ")]
+        rows = [(m["name"], m["value"]) for m in c["measured"] if not m["name"].startswith("closed form: ")]
         if rows:
             w("")
             w("| measured | value |")
@@ -566,9 +561,9 @@ def main():
         if c["verdict"] == "holds approximately":
             continue
         w("- **%s** (%s): %s. *Criterion:* %s." % (c["id"], c["verdict"], c["how"], c["criterion"]))
-        for name, value in c["measured"]:
+        for m in c["measured"]:
             if c["verdict"] != "fails":
-                w("  - %s: %s" % (name, value))
+                w("  - %s: %s" % (m["name"], m["value"]))
     w("")
     w("## Independent cross-check")
     w("")
@@ -627,10 +622,6 @@ def claim(claims, key):
     return None
 
 
-def measured_dict(c):
-    return dict(c["measured"]) if c else {}
-
-
 def curved_section(w, claims, figs, bench_json):
     """Curved contacts (model.md, "Curved contacts (MDR)"): Fig. 4 for the ball, the wear flat's approach to
     the flat punch, the closed forms, the static coefficient and the cost, from the tool and `verify`."""
@@ -660,19 +651,20 @@ def curved_section(w, claims, figs, bench_json):
         w("**Abstract, scope (wear flat): %s.** %s. %s" % (wf["verdict"], wf["scope"][:1].upper() + wf["scope"][1:],
                                                            "What holds: " + wf["corrected"] + "." if wf["corrected"] else ""))
         w("")
-        rows = [(n, v) for n, v in wf["measured"] if n.split(":")[0].count(",") == 1 and "D(lambda)" in n]
+        rows = [m["fields"] for m in wf["measured"] if "D(1)" in m["fields"]]
         if rows:
             w("| wave, γ | D(1) | D(10) | D(100) | D(10³) | D(10⁴) | order | C(β) = lim λ²(μ_wf − μ_flat) |")
             w("|---|---|---|---|---|---|---|---|")
-            for name, value in rows:
-                ds, order, cs = [t.strip() for t in value.split(";")]
-                betas = name.split("C for beta = ")[1]
-                w("| %s | %s | %s | %s |" % (name.split(":")[0], " | ".join(d.strip() for d in ds.split(",")), order,
-                                             "%s (β = %s)" % (cs, betas)))
+            for f in rows:
+                ds = [f["D(%s)" % lam] for lam in ("1", "10", "100", "1000", "10000")]
+                cs = [(k[len("C(beta = "):-1], v) for k, v in f.items() if k.startswith("C(beta = ")]
+                w("| %s, gamma = %s | %s | %s | %s (β = %s) |" % (f["wave"], f["gamma"], " | ".join(ds), f["order"],
+                                                                   ", ".join(v for _, v in cs), ", ".join(b for b, _ in cs)))
             w("")
             w("D(λ): the largest |μ_wf − μ_flat| over β, in units of μ0; C from the derived first moments "
-              "(`curved.cpp`). %s" % "; ".join("%s: %s" % (n, v) for n, v in wf["measured"]
-                                               if n.startswith("largest relative |lambda^2") or n.startswith("triangle, gamma <= 1")))
+              "(`curved.cpp`). %s" % "; ".join("%s: %s" % (m["name"], m["value"]) for m in wf["measured"]
+                                               if m["name"].startswith("largest relative |lambda^2")
+                                               or m["name"].startswith("triangle, gamma <= 1")))
             w("")
     w("### Closed forms for curved contacts")
     w("")
@@ -700,18 +692,19 @@ def curved_section(w, claims, figs, bench_json):
         w("")
         w("| case | static coefficient μ_s (derived) / μ̄(β) |")
         w("|---|---|")
-        for name, value in st["measured"]:
-            if "static coefficient mu_s" in name:
-                w("| %s | %s |" % (md_escape(name.split(": static")[0]), md_escape(value)))
+        for m in st["measured"]:
+            if "mu_s" in m["fields"]:
+                f = m["fields"]
+                w("| %s | %s / %s |" % (md_escape(f["case"]), f["mu_s"], f["mu"]))
         w("")
     nu = claim(claims, "scope-numerics")
     if nu:
         w("### Cost")
         w("")
         w("**%s: %s** — %s." % (nu["id"], nu["verdict"], nu["scope"]))
-        for name, value in nu["measured"]:
-            if name.startswith("CPU time") or name.startswith("slowest") or name.startswith("largest relative error"):
-                w("- %s: %s" % (name, value))
+        for m in nu["measured"]:
+            if m["name"].startswith(("CPU time", "slowest", "largest relative error")):
+                w("- %s: %s" % (m["name"], m["value"]))
         w("")
         curved_bench_table(w, bench_json)
 

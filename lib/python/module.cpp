@@ -940,8 +940,8 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
           else
             checks.push_back(check_claim(key, d));
         }
-        // The fields of the tool's JSON, in its order (for_each_field); measured as (name, value)
-        // tuples, plus digits.
+        // The fields of the tool's JSON, in its order (for_each_field), plus digits; measured as
+        // dicts {name, value, fields}.
         py::list out;
         for (const ClaimCheck& c : checks) {
           py::dict j;
@@ -951,7 +951,11 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
               j[name] = value ? py::object(py::str(*value)) : py::none();
             } else if constexpr (std::is_same_v<V, std::vector<Measurement>>) {
               py::list measured;
-              for (const auto& m : value) measured.append(py::make_tuple(m.name, m.value));
+              for (const auto& m : value) {
+                py::dict fields;
+                for (const auto& [key, text] : m.fields) fields[py::str(key)] = text;
+                measured.append(py::dict("name"_a = m.name, "value"_a = m.value, "fields"_a = fields));
+              }
               j[name] = measured;
             } else {
               j[name] = value;
@@ -970,7 +974,8 @@ high-precision solver at `digits` (10 to 300) plus guard digits, as `vibrofric v
 json`: one dict per claim with key, id, source, statement, method, how, criterion, proof, worst,
 verdict ('holds', 'holds approximately', 'fails'), scope, fails_where, corrected, cases,
 deviation (decimal string), deviation_unit, corrected_deviation (None without a corrected
-statement), measured (list of (name, value)) and digits. claim: one key ('eq17', 'eq24', ...);
+statement), measured (list of dicts: name, value as printed, and fields, its parts by name)
+and digits. claim: one key ('eq17', 'eq24', ...);
 None runs every claim (minutes). ValueError for an unknown key.
 )doc");
 

@@ -15,13 +15,24 @@ def test_eq17_holds():
     assert row["cases"] > 0 and row["digits"] == 20
     assert isinstance(row["deviation"], str) and float(row["deviation"]) < 1e-15
     assert row["corrected_deviation"] is None
-    assert all(isinstance(m, tuple) and len(m) == 2 for m in row["measured"])
+    assert all(set(m) == {"name", "value", "fields"} and isinstance(m["fields"], dict) for m in row["measured"])
 
 
 def test_eq24_fails_as_printed():
     (row,) = vibrofric.verify("eq24", digits=10)
     assert row["verdict"] == "fails"
     assert row["corrected"] and row["corrected_deviation"] is not None
+
+
+def test_measured_fields_are_the_printed_parts():
+    """eq24's per-p measurement prints "printed / self-similar"; its fields hold the two numbers."""
+    (row,) = vibrofric.verify("eq24", digits=10)
+    per_p = [m for m in row["measured"] if m["name"].startswith("p = ") and "printed" in m["name"]]
+    assert len(per_p) == 7
+    for m in per_p:
+        assert list(m["fields"]) == ["printed", "self_similar"]
+        assert m["value"] == m["fields"]["printed"] + " / " + m["fields"]["self_similar"]
+        assert float(m["fields"]["self_similar"]) < 1e-8
 
 
 def test_claim_keys():
@@ -42,8 +53,5 @@ def test_same_fields_and_values_as_the_tool_json():
     (row,) = vibrofric.verify("eq24", digits=10)
     assert list(row)[:len(want)] == list(want)
     for name, value in want.items():
-        got = row[name]
-        if name == "measured":
-            got = [list(m) for m in got]
-        assert got == value, name
+        assert row[name] == value, name
     assert row["digits"] == 10

@@ -1463,10 +1463,9 @@ def claim_detail_tests():
         # The published order is log(d1/d2)/log(h1/h2) of the two published deviations it names: with
         # both printed to 3 digits, the order from their rounding intervals must meet the printed order's.
         c = claim("eq23")
-        dev = {float(re.search(r"gamma0 = (\S+)$", n).group(1)): v for n, v in c["measured"]
-               if n.startswith("largest deviation for gamma0")}
-        name, order = [(n, Decimal(v)) for n, v in c["measured"] if n.startswith("order of the deviation")][0]
-        g1, g2 = [float(x) for x in re.search(r"from gamma0 = (\S+), (\S+)$", name).groups()]
+        dev = {float(m["fields"]["gamma0"]): m["fields"]["value"] for m in c["measured"] if "gamma0" in m["fields"]}
+        (f,) = [m["fields"] for m in c["measured"] if m["name"].startswith("order of the deviation")]
+        order, g1, g2 = Decimal(f["value"]), float(f["gamma0_1"]), float(f["gamma0_2"])
         d1, d2 = F(dev[g1]), F(dev[g2])
         h = math.log((1 + g1) / (1 + g2))
         u1, u2 = half_ulp(dev[g1]), half_ulp(dev[g2])
@@ -1480,18 +1479,19 @@ def claim_detail_tests():
     def entanglement_range():
         # |D| = |mu - (1 - Psi/gamma)| over the stated grid, recomputed from mu and psi at 20 digits.
         c = claim("entanglement")
-        lines = dict(c["measured"])
+        fields = {m["name"]: m["fields"] for m in c["measured"]}
         for wave, name in (("sine", "sine"), ("square", "square")):
             psi = {b: Decimal(ok_run(["psi", "--wave", wave, "--beta", b, "--digits", "20"]))
                    for b in ("0.1", "0.5", "1", "1.5")}
             ds = [abs(F(ok_run(["mu", "--wave", wave, "--beta", b, "--gamma", g, "--digits", "20"]).strip())
                       - (1 - F(str(psi[b])) / F(g)))
                   for b in psi for g in ("0.9", "0.5", "0.2", "-0.3", "-0.7")]
-            got = re.match(r"(\S+) to (\S+);", lines["%s: |D| over the grid (in mu0); separability defect E" % name])
-            for printed, want in zip(got.groups(), (min(ds), max(ds))):
+            f = fields["%s: |D| over the grid (in mu0); separability defect E" % name]
+            got = (f["D_lo"], f["D_hi"])
+            for printed, want in zip(got, (min(ds), max(ds))):
                 if abs(F(printed) - want) > half_ulp(printed):
                     raise Fail("verify entanglement %s: |D| range %s, recomputed %s to %s" % (
-                        wave, got.groups(), dec(min(ds), 6), dec(max(ds), 6)))
+                        wave, got, dec(min(ds), 6), dec(max(ds), 6)))
     test("verify entanglement: the published |D| range is the grid's, recomputed from mu and psi", entanglement_range)
 
 

@@ -14,6 +14,12 @@ std::string verdict_name(Verdict v) {
   return "?";
 }
 
+const std::string& Measurement::field(const std::string& key) const {
+  for (const auto& [k, v] : fields)
+    if (k == key) return v;
+  throw InputError("measurement '" + name + "' has no field '" + key + "'");
+}
+
 namespace {
 const char* const kHighPrecision = "high-precision comparison";
 const char* const kProofAndHP = "symbolic proof + high-precision comparison";

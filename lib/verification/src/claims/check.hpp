@@ -120,7 +120,18 @@ class Check {
     if (!corrected_ || d > corrected_dev_) corrected_dev_ = d;
     corrected_ = true;
   }
-  void measure(std::string name, std::string value) { c_.measured.push_back({std::move(name), std::move(value)}); }
+  // One number or word: its one field is "value".
+  void measure(std::string name, std::string value) {
+    c_.measured.push_back({std::move(name), value, {{"value", value}}});
+  }
+  // A printed value made of parts, each a named field.
+  void measure(std::string name, std::string printed, std::vector<std::pair<std::string, std::string>> fields) {
+    c_.measured.push_back({std::move(name), std::move(printed), std::move(fields)});
+  }
+  // "lo to hi", fields lo and hi.
+  void measure_range(std::string name, std::string lo, std::string hi) {
+    measure(std::move(name), lo + " to " + hi, {{"lo", lo}, {"hi", hi}});
+  }
 
   // Exact claims: holds within 10^−digits; holds approximately up to 1e-3 (a deviation visible in
   // no figure of the paper, reported with its size); fails beyond.

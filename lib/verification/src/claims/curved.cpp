@@ -93,7 +93,9 @@ CurvedResult<Real> curved(const std::string& wave, const ProfileFactory& profile
 // Reports the solver retries since `start` (zero when solve_curved converged at the first try).
 void report_retries(Check& c, int start) {
   const int n = solver_retries() - start;
-  if (n > 0) c.measure("curved solver retried at more digits after a quadrature failure", std::to_string(n) + " times");
+  if (n > 0)
+    c.measure("curved solver retried at more digits after a quadrature failure", std::to_string(n) + " times",
+              {{"retries", std::to_string(n)}});
 }
 
 std::string bg(const Real& beta, const Real& gamma) { return "beta = " + str(beta) + ", gamma = " + str(gamma); }
@@ -126,8 +128,11 @@ void closed_forms(Check& c, int digits) {
         const auto r = curved(wave, named(prof), beta, gamma, digits);
         const double d = Check::deviation(r.mu, closed);
         worst = std::max(worst, d);
+        const std::string closed_text = str(closed, 20), solver_text = str(r.mu, 20), d_text = sci(d);
         c.measure("closed form: " + std::string(wave) + ", " + prof + ", beta = " + b + ", gamma = " + g,
-                  str(closed, 20) + " / " + str(r.mu, 20) + " / " + sci(d));
+                  closed_text + " / " + solver_text + " / " + d_text,
+                  {{"wave", wave}, {"profile", prof}, {"beta", b}, {"gamma", g}, {"closed_form", closed_text},
+                   {"solver", solver_text}, {"relative_difference", d_text}});
       }
     }
   }
@@ -187,7 +192,7 @@ ClaimCheck scope_wearflat(int digits) {
   }
   c.measure("triangle, gamma <= 1 (every spring has the flat punch's mu, Eq. 18): largest |mu_wf - mu_flat| at " +
                 std::to_string(digits) + " digits, lambda = 1 ... 1e4",
-            sci(exact_worst) + " (exact)");
+            sci(exact_worst) + " (exact)", {{"value", sci(exact_worst)}});
   closed_forms(c, digits);
 
   // The deviation study at kStudyDigits.
@@ -201,6 +206,7 @@ ClaimCheck scope_wearflat(int digits) {
       if (exact) continue;  // above, at the requested digits
       std::vector<double> D(lambdas.size(), 0.0);
       std::string coeffs;
+      std::vector<std::string> coeff_texts;
       for (const char* b : wg.betas) {
         const Real beta = num(b);
         const Real mu_f = flat.mu(beta, gamma);
@@ -222,6 +228,7 @@ ClaimCheck scope_wearflat(int digits) {
         const Real lam2 = num("1e8") * last_dmu;
         coeff_worst = std::max(coeff_worst, static_cast<double>(abs(lam2 - C) / abs(C)));
         coeffs += (coeffs.empty() ? "" : ", ") + str(C, 6);
+        coeff_texts.push_back(str(C, 6));
       }
       const double order = std::log10(D[3] / D[4]);
       order_lo = std::min(order_lo, order);
@@ -229,15 +236,24 @@ ClaimCheck scope_wearflat(int digits) {
       worst_at_1e4 = std::max(worst_at_1e4, D[4]);
       worst_at_100 = std::max(worst_at_100, D[2]);
       std::string row, bs;
-      for (std::size_t k = 0; k < lambdas.size(); ++k) row += (k ? ", " : "") + sci(D[k]);
-      for (const char* b : wg.betas) bs += (bs.empty() ? "" : ", ") + std::string(b);
+      std::vector<std::pair<std::string, std::string>> fields{{"wave", wg.wave}, {"gamma", g}};
+      for (std::size_t k = 0; k < lambdas.size(); ++k) {
+        row += (k ? ", " : "") + sci(D[k]);
+        fields.emplace_back(std::string("D(") + lambdas[k] + ")", sci(D[k]));
+      }
+      fields.emplace_back("order", fix(order));
+      for (std::size_t k = 0; k < wg.betas.size(); ++k) {
+        bs += (k ? ", " : "") + std::string(wg.betas[k]);
+        fields.emplace_back(std::string("C(beta = ") + wg.betas[k] + ")", coeff_texts[k]);
+      }
       c.measure(std::string(wg.wave) + ", gamma = " + g + ": D(lambda), lambda = 1, 10, 100, 1e3, 1e4; order (1e3 -> 1e4); C for beta = " + bs,
-                row + "; " + fix(order) + "; " + coeffs);
+                row + "; " + fix(order) + "; " + coeffs, std::move(fields));
     }
   }
-  c.measure("order of D in 1/lambda (lambda = 1e3 -> 1e4), over the non-exact cases", fix(order_lo, 4) + " to " + fix(order_hi, 4));
+  c.measure_range("order of D in 1/lambda (lambda = 1e3 -> 1e4), over the non-exact cases", fix(order_lo, 4), fix(order_hi, 4));
   c.measure("largest relative |lambda^2 (mu_wf - mu_flat) - C| / |C| at lambda = 1e4", sci(coeff_worst));
-  c.measure("largest D at lambda = 100 / at lambda = 1e4", sci(worst_at_100) + " / " + sci(worst_at_1e4));
+  c.measure("largest D at lambda = 100 / at lambda = 1e4", sci(worst_at_100) + " / " + sci(worst_at_1e4),
+            {{"at_100", sci(worst_at_100)}, {"at_1e4", sci(worst_at_1e4)}});
   c.out().scope = "exact only where every spring of the row has the flat punch's mu (triangular waves with gamma <= 1, Eq. "
                   "18): there mu_wf = mu_flat to 1e-" + std::to_string(digits) + " at every lambda; otherwise mu_wf - "
                   "mu_flat = C/lambda^2 + O(lambda^-4) (measured order " + fix(order_lo, 3) + "-" + fix(order_hi, 3) +
@@ -318,13 +334,18 @@ ClaimCheck scope_numerics(int digits) {
               str(rd.mu, digits));
     c.measure("sphere, sine, beta = " + std::string(b) + ", gamma = " + g +
                   ": relative error double / 30 digits; double's own bound",
-              sci(dd) + " / " + sci(d30) + "; " + sci(bound_double));
+              sci(dd) + " / " + sci(d30) + "; " + sci(bound_double),
+              {{"double", sci(dd)}, {"30_digits", sci(d30)}, {"double_bound", sci(bound_double)}});
   }
   const double n = static_cast<double>(points.size());
   c.measure("CPU time per evaluation, sphere + sine: double (raw) / 30 digits / " + std::to_string(digits) + " digits",
-            fix(1e3 * t_double / n, 2) + " ms / " + fix(1e3 * t_30 / n, 1) + " ms / " + fix(1e3 * t_d / n, 1) + " ms");
+            fix(1e3 * t_double / n, 2) + " ms / " + fix(1e3 * t_30 / n, 1) + " ms / " + fix(1e3 * t_d / n, 1) + " ms",
+            {{"double_ms", fix(1e3 * t_double / n, 2)}, {"30_digits_ms", fix(1e3 * t_30 / n, 1)},
+             {"digits_ms", fix(1e3 * t_d / n, 1)}});
   c.measure("slowest " + std::to_string(digits) + "-digit evaluation; flat-punch springs per evaluation",
-            fix(1e3 * worst_time, 1) + " ms; " + std::to_string(static_cast<std::size_t>(static_cast<double>(springs) / n)));
+            fix(1e3 * worst_time, 1) + " ms; " + std::to_string(static_cast<std::size_t>(static_cast<double>(springs) / n)),
+            {{"slowest_ms", fix(1e3 * worst_time, 1)},
+             {"springs", std::to_string(static_cast<std::size_t>(static_cast<double>(springs) / n))}});
   c.measure("largest relative error of the raw double solver", sci(worst_double));
   c.out().scope = std::to_string(digits) + " digits in " + fix(1e3 * t_d / n, 0) + " ms per evaluation (slowest " +
                   fix(1e3 * worst_time, 0) + " ms), double in " + fix(1e3 * t_double / n, 2) +
@@ -476,20 +497,22 @@ ClaimCheck curved_eq6_sec3(int digits) {
         tight_lo = std::min(tight_lo, tight);
         tight_hi = std::max(tight_hi, tight);
         if (gamma > 1)
-          c.measure(where + ": static coefficient mu_s (derived) / mu(beta)", str(mu_s, 20) + " / " + str(r.mu, 20));
+          c.measure(where + ": static coefficient mu_s (derived) / mu(beta)", str(mu_s, 20) + " / " + str(r.mu, 20),
+                    {{"case", where}, {"mu_s", str(mu_s, 20)}, {"mu", str(r.mu, 20)}});
         else {
           const Real slope = row_integral(*p, gamma, [&](const Real& x) {
                                const Real L = contact_length(sc.wave, x);
                                return Real(L * L / 2);
                              }) / normal;
           c.measure(where + ": mu / beta (measured) / derived slope int L^2/2 dx / int N dx",
-                    str(Real(r.mu / beta), 12) + " / " + str(slope, 12));
+                    str(Real(r.mu / beta), 12) + " / " + str(slope, 12),
+                    {{"measured", str(Real(r.mu / beta), 12)}, {"derived", str(slope, 12)}});
         }
       }
     }
   }
-  c.measure("(mu(beta) - mu_s) / (beta X / int N dx) over the static cases (inside [0, 1] = the bound holds)",
-            fix(tight_lo, 4) + " to " + fix(tight_hi, 4));
+  c.measure_range("(mu(beta) - mu_s) / (beta X / int N dx) over the static cases (inside [0, 1] = the bound holds)",
+                  fix(tight_lo, 4), fix(tight_hi, 4));
   c.out().scope = "Eq. 6 carries over exactly with the central spring's beta_c (the largest of the row); Sec. 3 only when "
                   "the central spring jumps or just touches (gamma <= 1): for gamma > 1 the static coefficient is "
                   "mu_s = int (gamma - 1 - sigma)_+ dx / int N dx > 0, although the outer springs jump";
@@ -541,16 +564,19 @@ ClaimCheck curved_power_flat(int digits) {
         c.out().worst = worst.back();
       }
       std::string row, nd;
+      std::vector<std::pair<std::string, std::string>> fields{{"wave", wave}, {"gamma", g}};
       for (std::size_t k = 0; k < ns.size(); ++k) {
         row += (k ? ", " : "") + sci(D[k]);
         nd += (k ? ", " : "") + fix(D[k] * std::atof(ns[k]), 4);
+        fields.emplace_back(std::string("D(") + ns[k] + ")", sci(D[k]));
       }
+      fields.emplace_back("order", fix(order));
       c.measure(std::string(wave) + ", gamma = " + g + ": D(N), N = 2 ... 256; N D(N); order (64 -> 256)",
-                row + "; " + nd + "; " + fix(order));
+                row + "; " + nd + "; " + fix(order), std::move(fields));
     }
   }
   c.set_deviation(Real(worst_last));
-  c.measure("order of D in 1/N (N = 64 -> 256)", fix(order_lo, 3) + " to " + fix(order_hi, 3));
+  c.measure_range("order of D in 1/N (N = 64 -> 256)", fix(order_lo, 3), fix(order_hi, 3));
   c.out().fails_where = "at every finite N: " + sci(worst_last) + " mu0 at N = 256";
   c.out().scope = "mu_N - mu_flat = O(1/N) (measured order " + fix(order_lo, 3) + "-" + fix(order_hi, 3) +
                   "); largest D at N = 256: " + sci(worst_last) + " mu0";

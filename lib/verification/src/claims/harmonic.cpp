@@ -97,7 +97,7 @@ ClaimCheck eq23(int digits) {
     const Deviation d = g0 == std::string("-0.3") ? ref : eq23_deviation(s, gamma0);
     c.out().cases += g0 == std::string("-0.3") ? 0 : d.cases;
     rate.emplace_back(static_cast<double>(1 + gamma0), d.value);
-    c.measure("largest deviation for gamma0 = " + std::string(g0), sci(d.value));
+    c.measure("largest deviation for gamma0 = " + std::string(g0), sci(d.value), {{"gamma0", g0}, {"value", sci(d.value)}});
   }
   // Order p of D ~ C (1 + γ0)^p from the last two γ0 (a cap of the sine is a parabola up to
   // relative O(1 + γ): p = 1 expected).
@@ -106,7 +106,8 @@ ClaimCheck eq23(int digits) {
   const double order = std::log(d1 / d2) / std::log(h1 / h2);
   char o[32];
   std::snprintf(o, sizeof o, "%.3f", order);
-  c.measure("order of the deviation in (1 + gamma0), from gamma0 = -0.99, -0.999", o);
+  c.measure("order of the deviation in (1 + gamma0), from gamma0 = -0.99, -0.999", o,
+            {{"value", o}, {"gamma0_1", "-0.99"}, {"gamma0_2", "-0.999"}});
   const bool shrinking = rate[0].second > rate[1].second && rate[1].second > rate[2].second && rate[2].second > rate[3].second &&
                          rate[3].second > rate[4].second;
   c.out().scope = "asymptotically, gamma0 -> -1; at gamma0 = -0.3 the deviation is " + sci(ref.value) + " mu0";
@@ -146,9 +147,11 @@ ClaimCheck fig4_bunching(int digits) {
     }
     const double spread = static_cast<double>(hi - lo), ratio = static_cast<double>((hi - lo) / (all_hi - all_lo));
     ok.push_back(ratio <= 0.25);
-    char m[96];
+    char m[96], s_text[32], r_text[32];
     std::snprintf(m, sizeof m, "S = %.4f mu0, S / spread of all curves = %.3f", spread, ratio);
-    c.measure("beta = " + str(beta, 4), m);
+    std::snprintf(s_text, sizeof s_text, "%.4f", spread);
+    std::snprintf(r_text, sizeof r_text, "%.3f", ratio);
+    c.measure("beta = " + str(beta, 4), m, {{"S", s_text}, {"S_over_spread", r_text}});
     if (spread > worst) {
       worst = spread;
       c.out().worst = "beta = " + str(beta, 4) + ": " + m;
@@ -188,10 +191,13 @@ ClaimCheck fig4_minimum(int digits) {
     const double gmin = static_cast<double>(m.first);
     const bool near = std::abs(gmin - 0.6) <= 0.1;
     ok.push_back(unimodal && near);
-    char t[96];
+    char t[96], g_text[32], mu_text[32];
     std::snprintf(t, sizeof t, "gamma_min = %.4f, mu_min = %.6f, %s", gmin, static_cast<double>(m.second),
                   unimodal ? "unimodal in gamma" : "NOT unimodal in gamma");
-    c.measure("beta = " + str(beta, 4), t);
+    std::snprintf(g_text, sizeof g_text, "%.4f", gmin);
+    std::snprintf(mu_text, sizeof mu_text, "%.6f", static_cast<double>(m.second));
+    c.measure("beta = " + str(beta, 4), t,
+              {{"gamma_min", g_text}, {"mu_min", mu_text}, {"unimodal", unimodal ? "yes" : "no"}});
     if (unimodal && near && std::abs(gmin - 0.6) > worst) {
       worst = std::abs(gmin - 0.6);
       c.out().worst = "beta = " + str(beta, 4) + ": " + t;
@@ -218,7 +224,8 @@ ClaimCheck fig4_scaling(int digits) {
     const Deviation dev = eq23_deviation(s, num(g0));
     c.out().cases += dev.cases;
     d.push_back(dev.value);
-    c.measure("D(gamma0 = " + std::string(g0) + ")", sci(dev.value) + " mu0 at " + dev.where);
+    c.measure("D(gamma0 = " + std::string(g0) + ")", sci(dev.value) + " mu0 at " + dev.where,
+              {{"D", sci(dev.value)}, {"where", dev.where}});
     if (std::string(g0) == "-0.3") {
       c.set_deviation(Real(dev.value));
       c.out().worst = dev.where;

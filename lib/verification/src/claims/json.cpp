@@ -19,7 +19,11 @@ std::string claims_json(const std::vector<ClaimCheck>& checks, int digits) {
         j[name] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
       } else if constexpr (std::is_same_v<V, std::vector<Measurement>>) {
         j[name] = nlohmann::json::array();
-        for (const auto& m : value) j[name].push_back({m.name, m.value});
+        for (const auto& m : value) {
+          nlohmann::ordered_json fields = nlohmann::ordered_json::object();
+          for (const auto& [key, text] : m.fields) fields[key] = text;
+          j[name].push_back({{"name", m.name}, {"value", m.value}, {"fields", std::move(fields)}});
+        }
       } else {
         j[name] = value;
       }

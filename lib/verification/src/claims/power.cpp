@@ -47,7 +47,7 @@ ClaimCheck eq24(int digits) {
       }
     }
     c.measure("p = " + std::string(ptext) + ": largest relative deviation, printed xi_n / self-similar xi",
-              sci(printed) + " / " + sci(exact));
+              sci(printed) + " / " + sci(exact), {{"printed", sci(printed)}, {"self_similar", sci(exact)}});
   }
   // The simplest counterexample: p = 3, h = 1/8 (h^(1/3) = 1/2), γ0 = 0, β = 1/2. Printed ξ = 2β = 1,
   // self-similar ξ = 4β = 2; β_c(−7/8) = 12·(1/8)^(2/3) = 3, so all three have stick.
@@ -56,14 +56,16 @@ ClaimCheck eq24(int digits) {
     const Real gamma = num("-0.875"), beta = num("0.5");
     const Real mu = s.mu(beta, gamma), mu_printed = s.mu(Real(1), Real(0)), mu_true = s.mu(Real(2), Real(0));
     c.measure("counterexample p = 3: mu(1/2, -7/8) / mu(xi = 1, 0) printed / mu(xi = 2, 0) self-similar",
-              str(mu, 15) + " / " + str(mu_printed, 15) + " / " + str(mu_true, 15));
+              str(mu, 15) + " / " + str(mu_printed, 15) + " / " + str(mu_true, 15),
+              {{"mu", str(mu, 15)}, {"printed", str(mu_printed, 15)}, {"self_similar", str(mu_true, 15)}});
   }
   // The smallest counterexample: p = 1 (the triangle), β = 1, γ = −1/2, γ0 = 0. True μ̄ = 2/5 (Eq. 18:
   // no γ dependence); the printed ξ = β·(1/(1/2))^1 = 2 gives μ̄(2, 0) = 2/3.
   {
     Solver s("power:1", digits);
     c.measure("smallest counterexample p = 1: mu(1, -1/2) / mu(xi = 2, 0) printed (exact 2/5 and 2/3)",
-              str(s.mu(Real(1), num("-0.5")), 15) + " / " + str(s.mu(Real(2), Real(0)), 15));
+              str(s.mu(Real(1), num("-0.5")), 15) + " / " + str(s.mu(Real(2), Real(0)), 15),
+              {{"mu", str(s.mu(Real(1), num("-0.5")), 15)}, {"printed", str(s.mu(Real(2), Real(0)), 15)}});
   }
   // p = 1 is the triangle (shifted by 1/4): the self-similar exponent 0 is Eq. 18, μ = 2β/(4 + β).
   {
@@ -75,6 +77,7 @@ ClaimCheck eq24(int digits) {
   // asserted: the distance to Eq. 22 must shrink as p grows.
   {
     std::string dist;
+    std::vector<std::pair<std::string, std::string>> dist_fields;
     double last = 1;
     bool shrinking = true;
     for (const char* ptext : {"8", "64", "512"}) {
@@ -84,10 +87,12 @@ ClaimCheck eq24(int digits) {
         for (const Real& beta : reals({"0.5", "1", "2"}))
           worst = std::max(worst, Check::deviation(s.mu(beta, gamma), cf::mu_square_jumping(beta, gamma)));
       dist += (dist.empty() ? "" : ", ") + std::string("p = ") + ptext + ": " + sci(worst);
+      dist_fields.emplace_back(std::string("p = ") + ptext, sci(worst));
       shrinking = shrinking && worst < last;
       last = worst;
     }
-    c.measure("p -> infinity: largest relative distance of power:p to Eq. 22 (beta 0.5..2, gamma -0.5..0.5)", dist);
+    c.measure("p -> infinity: largest relative distance of power:p to Eq. 22 (beta 0.5..2, gamma -0.5..0.5)", dist,
+              std::move(dist_fields));
     if (!shrinking) c.compare_corrected(Real(1), Real(0));
   }
   c.out().scope = "the printed exponent 1/n is right only for p = 2; for every other p listed the deviation is of order 1";

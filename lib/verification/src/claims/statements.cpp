@@ -164,7 +164,9 @@ ClaimCheck eq6_jumping(int digits) {
     c.measure("counterexample: sine, gamma = -0.5, beta = 6 (beta_c of the clipped n = 2 pi sqrt(0.75) = " +
                   str(s.beta_c(gamma), 8) + " <= 6 < 2 pi)",
               "mu/mu0 = " + str(s.mu(beta, gamma), 20) + ", stick phases: " +
-                  std::to_string(s.result(beta, gamma).stick_phases.size()));
+                  std::to_string(s.result(beta, gamma).stick_phases.size()),
+              {{"mu", str(s.mu(beta, gamma), 20)},
+               {"stick_phases", std::to_string(s.result(beta, gamma).stick_phases.size())}});
   }
   c.out().scope = "as printed it holds where the clipped rise reaches max w' (" + holds_printed +
                   "); for the sine and power:p below gamma = 0 the steepest rise of the clipped n is at first contact and "
@@ -208,7 +210,8 @@ ClaimCheck entanglement(int digits) {
     const auto m = [&](const char* b, const char* g) { return 1 - s.mu(num(b), num(g)); };
     const Real e = abs(m("0.5", "0.5") * m("1.5", "-0.5") - m("0.5", "-0.5") * m("1.5", "0.5"));
     c.measure(std::string(name) + ": |D| over the grid (in mu0); separability defect E",
-              str(dmin, 4) + " to " + str(dmax, 4) + "; E = " + (e <= tol(digits) ? std::string("0") : str(e, 4)));
+              str(dmin, 4) + " to " + str(dmax, 4) + "; E = " + (e <= tol(digits) ? std::string("0") : str(e, 4)),
+              {{"D_lo", str(dmin, 4)}, {"D_hi", str(dmax, 4)}, {"E", e <= tol(digits) ? std::string("0") : str(e, 4)}});
     (e <= tol(digits) ? separate : entangled).push_back(name);
   }
   c.out().scope = "Eq. 13 fails in the jumping range for every catalogue wave (D != 0 wherever Psi > 0); alpha and beta "
@@ -234,6 +237,7 @@ ClaimCheck continuity(int digits) {
       "s is the lower envelope of n, 1-Lipschitz in n). Smoothness: one-sided derivatives d mu/d gamma at gamma* "
       "(Richardson, h = 1e-" + std::to_string(digits / 4) + ")";
   std::string kinks;
+  std::vector<std::pair<std::string, std::string>> kink_fields;
   Real jump_err = 0;
   for (const char* name : kWaves) {
     Solver s(name, digits);
@@ -269,6 +273,7 @@ ClaimCheck continuity(int digits) {
         const Real right = side(1), left = side(-1), jump = right - left;
         if (abs(jump) > num("1e-4")) {
           kinks += (kinks.empty() ? "" : "; ") + std::string(name) + " at gamma = " + str(g, 8) + ": " + str(jump, 6);
+          kink_fields.emplace_back(std::string(name) + " at gamma = " + str(g, 8), str(jump, 6));
         }
         // The triangular waves at γ = 1: μ̄ is constant below (Eq. 18) and 1 − Ψ/γ above (Eq. 13),
         // so the jump is Ψ_w(β) exactly.
@@ -279,7 +284,7 @@ ClaimCheck continuity(int digits) {
     }
   }
   c.measure("jumps of d mu/d gamma at beta = 1.5 (right - left derivative, where larger than 1e-4)",
-            kinks.empty() ? "none" : kinks);
+            kinks.empty() ? "none" : kinks, std::move(kink_fields));
   c.measure("triangular waves at gamma = 1: jump against Psi_w(beta) (relative)", str(jump_err, 3));
   c.out().scope = "mu is Lipschitz continuous in gamma for gamma > -1 (every wave); it is not smooth where the event "
                   "structure changes, e.g. at gamma = 1 for the triangular waves (jump Psi_w(beta)) and the square wave";
@@ -344,7 +349,9 @@ ClaimCheck uniqueness(int digits) {
         vmax = std::max(vmax, d);
       }
     }
-    c.measure(k.name + ": exactly invariant", invariant ? "yes" : "no (V = " + str(Real(static_cast<double>(vmax)), 4) + ")");
+    const std::string v_text = str(Real(static_cast<double>(vmax)), 4);
+    c.measure(k.name + ": exactly invariant", invariant ? "yes" : "no (V = " + v_text + ")",
+              {{"invariant", invariant ? "yes" : "no"}, {"V", v_text}});
     if (k.invariant_expected) {
       c.compare_corrected(Real(invariant ? 0 : 1), Real(0));
     } else {
@@ -421,7 +428,8 @@ ClaimCheck uniqueness(int digits) {
     if (vmin_fourier < 0 || v < vmin_fourier) vmin_fourier = v;
   }
   c.measure("smallest V among 40 random sampled signals / 12 random Fourier waves (mu0)",
-            str(vmin_samples, 4) + " / " + str(vmin_fourier, 4));
+            str(vmin_samples, 4) + " / " + str(vmin_fourier, 4),
+            {{"samples", str(vmin_samples, 4)}, {"fourier", str(vmin_fourier, 4)}});
   c.out().scope = "holds within single-tooth waves: every triangle, of any asymmetry, is invariant (as are tri, str, stl)";
   c.out().corrected =
       "clipping leaves mu unchanged (every beta > 0, -1 < gamma <= 1) for every wave whose teeth all run linearly "
@@ -493,13 +501,18 @@ ClaimCheck convexity(int digits) {
     const auto r = s.result(beta, gamma);
     const Real pi = boost::math::constants::pi<Real>();
     std::string what = std::to_string(r.stick_phases.size()) + " stick phase(s)";
-    if (!r.stick_phases.empty())
-      what += "; the first starts at phase " + str(r.stick_phases[0].begin, 12) + " at level n = " +
-              str(r.stick_phases[0].level, 12) + " > 0, where w' = " + str(s.wave().slope_at(r.stick_phases[0].begin), 12) +
+    std::vector<std::pair<std::string, std::string>> fields{{"stick_phases", std::to_string(r.stick_phases.size())},
+                                                            {"mu", str(r.mu, 12)}};
+    if (!r.stick_phases.empty()) {
+      const std::string begin = str(r.stick_phases[0].begin, 12), level = str(r.stick_phases[0].level, 12);
+      const std::string slope = str(s.wave().slope_at(r.stick_phases[0].begin), 12);
+      what += "; the first starts at phase " + begin + " at level n = " + level + " > 0, where w' = " + slope +
               " = beta (Eq. 4), not at first contact; mu/mu0 = " + str(r.mu, 12);
+      fields.insert(fields.end(), {{"first_begin", begin}, {"first_level", level}, {"slope_at_first_begin", slope}});
+    }
     c.measure("not concave: sine, gamma = 0.5, beta = 6 (n'(first contact) = 2 pi sqrt(0.75) = " +
                   str(2 * pi * sqrt(Real(1) - gamma * gamma), 8) + " < 6 < 2 pi)",
-              what);
+              what, std::move(fields));
   }
   c.out().scope = "for every cap whose rising slope does not increase within the contact; the condition matters: the sine "
                   "at gamma = 0.5 sticks first at w' = beta (see measured)";
@@ -519,6 +532,7 @@ ClaimCheck eq23_range(int digits) {
   Solver s("sine", digits);
   const Real g0 = num("-0.3");
   std::string table, within01, within05;
+  std::vector<std::pair<std::string, std::string>> table_fields;
   bool ok01 = true, ok05 = true;
   Real d_at_1 = 0, d_low = 0;
   const auto gammas = reals({"-0.9", "-0.6", "-0.45", "-0.15", "0", "0.2", "0.4", "0.6", "0.8", "0.9", "0.95", "1"});
@@ -530,6 +544,7 @@ ClaimCheck eq23_range(int digits) {
       d = max(d, abs(s.mu(beta, gamma) - s.mu(cf::xi_harmonic(beta, gamma, g0), g0)));
     }
     table += (table.empty() ? "" : ", ") + str(gamma, 3) + ": " + str(d, 3);
+    table_fields.emplace_back(str(gamma, 3), str(d, 3));
     c.out().cases += 80;
     if ((ok01 = ok01 && d <= num("0.01"))) within01 = str(gamma, 3);
     if ((ok05 = ok05 && d <= num("0.05"))) within05 = str(gamma, 3);
@@ -540,9 +555,11 @@ ClaimCheck eq23_range(int digits) {
   c.out().cases = 0;
   c.record(d_at_1 <= num("0.05") ? 1.0 : 0.0, "gamma = 1: D = " + str(d_at_1, 6) + " mu0");
   c.out().cases = evaluations;
-  c.measure("D(gamma) in mu0, gamma: D", table);
+  c.measure("D(gamma) in mu0, gamma: D", table, std::move(table_fields));
   c.measure("largest gamma up to which every D of the grid is <= 0.01 mu0 / <= 0.05 mu0",
-            (within01.empty() ? std::string("none") : within01) + " / " + (within05.empty() ? std::string("none") : within05));
+            (within01.empty() ? std::string("none") : within01) + " / " + (within05.empty() ? std::string("none") : within05),
+            {{"within_0.01", within01.empty() ? std::string("none") : within01},
+             {"within_0.05", within05.empty() ? std::string("none") : within05}});
   c.out().scope = "Eq. 23 (gamma0 = -0.3) is off by " + str(d_at_1, 3) + " mu0 at gamma = 1 against at most " +
                   str(d_low, 3) + " mu0 for gamma <= gamma0; D <= 0.05 mu0 (the figure's scale, as for Fig. 4c) up to gamma = " +
                   within05;

@@ -69,9 +69,9 @@ ClaimCheck sec3(int digits) {
   for (const char* g : {"1.5", "3"}) {
     Solver s("sine", digits);
     const Real gamma = num(g);
-    c.measure("no jumping, sine, gamma = " + std::string(g) + ": mu(beta = 1e-30)", str(s.mu(num("1e-30"), gamma), 12) +
-                                                                                         " (1 - 1/gamma = " +
-                                                                                         str(1 - 1 / gamma, 12) + ")");
+    const std::string mu = str(s.mu(num("1e-30"), gamma), 12), limit = str(1 - 1 / gamma, 12);
+    c.measure("no jumping, sine, gamma = " + std::string(g) + ": mu(beta = 1e-30)", mu + " (1 - 1/gamma = " + limit + ")",
+              {{"mu", mu}, {"one_minus_one_over_gamma", limit}});
   }
   return c.finish_exact();
 }

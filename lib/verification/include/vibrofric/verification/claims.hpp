@@ -24,10 +24,15 @@ enum class Verdict {
 };
 std::string verdict_name(Verdict v);
 
-// A measured value that the verdict rests on, beyond the largest deviation.
+// A measured value that the verdict rests on, beyond the largest deviation: as printed, and its
+// parts as named fields, which is what the tests and the report read (never the printed text).
 struct Measurement {
-  std::string name;   // e.g. "gamma_min(beta = 1)"
-  std::string value;  // as printed, e.g. "0.5876"
+  std::string name;   // e.g. "order of D in 1/N (N = 64 -> 256)"
+  std::string value;  // as printed, e.g. "0.998 to 1.002"
+  std::vector<std::pair<std::string, std::string>> fields;  // e.g. {"lo", "0.998"}, {"hi", "1.002"}; one
+                                                            // number or word alone: {"value", ...}
+  // The field named `key`; InputError if there is none.
+  const std::string& field(const std::string& key) const;
 };
 
 struct ClaimCheck {
@@ -103,7 +108,7 @@ void for_each_field(const ClaimCheck& c, F&& f) {
 // The checks as one JSON document (`verify --format json`, the report generator): {"digits": D,
 // "claims": [{key, id, source, statement, method, how, criterion, proof,
 // worst, verdict, scope, fails_where, corrected, cases, deviation, deviation_unit,
-// corrected_deviation, measured: [[name, value], ...]}, ...]}. Deviations are decimal strings at
+// corrected_deviation, measured: [{name, value, fields: {key: value, ...}}, ...]}, ...]}. Deviations are decimal strings at
 // the working precision (a JSON number would pass through a double and underflow beyond 300
 // digits); corrected_deviation is null where a claim has no corrected statement.
 std::string claims_json(const std::vector<ClaimCheck>& checks, int digits);
