@@ -29,6 +29,12 @@ COMMANDS = [
     ("harmonic sweep, 360 points, 50 digits (bench/run's)", ["sweep"] + HARMONIC_50 + ["--threads", "1"]),
     ("sphere + sine, 12 points, guaranteed double", ["sweep"] + SPHERE + ["--type", "double"]),
     ("sphere + sine, 12 points, 50 digits", ["sweep"] + SPHERE + ["--digits", "50"]),
+    # The ordered parallel stream (evaluate_stream) on two threads.
+    ("uniform sine sweep, 250,000 points, guaranteed double, 2 threads",
+     ["sweep", "--wave", "sine", "--beta", "0.01:6:500", "--gamma=-0.99:2:500", "--type", "double", "--threads", "2"]),
+    ("harmonic sweep, 360 points, 50 digits, 2 threads", ["sweep"] + HARMONIC_50 + ["--threads", "2"]),
+    ("sphere + sine, 12 points, 50 digits, 2 threads",
+     ["sweep"] + SPHERE[:-2] + ["--digits", "50", "--threads", "2"]),
 ]
 CONTROL = [sys.executable, "-c", "s = 0\nfor i in range(3 * 10**6): s += i * i"]
 
