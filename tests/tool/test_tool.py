@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Command-line tests of the vibrofric tool.
+"""Command-line tests of the vibrofric tool, one pytest test per case.
 
-Usage:  /usr/bin/python3 test_tool.py PATH/TO/vibrofric
+Usage:  VIBROFRIC_TOOL=PATH/TO/vibrofric /usr/bin/python3 -m pytest -q tests/tool/test_tool.py
 
-Standard library only. One line per test ("ok" or "FAIL" and the reason), then a closing line
-"N passed, M failed"; the exit status is non-zero if any test failed.
+pytest and the standard library only. Each check is a case (case(name, fn)); the groups below
+collect them at import and test_case runs each as its own test, in the order collected.
 
 Every expected value is computed here from a closed form, in exact rational arithmetic
 (fractions.Fraction, from the decimal input strings) or with decimal at high precision; the tool
@@ -13,27 +13,27 @@ ones that are about the tool itself: the --type double vs --digits 40 accuracy c
 determinism of sweep, and physical's mu_over_mu0 against mu at the same beta and gamma.
 """
 
+import atexit
 import decimal
 import math
 import os
+import shutil
 import json
 import re
 import subprocess
-import sys
 import tempfile
-import time
 from decimal import Decimal
 from fractions import Fraction
 
-if len(sys.argv) != 2:
-    sys.stderr.write("usage: test_tool.py PATH/TO/vibrofric\n")
-    sys.exit(2)
+import pytest
 
-TOOL = os.path.abspath(sys.argv[1])
+if not os.environ.get("VIBROFRIC_TOOL"):
+    raise SystemExit("test_tool.py: set VIBROFRIC_TOOL to the vibrofric tool to test")
+TOOL = os.path.abspath(os.environ["VIBROFRIC_TOOL"])
 TMP = tempfile.mkdtemp(prefix="vibrofric-tool-test-")
+atexit.register(shutil.rmtree, TMP, ignore_errors=True)
 
-passed = 0
-failed = 0
+CASES = []
 
 
 class Fail(AssertionError):
@@ -50,20 +50,9 @@ def cmd(args):
     return "vibrofric " + " ".join(repr(a) if (a == "" or " " in a) else a for a in args)
 
 
-def test(name, fn):
-    global passed, failed
-    try:
-        fn()
-    except Fail as e:
-        failed += 1
-        print("FAIL %s: %s" % (name, e))
-    except Exception as e:                       # a crash of the test itself counts as a failure
-        failed += 1
-        print("FAIL %s: %s: %s" % (name, type(e).__name__, e))
-    else:
-        passed += 1
-        print("ok   %s" % name)
-    sys.stdout.flush()
+def case(name, fn):
+    """One test: collected here, run by pytest (test_case below) in the order of collection."""
+    CASES.append((name, fn))
 
 
 def ok_run(args):
@@ -179,7 +168,7 @@ def bad(name, args, values=(), words=()):
                 problems.append("message does not contain %r" % w)
         if problems:
             raise Fail("%s: %s; stderr was %r" % (cmd(args), "; ".join(problems), err))
-    test("bad-input " + name, fn)
+    case("bad-input " + name, fn)
 
 
 def write(name, text):
@@ -454,25 +443,25 @@ def format_tests():
             if sig_digits(s) != d:
                 raise Fail("%s printed %r: %d significant digits, expected %d"
                            % (cmd(base + ["--digits", str(d)]), s, sig_digits(s), d))
-        test("format mu --digits %d prints %d significant digits (sine)" % (d, d), fn)
+        case("format mu --digits %d prints %d significant digits (sine)" % (d, d), fn)
 
     # the same with an exactly known value: stl, beta 1, any gamma in (-1, 1) -> 1/3
     for d in (1, 5, 50, 200, 10000):
         def fn(d=d):
             a = ["mu", "--wave", "sawtooth-left", "--beta", "1", "--gamma", "0.5", "--digits", str(d)]
             expect_digits(one_line(a), Fraction(1, 3), d, cmd(a))
-        test("format mu --digits %d = 1/3 correctly rounded (stl beta 1)" % d, fn)
+        case("format mu --digits %d = 1/3 correctly rounded (stl beta 1)" % d, fn)
     for d in (1, 5, 50, 200):
         def fn(d=d):
             a = ["mu", "--wave", "triangle", "--beta", "4", "--gamma", "0.5", "--digits", str(d)]
             expect_exact_one(one_line(a), d, cmd(a))
-        test("format mu = 1 printed with %d digits (tri beta 4)" % d, fn)
+        case("format mu = 1 printed with %d digits (tri beta 4)" % d, fn)
 
     def default_digits():
         s = one_line(base)
         if sig_digits(s) != 50:
             raise Fail("%s printed %r, %d digits; the default is 50" % (cmd(base), s, sig_digits(s)))
-    test("format mu default prints 50 digits", default_digits)
+    case("format mu default prints 50 digits", default_digits)
 
     def double():
         a = base + ["--type", "double"]
@@ -483,7 +472,7 @@ def format_tests():
         if Decimal("%.16e" % x) != Decimal(s):
             raise Fail("%s printed %r, which does not round-trip through a double (%r)"
                        % (cmd(a), s, "%.16e" % x))
-    test("format --type double: 17 significant digits, round-trips", double)
+    case("format --type double: 17 significant digits, round-trips", double)
 
     def double_exact():
         # tri, beta 1, gamma -0.5: 2/5; the double nearest 0.4 is 0.40000000000000002220...
@@ -492,26 +481,26 @@ def format_tests():
         if sig_digits(s) != 17 or abs(Fraction(float(s)) - Fraction(2, 5)) > 2 * Fraction(math.ulp(0.4)):
             raise Fail("%s printed %r, expected 0.40000000000000002 (17 digits, within 2 ulp of 2/5)"
                        % (cmd(a), s))
-    test("format --type double value 2/5 (tri beta 1 gamma -0.5)", double_exact)
+    case("format --type double value 2/5 (tri beta 1 gamma -0.5)", double_exact)
 
     def long_double():
         a = base + ["--type", "long-double"]
         s = one_line(a)
         if sig_digits(s) != 21:
             raise Fail("%s printed %r: %d significant digits, expected 21" % (cmd(a), s, sig_digits(s)))
-    test("format --type long-double: 21 significant digits", long_double)
+    case("format --type long-double: 21 significant digits", long_double)
 
     for t, d in (("cpp_bin_float_50", 50), ("cpp_bin_float_100", 100), ("mpfr", 50)):
         def fn(t=t, d=d):
             a = ["mu", "--wave", "sawtooth-left", "--beta", "1", "--gamma", "0.5", "--type", t]
             expect_digits(one_line(a), Fraction(1, 3), d, cmd(a))
-        test("format --type %s: %d digits, 1/3 correctly rounded" % (t, d), fn)
+        case("format --type %s: %d digits, 1/3 correctly rounded" % (t, d), fn)
 
     def mpfr_digits():
         a = ["mu", "--wave", "sawtooth-left", "--beta", "1", "--gamma", "0.5", "--type", "mpfr",
              "--digits", "30"]
         expect_digits(one_line(a), Fraction(1, 3), 30, cmd(a))
-    test("format --type mpfr --digits 30 allowed", mpfr_digits)
+    case("format --type mpfr --digits 30 allowed", mpfr_digits)
 
     def neg_gamma():
         a1 = ["mu", "--wave", "sine", "--beta", "1", "--gamma", "-0.3"]
@@ -522,7 +511,7 @@ def format_tests():
             raise Fail("different outputs: %r, %r, %r" % (s1, s2, s3))
         if not (0 < F(s1) < 1):
             raise Fail("%s printed %r, expected a value in (0, 1)" % (cmd(a1), s1))
-    test("format negative gamma: --gamma -0.3 and --gamma=-0.3 agree", neg_gamma)
+    case("format negative gamma: --gamma -0.3 and --gamma=-0.3 agree", neg_gamma)
 
     def signs_and_forms():
         outs = set()
@@ -530,7 +519,7 @@ def format_tests():
             outs.add(one_line(["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--digits", "30"]))
         if len(outs) != 1:
             raise Fail("equal inputs written differently gave different outputs: %s" % sorted(outs))
-    test("format equivalent decimal spellings give identical output", signs_and_forms)
+    case("format equivalent decimal spellings give identical output", signs_and_forms)
 
     def aliases():
         for full, short in (("sine", "harmonic"), ("triangle", "tri"), ("sawtooth-right", "str"),
@@ -539,13 +528,13 @@ def format_tests():
             y = one_line(["mu", "--wave", short, "--beta", "0.7", "--gamma", "0.2"])
             if x != y:
                 raise Fail("--wave %s gave %r but --wave %s gave %r" % (full, x, short, y))
-    test("format wave aliases (harmonic, tri, str, stl, sqr) agree with full names", aliases)
+    case("format wave aliases (harmonic, tri, str, stl, sqr) agree with full names", aliases)
 
     def psi_line():
         s = one_line(["psi", "--wave", "sine", "--beta", "1"])
         if sig_digits(s) != 50 or not (0 < F(s) < 1):
             raise Fail("psi printed %r, expected one 50-digit value in (0, 1)" % s)
-    test("format psi prints one line", psi_line)
+    case("format psi prints one line", psi_line)
 
     def failure_hygiene():
         # beta = 1e-320 is a valid (subnormal in double) input: either a value in (0, beta/gamma]
@@ -562,7 +551,7 @@ def format_tests():
                                % (cmd(a), rc, out, err))
             else:
                 raise Fail("%s: exit %d, stderr %r" % (cmd(a), rc, err))
-    test("failure message names the value: beta 1e-320 (double, long-double, 20 digits)",
+    case("failure message names the value: beta 1e-320 (double, long-double, 20 digits)",
          failure_hygiene)
 
     sweep_tests()
@@ -575,7 +564,7 @@ def format_tests():
             for word in ("mu", "psi", "sweep", "physical", "verify"):
                 if not mentions(out, word):
                     raise Fail("%s does not list the command %r" % (cmd(a), word))
-    test("help: vibrofric --help / -h / help exit 0 with usage on stdout", help_main)
+    case("help: vibrofric --help / -h / help exit 0 with usage on stdout", help_main)
 
     def help_physical():
         rc, out, err = run(["physical", "--help"])
@@ -585,13 +574,13 @@ def format_tests():
                      "--A", "--u-mean", "--mu0"):
             if flag not in out:
                 raise Fail("physical --help does not mention %s" % flag)
-    test("help: vibrofric physical --help exits 0 with usage on stdout", help_physical)
+    case("help: vibrofric physical --help exits 0 with usage on stdout", help_physical)
 
     def help_mu():
         rc, out, err = run(["mu", "--help"])
         if rc != 0 or "usage" not in out.lower() or err:
             raise Fail("vibrofric mu --help: exit %d, stdout %r, stderr %r" % (rc, out[:80], err))
-    test("help: vibrofric mu --help exits 0 with usage on stdout", help_mu)
+    case("help: vibrofric mu --help exits 0 with usage on stdout", help_mu)
 
     def verify():
         out = ok_run(["verify", "--digits", "20"])
@@ -627,7 +616,7 @@ def format_tests():
                 or (dev != 0 and dev.adjusted() < -360):
             raise Fail("vibrofric verify --digits 300 --format json: deviation %r, corrected %r" % (
                 c["deviation"], c["corrected_deviation"]))
-    test("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
+    case("verify exits 0 with a row for every claim of model.md; --claim runs one", verify)
 
     def formats():
         # --format csv|json carry the same values as the text output; CSV fields that hold a comma or
@@ -656,7 +645,7 @@ def format_tests():
         pc = list(csvmod.reader(io.StringIO(ok_run(base + ["--format", "csv"]))))
         if pj != text_lines or dict(zip(pc[0], pc[1])) != text_lines or list(pj) != pc[0]:
             raise Fail("physical formats differ: text %r, json %r, csv %r" % (text_lines, pj, pc))
-    test("--format csv|json for mu, sweep and physical: the text's values; RFC 4180 quoting", formats)
+    case("--format csv|json for mu, sweep and physical: the text's values; RFC 4180 quoting", formats)
 
     def sweep_ranges():
         # log:FROM:TO:N is geometric with both ends exact; --gamma FROM:TO:N runs downwards too; the
@@ -679,7 +668,7 @@ def format_tests():
             want = (4 - F(b)) / (4 + F(b))
             if abs(F(v) - want) > Fraction(1, 10 ** 19):
                 raise Fail("sweep psi tri beta %s: %s, Eq. 17 gives %s" % (b, v, dec(want, 20)))
-    test("sweep: log-spaced beta, a descending gamma range, --quantity psi (Eqs. 17, 19)", sweep_ranges)
+    case("sweep: log-spaced beta, a descending gamma range, --quantity psi (Eqs. 17, 19)", sweep_ranges)
 
     def trace_first_contact():
         # The contact boundaries are rows of the trace, with n = 0 exactly (not the rounding of
@@ -691,7 +680,7 @@ def format_tests():
             raise Fail("trace at first contact: %r" % edge)
         if any(r[1] != "0" and decimal.Decimal(r[1]) < decimal.Decimal("1e-15") for r in rows):
             raise Fail("trace prints a rounding residue as n: %r" % rows)
-    test("trace: n = 0 exactly at the contact boundaries, which are rows", trace_first_contact)
+    case("trace: n = 0 exactly at the contact boundaries, which are rows", trace_first_contact)
 
     def no_escalate():
         # A switch: alone it is on and takes no value; =0/false/no leave escalation on (the same digits
@@ -705,7 +694,7 @@ def format_tests():
         raw = ok_run(["mu", "--wave", "sine", "--no-escalate", "--beta", "1e-6", "--gamma=-0.99999", "--type", "double"])
         if raw == escalated or ok_run(base + ["--no-escalate=true"]) != raw:
             raise Fail("--no-escalate alone printed %r, escalated %r" % (raw, escalated))
-    test("--no-escalate is a switch: alone on, =0/false/no off, never swallowing the next flag", no_escalate)
+    case("--no-escalate is a switch: alone on, =0/false/no off, never swallowing the next flag", no_escalate)
 
     def sample_layouts():
         # One period of a 7-sample signal in every layout of the grammar gives one and the same value,
@@ -733,7 +722,7 @@ def format_tests():
             tol = decimal.Decimal("1e-29") if name.startswith(("time", "value")) else 0
             if abs(decimal.Decimal(v) - ref) > tol:
                 raise Fail("samples layout %s gives %s, one column gives %s" % (name, v, got["column"]))
-    test("samples files: every layout of one period gives the same mu (separators, CRLF, BOM, header, time column)",
+    case("samples files: every layout of one period gives the same mu (separators, CRLF, BOM, header, time column)",
          sample_layouts)
 
     def trace():
@@ -745,14 +734,14 @@ def format_tests():
         # Triangle, gamma = 3, beta = 1 < 4: s <= n everywhere, and s = n somewhere (slip) and s < n (stick).
         if any(r[2] > r[1] for r in rows) or not any(r[2] == r[1] for r in rows) or not any(r[2] < r[1] for r in rows):
             raise Fail("trace violates s <= n or has no stick/slip: %r" % rows)
-    test("trace: phases sorted over one period, s <= n, both stick and slip present", trace)
+    case("trace: phases sorted over one period, s <= n, both stick and slip present", trace)
 
     def version():
         out = ok_run(["version"])
         for word in ("vibrofric", "boost 1.81", "mpfr", "gmp", "compiler"):
             if word not in out:
                 raise Fail("vibrofric version lacks %r: %r" % (word, out))
-    test("version names vibrofric, compiler, Boost 1.81, MPFR and GMP", version)
+    case("version names vibrofric, compiler, Boost 1.81, MPFR and GMP", version)
 
 
 def sweep_tests():
@@ -776,7 +765,7 @@ def sweep_tests():
                 G = F(g)
                 exact = 2 * b / (4 + b) if G <= 1 else 1 - (4 - b) / ((4 + b) * G)
                 expect_digits(ms, exact, 50, "%s row %d" % (cmd(a), i))
-    test("sweep header, gamma outer / beta inner, both ends, values (tri)", header_and_order)
+    case("sweep header, gamma outer / beta inner, both ends, values (tri)", header_and_order)
 
     def grid_rounding():
         # betas 1e-3 + i (1 - 1e-3)/4 are not all short decimals: printed with <= 17 digits,
@@ -799,7 +788,7 @@ def sweep_tests():
                 raise Fail("betas not ascending at row %d" % (i + 1))
             prev = F(bs)
             expect_digits(ms, F(bs) / (2 + F(bs)), 30, "%s row %d" % (cmd(a), i + 1))
-    test("sweep beta grid printed exactly as evaluated, ascending, ends included", grid_rounding)
+    case("sweep beta grid printed exactly as evaluated, ascending, ends included", grid_rounding)
 
     def single_point():
         a = ["sweep", "--wave", "square", "--beta", "1:1:1", "--gamma", "-0.5,0.5"]
@@ -809,7 +798,7 @@ def sweep_tests():
         # square, Eq. 22: g = -0.5: b = 1 >= 2(1+g) = 1 -> 1 - 0.5/1 = 1/2; g = 0.5: b < 3 -> 1/6
         expect_digits(lines[1].split(",")[3], Fraction(1, 2), 50, cmd(a) + " row 1")
         expect_digits(lines[2].split(",")[3], Fraction(1, 6), 50, cmd(a) + " row 2")
-    test("sweep N = 1 (FROM = TO), two gammas (square, Eq. 22)", single_point)
+    case("sweep N = 1 (FROM = TO), two gammas (square, Eq. 22)", single_point)
 
     def deterministic():
         a = ["sweep", "--wave", "sine", "--beta", "0.001:7:30", "--gamma", "-0.9,-0.3,0,0.5,1.5",
@@ -828,7 +817,7 @@ def sweep_tests():
             bs = [F(l.split(",")[1]) for l in lines[1 + 30 * k:31 + 30 * k]]
             if bs[0] != Fraction(1, 1000) or bs[-1] != 7 or any(x >= y for x, y in zip(bs, bs[1:])):
                 raise Fail("betas for gamma block %d not ascending from 0.001 to 7" % k)
-    test("sweep deterministic: repeated runs and --threads 0/1/2 byte-identical", deterministic)
+    case("sweep deterministic: repeated runs and --threads 0/1/2 byte-identical", deterministic)
 
     def double_sweep():
         a = ["sweep", "--wave", "triangle", "--beta", "1:3:3", "--gamma", "-0.5", "--type", "double"]
@@ -838,7 +827,7 @@ def sweep_tests():
             exact = Fraction(2 * b, 4 + b)
             if sig_digits(m) != 17 or abs(Fraction(float(m)) - exact) > 2 * Fraction(math.ulp(float(exact))):
                 raise Fail("%s: row %r, expected %s within 2 ulp" % (cmd(a), l, dec(exact, 17)))
-    test("sweep --type double values (tri)", double_sweep)
+    case("sweep --type double values (tri)", double_sweep)
 
 
 # --------------------------------------------------------------------------------------------
@@ -853,7 +842,7 @@ def mu_closed(wave, beta, gamma, exact, digits=50, name=None):
             expect_exact_one(s, digits, cmd(a))
         else:
             expect_digits(s, exact, digits, cmd(a))
-    test(name or "value mu %s beta=%s gamma=%s" % (wave, beta, gamma), fn)
+    case(name or "value mu %s beta=%s gamma=%s" % (wave, beta, gamma), fn)
 
 
 def psi_closed(wave, beta, exact, digits=50):
@@ -865,7 +854,7 @@ def psi_closed(wave, beta, exact, digits=50):
                 raise Fail("%s printed %r, expected 0" % (cmd(a), s))
         else:
             expect_digits(s, exact, digits, cmd(a))
-    test("value psi %s beta=%s" % (wave, beta), fn)
+    case("value psi %s beta=%s" % (wave, beta), fn)
 
 
 def value_tests():
@@ -954,7 +943,7 @@ def value_tests():
                         if not 0 < F(s) <= F(b) / F(g):
                             raise Fail("%s printed %s: expected 0 < mu/mu0 <= beta/gamma = %s"
                                        % (cmd(a), s, dec(F(b) / F(g), 5)))
-                    test("range 0 < mu <= beta/gamma: %s" % " ".join(a[1:]), fn)
+                    case("range 0 < mu <= beta/gamma: %s" % " ".join(a[1:]), fn)
 
 
 def typed_closed(wave, beta, gamma, prec, exact):
@@ -973,7 +962,7 @@ def typed_closed(wave, beta, gamma, prec, exact):
         ulp = Fraction(2) ** (math.floor(math.log2(exact)) - mant + 1)
         if abs(F(s) - exact) > 2 * ulp + half_ulp(s):
             raise Fail("%s printed %s, expected %s (within 2 ulp)" % (cmd(a), s, dec(exact, digits)))
-    test("value small beta %s" % " ".join(a[1:]), fn)
+    case("value small beta %s" % " ".join(a[1:]), fn)
 
 
 def physical_tests():
@@ -1029,7 +1018,7 @@ def physical_tests():
             raise Fail("mu_over_mu0 = %s but mu --beta %s --gamma 0.5 = %s"
                        % (got["mu_over_mu0"], b, m))
         expect_digits(got["mu"], F(got["mu_over_mu0"]) * mu0, 50, "mu = mu0 * mu_over_mu0")
-    test("physical steel on steel (sine): E*, G*, k_z, k_x, beta, gamma (Eqs. 1, 5, 14), mu", steel_fn)
+    case("physical steel on steel (sine): E*, G*, k_z, k_x, beta, gamma (Eqs. 1, 5, 14), mu", steel_fn)
 
     # 2. steel on aluminium with explicit shear moduli; triangle, gamma 0.25: mu = 2b/(4+b)
     alu = dict(E1="210e9", nu1="0.3", E2="70e9", nu2="0.33", G1="80e9", G2="26e9", radius="0.0025",
@@ -1055,7 +1044,7 @@ def physical_tests():
         exact["contact_fraction"] = (1 + exact["gamma"]) / 2
         exact["stick_fraction"] = 2 * (1 + exact["gamma"]) / (4 + b)
         check_groups(a, got, exact, 40)
-    test("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
+    case("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
 
     # 2b. rubber (nu = 0.5, incompressible) on steel: Eq. 1 as for any nu
     def rubber_fn():
@@ -1063,7 +1052,7 @@ def physical_tests():
         got = parse(ok_run(a))
         exact, _ = groups(**dict(steel, E1="5e6", nu1="0.5"))
         check_groups(a, got, {k: exact[k] for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma")}, 40)
-    test("physical rubber (nu = 0.5) on steel: E*, G*, beta, gamma", rubber_fn)
+    case("physical rubber (nu = 0.5) on steel: E*, G*, beta, gamma", rubber_fn)
 
     # 2c. the mean normal load instead of the indentation (--F-N): the triangle's N(gamma) = (1 + gamma)^2/4
     # in the jumping range gives gamma = 2 sqrt(F_N/(k_z A)) - 1 in closed form; the sine and the sphere
@@ -1086,7 +1075,7 @@ def physical_tests():
             again = parse(ok_run(replace_flag(base, "--u-mean", "--F-N", ref["F_N_mean_N"])))
             close(again["gamma"], F(ref["gamma"]), 26, "round trip %s: gamma" % shape)
             close(again["mu_over_mu0"], F(ref["mu_over_mu0"]), 26, "round trip %s: mu" % shape)
-    test("physical --F-N: gamma from the mean normal load (triangle closed form; sine and sphere round trip)", load_fn)
+    case("physical --F-N: gamma from the mean normal load (triangle closed form; sine and sphere round trip)", load_fn)
 
     # 3. non-jumping (gamma 2) and above beta_c: mu = mu0 exactly
     def fast_fn():
@@ -1099,7 +1088,7 @@ def physical_tests():
         exact["mu"] = mu0
         exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(ex["A"]) * exact["gamma"]  # N = gamma, no jumping
         check_groups(a, got, exact, 50)
-    test("physical steel on steel above beta_c: mu = mu0 exactly", fast_fn)
+    case("physical steel on steel above beta_c: mu = mu0 exactly", fast_fn)
 
     # 4. --type double
     def double_fn():
@@ -1111,7 +1100,7 @@ def physical_tests():
             if sig_digits(s) != 17 or abs(Fraction(float(s)) - exact[k]) > 4 * Fraction(math.ulp(float(exact[k]))):
                 raise Fail("%s: %s = %s, expected %s (17 digits, within 4 ulp)"
                            % (cmd(a), k, s, dec(exact[k], 17)))
-    test("physical --type double: 17 digits, groups within 4 ulp", double_fn)
+    case("physical --type double: 17 digits, groups within 4 ulp", double_fn)
 
     # 5. curved indenters (model.md MDR). Triangle wave, jumping: w is uniform on [-1, 1], so
     # <d^k> over d = A max(gamma + w, 0) is A^k (1 + gamma)^(k+1)/(2(k+1)). Hertz: F = (4/3) E* R^(1/2)
@@ -1147,9 +1136,9 @@ def physical_tests():
         tan = Decimal(1)                   # half-angle 45 degrees
         pi = Decimal("3.14159265358979323846264338327950288419716939937510582097494459")
         return 2 * E * tan / pi * A ** 2 * (1 + g) ** 3 / 6
-    test("physical --shape sphere (triangle): Eq. 19 and the Hertz mean load",
+    case("physical --shape sphere (triangle): Eq. 19 and the Hertz mean load",
          curved_fn(["--shape", "sphere", "--R", "0.01"], hertz))
-    test("physical --shape cone (triangle): Eq. 19 and the Sneddon mean load",
+    case("physical --shape cone (triangle): Eq. 19 and the Sneddon mean load",
          curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon))
 
 
@@ -1173,7 +1162,7 @@ def double_accuracy_tests():
                     if err > 2:
                         raise Fail("%s: --type double %s, --digits 40 %s: %.2f ulp apart (> 2)"
                                    % (cmd(a), d, h, float(err)))
-                test("double-accuracy %s beta=%s gamma=%s" % (w, b, g), fn)
+                case("double-accuracy %s beta=%s gamma=%s" % (w, b, g), fn)
 
 
 def solver_failure(name, args, words):
@@ -1192,7 +1181,7 @@ def solver_failure(name, args, words):
                 problems.append("message lacks %r" % w)
         if problems:
             raise Fail("%s: %s; stderr was %r" % (cmd(args), "; ".join(problems), err))
-    test("failure-is-error " + name, fn)
+    case("failure-is-error " + name, fn)
 
 
 def failure_tests():
@@ -1231,7 +1220,7 @@ def failure_tests():
         quad = ok_run(a + ["--area", "quadrature", "--max-iterations", "1000", "--max-levels", "20"]).strip()
         if exact != quad:
             raise Fail("exact %s, quadrature %s" % (exact, quad))
-    test("failure-is-error: generous budgets give the exact-area value (control)", generous_budget_agrees)
+    case("failure-is-error: generous budgets give the exact-area value (control)", generous_budget_agrees)
 
 
 # --------------------------------------------------------------------------------------------
@@ -1278,7 +1267,7 @@ def cli_tests():
             extra = set(listed) - set(flags) - {"--help"}
             if extra:
                 raise Fail("%s --help lists flags the command does not document: %r" % (command, extra))
-    test("--help for every command lists every flag, with its default", help_every_command)
+    case("--help for every command lists every flag, with its default", help_every_command)
 
     mu = ["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5"]
     bad("--beta --gamma 0 (a flag where a value belongs)", ["mu", "--wave", "sine", "--beta", "--gamma", "0"],
@@ -1333,7 +1322,7 @@ def cli_tests():
         js = json.loads(ok_run(physical_args(**{"--A": "1e-6:2e-6:2", "--format": "json"})))
         if [d["A"] for d in js] != ["1e-06", "2e-06"]:
             raise Fail("physical --A sweep as json: %r" % js)
-    test("physical: one input swept (--v0, --F-N, --A), each row the single-point output", physical_sweep)
+    case("physical: one input swept (--v0, --F-N, --A), each row the single-point output", physical_sweep)
 
     def fit_sine():
         # 64 uniform samples of 3 + 2 sin(2 pi phi) - 0.5 cos(4 pi phi): the DFT gives these coefficients
@@ -1361,7 +1350,7 @@ def cli_tests():
             ref = Decimal(ok_run(["mu", "--wave", "sine", "--beta", "2", "--gamma", g, "--digits", "20"]))
             if abs(got - ref) > Decimal("1e-13"):
                 raise Fail("mu of the fitted sine %s, of the sine %s (gamma %s)" % (got, ref, g))
-    test("fit: DFT coefficients of a trigonometric polynomial; the fitted sine is the sine", fit_sine)
+    case("fit: DFT coefficients of a trigonometric polynomial; the fitted sine is the sine", fit_sine)
     bad("fit: 2K >= samples", ["fit", "--wave", "samples:" + write("fit-4.txt", "0\n1\n0\n-1\n"), "--harmonics", "2"],
         ["2"], ["harmonics"])
     bad("fit: a catalogue wave", ["fit", "--wave", "sine", "--harmonics", "2"], ["sine"], ["samples"])
@@ -1388,7 +1377,7 @@ def cli_tests():
         for name, want in checks.items():
             if name not in diag or abs(F(diag[name].split()[0]) - want) > Fraction(1, 10 ** 15):
                 raise Fail("--diagnostics %s = %r, expected %s; stderr %r" % (name, diag.get(name), want, err))
-    test("--column by name and index; --diagnostics prints the normalisation on stderr", column_and_diagnostics)
+    case("--column by name and index; --diagnostics prints the normalisation on stderr", column_and_diagnostics)
     def time_names_and_tabs():
         # A rig's export names its time column in many ways; every one must give the stamps (the
         # non-uniform phases), not uniform phases read silently: the same mu as the plain 'time'.
@@ -1407,7 +1396,7 @@ def cli_tests():
                       "--digits", "25"])
         if got != ref:
             raise Fail("tab-separated table with spaces in its names: mu %r, the comma table %r" % (got, ref))
-    test("samples tables: time columns named as rigs export them, tab-separated names with spaces", time_names_and_tabs)
+    case("samples tables: time columns named as rigs export them, tab-separated names with spaces", time_names_and_tabs)
     bad("three columns without --column names them", ["mu", "--wave", "samples:" + write("three-c.csv", "time,x,y\n0,5,1\n1,6,3\n2,7,2\n3,5,1\n"),
                                                      "--beta", "1", "--gamma", "0"], ["'x'", "'y'"], ["--column"])
     bad("physical u-mean into no contact, named as typed", physical_args(**{"--u-mean": "-2e-5"}), ["-2e-5"], ["--u-mean", "contact"])
@@ -1448,7 +1437,7 @@ def claim_detail_tests():
                     raise Fail("verify --claim %s: text %s %r, JSON %s %r" % (key, label, shown.get(label), field, c[field]))
                 if not c[field] and label in shown:
                     raise Fail("verify --claim %s: text shows %s %r, JSON %s is empty" % (key, label, shown[label], field))
-    test("verify: the text and JSON formats publish the same fields", text_and_json_agree)
+    case("verify: the text and JSON formats publish the same fields", text_and_json_agree)
 
     def sec3_cases():
         # The case count is the grid the claim states: "WAVES (gamma = LIST)" groups in `how`.
@@ -1457,7 +1446,7 @@ def claim_detail_tests():
         stated = sum(len(w.split(", ")) * len(g.split(", ")) for w, g in groups)
         if len(groups) != 2 or stated != 5 * 6 + 2 * 3 or c["cases"] != stated:
             raise Fail("verify sec3: %d cases, its grid %r states %d" % (c["cases"], groups, stated))
-    test("verify sec3: the case count is the stated grid (power caps at gamma <= 0, including 0)", sec3_cases)
+    case("verify sec3: the case count is the stated grid (power caps at gamma <= 0, including 0)", sec3_cases)
 
     def eq23_order():
         # The published order is log(d1/d2)/log(h1/h2) of the two published deviations it names: with
@@ -1474,7 +1463,7 @@ def claim_detail_tests():
         if not (float(order - half) <= hi and lo <= float(order + half)) or (g1, g2) != (-0.99, -0.999):
             raise Fail("verify eq23: order %s from gamma0 = %s, %s; the deviations %s, %s give %.4f to %.4f" % (
                 order, g1, g2, d1, d2, lo, hi))
-    test("verify eq23: the published order follows from the published deviations", eq23_order)
+    case("verify eq23: the published order follows from the published deviations", eq23_order)
 
     def entanglement_range():
         # |D| = |mu - (1 - Psi/gamma)| over the stated grid, recomputed from mu and psi at 20 digits.
@@ -1492,7 +1481,7 @@ def claim_detail_tests():
                 if abs(F(printed) - want) > half_ulp(printed):
                     raise Fail("verify entanglement %s: |D| range %s, recomputed %s to %s" % (
                         wave, got, dec(min(ds), 6), dec(max(ds), 6)))
-    test("verify entanglement: the published |D| range is the grid's, recomputed from mu and psi", entanglement_range)
+    case("verify entanglement: the published |D| range is the grid's, recomputed from mu and psi", entanglement_range)
 
 
 def range_and_fit_detail_tests():
@@ -1508,7 +1497,7 @@ def range_and_fit_detail_tests():
         want = ["0", dec(Fraction(1, 3), 17), dec(Fraction(2, 3), 17), "1"]
         if betas != want:
             raise Fail("sweep --gamma 0:1:4 printed gamma %r, expected %r" % (betas, want))
-    test("sweep: interior range points carry 17 significant digits", range_values_17_digits)
+    case("sweep: interior range points carry 17 significant digits", range_values_17_digits)
 
     def fit_condition_number():
         # Time stamps j/N over one period: the design [1, cos 2 pi k phi, sin 2 pi k phi] has orthogonal
@@ -1524,7 +1513,7 @@ def range_and_fit_detail_tests():
             if not got:
                 raise Fail("fit --harmonics %d of time stamps: no condition number in %r" % (k, out[:300]))
             expect_digits(got.group(1), want, 3, "fit --harmonics %d: condition number" % k)
-    test("fit: the condition number of a uniform stamped design is sqrt((1 + K)(1 + 4K))", fit_condition_number)
+    case("fit: the condition number of a uniform stamped design is sqrt((1 + K)(1 + 4K))", fit_condition_number)
 
     def power_far_beyond_the_digits():
         # power:p tends to the square wave with a distance O(1/p) (Eq. 21-22): at p = 1e150 and 1e250 the
@@ -1533,11 +1522,10 @@ def range_and_fit_detail_tests():
         for p in ("1e150", "1e250"):
             expect_digits(ok_run(["mu", "--wave", "power:" + p, "--beta", "1", "--gamma", "0.5", "--digits", "20"]).strip(),
                           Fraction(1, 6), 20, "power:%s at 20 digits (Eq. 22 limit)" % p)
-    test("mu: power:p with p far above 10^digits reaches the square wave's value (Eq. 22)", power_far_beyond_the_digits)
+    case("mu: power:p with p far above 10^digits reaches the square wave's value (Eq. 22)", power_far_beyond_the_digits)
 
 
-def main():
-    t0 = time.time()
+def collect():
     bad_input_tests()
     format_tests()
     value_tests()
@@ -1547,14 +1535,11 @@ def main():
     cli_tests()
     claim_detail_tests()
     range_and_fit_detail_tests()
-    print("# %.1f s" % (time.time() - t0))
-    print("%d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
 
 
-if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    finally:
-        import shutil
-        shutil.rmtree(TMP, ignore_errors=True)
+collect()
+
+
+@pytest.mark.parametrize("fn", [fn for _, fn in CASES], ids=[name for name, _ in CASES])
+def test_case(fn):
+    fn()

@@ -399,6 +399,8 @@ class PointEvaluator {
 // thread delivers slot after slot in index order. A worker that claims a point a whole ring ahead
 // of the next undelivered one waits until that slot is delivered: memory is the ring, whatever
 // count is. Slots publish their index + 1 (release) once written, so the ring is never cleared.
+// Not oneTBB's parallel_pipeline: as fast as this ring, but Debian ships it as a shared library
+// only, and the dynamic tool measured 10-45 % slower on two-thread streams (bench/results/tbb_stream).
 // Waits use one mutex and two condition variables; the fast paths are atomics only, and a side
 // notifies the other only when it announced that it waits (announcement and publication are both
 // sequentially consistent, so one of them sees the other).
