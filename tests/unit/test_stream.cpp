@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/detail/evaluate_impl.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 
@@ -112,6 +113,65 @@ TEST(evaluate_stream, SameStringsAsEvaluateInEveryType) {
       }
     }
   }
+}
+
+// round_to<T> (a computed point's β and γ in each type) is the nearest T: the same as the type's
+// own parsing of the value's first 120 decimal digits, an independent rounding (the values carry
+// 80 digits, so no midpoint of T lies between the two at any seed of this run).
+template <class T>
+void expect_round_to_is_nearest(const char* type) {
+  PrecisionScope scope(80);
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> exponent(-6, 6);
+  for (int k = 0; k < 500; ++k) {
+    mpfr x = mpfr(mantissa(gen)) / 3 + mpfr(mantissa(gen)) * pow(mpfr(10), -20) / 7;
+    x *= pow(mpfr(10), exponent(gen));
+    const std::string decimal120 = x.str(120, std::ios_base::scientific);
+    if constexpr (is_runtime_precision_v<T>) {
+      PrecisionScope at(30);
+      EXPECT_EQ(detail::round_to<T>(x).str(40, std::ios_base::scientific),
+                parse_real<T>(decimal120, "x").str(40, std::ios_base::scientific))
+          << type << " " << decimal120;
+    } else {
+      EXPECT_EQ(detail::round_to<T>(x), parse_real<T>(decimal120, "x")) << type << " " << decimal120;
+    }
+  }
+}
+
+TEST(evaluate_stream, ComputedValuesRoundToTheNearestOfEachType) {
+  expect_round_to_is_nearest<double>("double");
+  expect_round_to_is_nearest<long double>("long double");
+  expect_round_to_is_nearest<bin50>("cpp_bin_float_50");
+  expect_round_to_is_nearest<bin100>("cpp_bin_float_100");
+  expect_round_to_is_nearest<mpfr>("mpfr 30");
+}
+
+// A point given by value (physical_point's β and γ) answers as its decimal does: exactly for
+// binary fractions, and for 1/3, -1/7, 5/3 and 1/7 (at 130 digits) as their 130-digit decimals, in
+// every type (cpp_bin_float_100 resolves 1e-100: the two differ by 1e-130).
+TEST(evaluate_stream, PointByValueAnswersAsItsDecimal) {
+  const WaveSpec sine = parse_wave("sine");
+  PrecisionScope scope(130);
+  const std::vector<std::pair<mpfr, mpfr>> values{{mpfr("0.75"), mpfr("-0.25")}, {mpfr(1) / 3, mpfr(-1) / 7},
+                                                   {mpfr(5) / 3, mpfr(1) / 7}};
+  for (const TypeCase& c : type_cases()) {
+    for (const auto& [beta, gamma] : values) {
+      Point by_text(beta.str(130, std::ios_base::scientific), gamma.str(130, std::ios_base::scientific));
+      Point by_value("beta", "gamma");
+      by_value.beta_value = beta;
+      by_value.gamma_value = gamma;
+      const std::string where = number_type_name(c.precision.type) + " beta " + by_text.beta;
+      EXPECT_EQ(evaluate(sine, Quantity::mu, {by_value}, c.precision).front(),
+                evaluate(sine, Quantity::mu, {by_text}, c.precision).front())
+          << where;
+    }
+  }
+  // No contact by value is refused as by text, naming the text.
+  Point none("0.5", "gamma -1 - 1e-40");
+  none.beta_value = mpfr("0.5");
+  none.gamma_value = mpfr(-1) - pow(mpfr(10), -40);
+  for (const TypeCase& c : type_cases()) EXPECT_THROW(evaluate(sine, Quantity::mu, {none}, c.precision), DomainError);
 }
 
 // Several ring laps (count not a multiple of the chunk) in double, with progress and the window.

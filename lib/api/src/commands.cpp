@@ -129,27 +129,32 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
     if (iterations >= 400) throw SolverError(r.F_N.name + " = " + *r.F_N.text + ": the mean indentation did not converge");
     g.gamma = (bracket.first + bracket.second) / 2;
   }
-  const std::string beta = format_significant(g.beta, digits + 15), gamma = format_significant(g.gamma, digits + 15);
+  // β and γ go to evaluate as values; the texts only name the point in its messages.
+  Point point;
+  point.beta = format_significant(g.beta, digits + 15);
+  point.gamma = format_significant(g.gamma, digits + 15);
+  point.beta_value = g.beta;
+  point.gamma_value = g.gamma;
   // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  const std::string ratio_fine = evaluate(wave, Quantity::mu, {{beta, gamma}}, fine, options).front();
+  const std::string ratio_fine = evaluate(wave, Quantity::mu, {point}, fine, options).front();
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
   const mpfr mu = mpfr(ratio_fine) * in.mu0;
   mpfr edge;
-  const mpfr force = load(mpfr(gamma), &edge);
+  const mpfr force = load(g.gamma, &edge);
   // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,
   // the fractions of the period in contact and in stick.
   mpfr beta_c, contact_fraction, stick_fraction;
   if (kind == "flat") {
-    const Contact<mpfr> c = make_contact(*w, mpfr(gamma), options.solver);
-    const auto r = solve(c, mpfr(beta), options.solver);
+    const Contact<mpfr> c = make_contact(*w, g.gamma, options.solver);
+    const auto r = solve(c, g.beta, options.solver);
     beta_c = r.beta_c;
     for (const auto& seg : c.segments())
       if (seg.contact) contact_fraction += seg.v - seg.u;
     for (const auto& st : r.stick_phases) stick_fraction += st.end - st.begin;
   } else {
-    beta_c = make_contact(*w, mpfr(gamma), options.solver).beta_c();
+    beta_c = make_contact(*w, g.gamma, options.solver).beta_c();
   }
   PhysicalOutputs rec;
   auto field = [&](const char* name, const std::string& v) { rec.emplace_back(name, v); };

@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -38,9 +39,14 @@ int output_digits(const Precision& p);
 
 enum class Quantity { mu, psi };
 
+// A point as typed (decimal text), or computed (physical_point's β and γ): then each number type
+// takes the values rounded once to nearest, and the texts only name the point in messages.
 struct Point {
+  Point() = default;
+  Point(std::string beta_text, std::string gamma_text = {}) : beta(std::move(beta_text)), gamma(std::move(gamma_text)) {}
   std::string beta;
   std::string gamma;  // ignored for Quantity::psi
+  std::optional<mpfr> beta_value, gamma_value;
 };
 
 // Which rung of the fixed types' ladder (detail::evaluate_fixed) answered each point: the value

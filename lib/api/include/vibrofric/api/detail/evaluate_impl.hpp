@@ -33,6 +33,48 @@ struct PointValue {
   Real relative_error;
 };
 
+// x rounded once to nearest in Real (mpfr: at the current precision). cpp_bin_float is rounded
+// to its bits in MPFR first, so that Boost's conversion, which does not promise to round, is exact.
+template <class Real>
+Real round_to(const mpfr& x) {
+  if constexpr (std::is_same_v<Real, double>) {
+    return mpfr_get_d(x.backend().data(), MPFR_RNDN);
+  } else if constexpr (std::is_same_v<Real, long double>) {
+    return mpfr_get_ld(x.backend().data(), MPFR_RNDN);
+  } else if constexpr (is_runtime_precision_v<Real>) {
+    Real r;  // the current precision
+    mpfr_set(r.backend().data(), x.backend().data(), MPFR_RNDN);
+    return r;
+  } else {
+    mpfr t;
+    t.precision(static_cast<unsigned>(std::numeric_limits<Real>::digits10 + 10));
+    mpfr_set_prec(t.backend().data(), std::numeric_limits<Real>::digits);
+    mpfr_set(t.backend().data(), x.backend().data(), MPFR_RNDN);
+    return static_cast<Real>(t);
+  }
+}
+
+// β and γ of a point in Real: the computed value rounded once, else the decimal text parsed.
+template <class Real>
+Real point_beta(const Point& p) {
+  return p.beta_value ? round_to<Real>(*p.beta_value) : parse_real<Real>(p.beta, "beta");
+}
+template <class Real>
+Real point_gamma(const Point& p) {
+  return p.gamma_value ? round_to<Real>(*p.gamma_value) : parse_real<Real>(p.gamma, "gamma");
+}
+
+// What names γ in the Contact caches: the text as typed, or a computed value's exact binary
+// expansion (hexadecimal, never a decimal that one could take for the value).
+inline std::string gamma_key(const Point& p) {
+  if (!p.gamma_value) return p.gamma;
+  mpfr_exp_t exponent = 0;
+  char* digits = mpfr_get_str(nullptr, &exponent, 16, 0, p.gamma_value->backend().data(), MPFR_RNDN);
+  std::string key = std::string("0x.") + digits + "p16^" + std::to_string(exponent);
+  mpfr_free_str(digits);
+  return key;
+}
+
 // A wave its spec names alone (the catalogue, power:p) is the same immutable object for every
 // call on a thread: built once per thread, number type and precision, with the Contacts of its
 // last few γ. A caller of one point per call (the Python module, a loop over `evaluate`) then
@@ -109,8 +151,9 @@ class WaveCache {
     if (!slot) slot = make_profile<Real>(profile_spec_);
     return slot.get();
   }
-  // γ as written; "" for Ψ (γ = −min w, n touching zero).
-  const Contact<Real>& contact(const std::string& gamma_text, const Options& opt) {
+  // The Contact at the point's γ (gamma_key); at γ = −min w, n touching zero, for Ψ (psi).
+  const Contact<Real>& contact(const Point& p, bool psi, const Options& opt) {
+    const std::string gamma_text = psi ? std::string() : gamma_key(p);
     const int d = working_digits10<Real>();
     if (!contact_ || digits_ != d || text_ != gamma_text || budget_ != opt.max_root_iterations) {
       contact_.reset();
@@ -118,7 +161,7 @@ class WaveCache {
         contact_ = ThreadWaves<Real>::get().find(shared_key_, d, gamma_text, opt.max_root_iterations);
       if (!contact_) try {
         const std::shared_ptr<const Waveform<Real>> w = wave();
-        const Real gamma = gamma_text.empty() ? Real(-w->minimum()) : parse_real<Real>(gamma_text, "gamma");
+        const Real gamma = psi ? Real(-w->minimum()) : point_gamma<Real>(p);
         // The Contact refers to its waveform: the pointer to it owns the waveform as well.
         struct Held {
           std::shared_ptr<const Waveform<Real>> wave;
@@ -131,7 +174,7 @@ class WaveCache {
       } catch (const DomainError&) {
         // check_contact (below) found a contact from the decimal γ and the exact waveform: this
         // type's rounding of γ or of max w removed it, so a wider type must compute it.
-        throw PrecisionError("gamma = " + gamma_text + " leaves a contact narrower than the rounding of this number type");
+        throw PrecisionError("gamma = " + p.gamma + " leaves a contact narrower than the rounding of this number type");
       }
       digits_ = d;
       text_ = gamma_text;
@@ -168,19 +211,20 @@ class WaveCache {
 template <class Real>
 PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt,
                                const Real& target = Real(0)) {
-  const Real beta = parse_real<Real>(p.beta, "beta");
+  const Real beta = point_beta<Real>(p);
   // A positive β below the type's smallest number reads as 0: name what was written.
-  if (beta == 0 && p.beta[0] != '-' && p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
+  if (beta == 0 && !p.beta_value && p.beta[0] != '-' &&
+      p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
     throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: more digits)");
   if (const Profile<Real>* profile = waves.profile()) {
     if (q == Quantity::psi)
       throw InputError("psi with profile " + profile->name() +
                        ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always "
                        "jump, so Eq. 13's separation of alpha and beta does not exist (use mu)");
-    const auto r = solve_curved(waves.get(), *profile, beta, parse_real<Real>(p.gamma, "gamma"), opt, target);
+    const auto r = solve_curved(waves.get(), *profile, beta, point_gamma<Real>(p), opt, target);
     return {r.mu, r.relative_error};
   }
-  const auto r = solve(waves.contact(q == Quantity::psi ? std::string() : p.gamma, opt), beta, opt);
+  const auto r = solve(waves.contact(p, q == Quantity::psi, opt), beta, opt);
   if (q == Quantity::psi) return {r.lost_area, r.lost_relative_error};
   return {r.mu, r.relative_error};
 }
@@ -246,8 +290,8 @@ bool own_rung_may_certify(WaveCache<Real>& waves, Quantity q, const Point& p, co
   try {
     // β that is not positive here (1e-400 underflows in double, not in long double) gets its
     // message from this type's rung, never a value from a wider one.
-    const Real beta = parse_real<Real>(p.beta, "beta");
-    return !(beta > 0 && beta < waves.contact(p.gamma, opt).beta_c());
+    const Real beta = point_beta<Real>(p);
+    return !(beta > 0 && beta < waves.contact(p, false, opt).beta_c());
   } catch (const std::exception&) {
     return true;  // the rung gives the message or escalates
   }
@@ -332,32 +376,38 @@ class ContactCheck {
  public:
   ContactCheck(const WaveSpec& spec, Quantity q) : spec_(spec), q_(q) {}
   void operator()(const Point& p) {
-    if (q_ == Quantity::psi || p.gamma == last_) return;
-    try {
-      check_decimal(p.gamma, "gamma");
-    } catch (const InputError&) {
-      return;
-    }
+    if (q_ == Quantity::psi || (!p.gamma_value && p.gamma == last_)) return;
+    if (!p.gamma_value) try {
+        check_decimal(p.gamma, "gamma");
+      } catch (const InputError&) {
+        return;
+      }
     // Clear of the boundary in double, no exact test is needed (a sweep's points stay cheap): the
     // catalogue has max w = 1, and a normalised user wave max w >= 0 (zero mean).
-    const double g = std::strtod(p.gamma.c_str(), nullptr);
+    const double g = p.gamma_value ? static_cast<double>(*p.gamma_value) : std::strtod(p.gamma.c_str(), nullptr);
     const bool catalogue = spec_.kind != WaveKind::samples && spec_.kind != WaveKind::fourier;
     if (!(g > (catalogue ? -1 + 1e-9 : 1e-9))) {
       const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.size() + 10));
       PrecisionScope scope(digits);
-      if (top_digits_ != working_digits10<mpfr>()) {
-        top_.reset();
-        top_ = exact_maximum(spec_);
-        top_digits_ = working_digits10<mpfr>();
-      }
-      const mpfr gamma(p.gamma);
-      if (!(gamma + *top_ > 0))
-        throw no_contact(p.gamma, spec_.name, short_str(mpfr(-*top_)));
+      // A computed γ keeps its own precision (mpfr's sum rounds once, at the wider operand's).
+      const mpfr gamma = p.gamma_value ? *p.gamma_value : mpfr(p.gamma);
+      if (!(gamma + top() > 0))
+        throw no_contact(p.gamma, spec_.name, short_str(mpfr(-top())));
     }
-    last_ = p.gamma;  // only a γ that passed
+    if (!p.gamma_value) last_ = p.gamma;  // only a γ that passed
   }
 
  private:
+  // max w at the current precision, computed once per precision.
+  const mpfr& top() {
+    if (top_digits_ != working_digits10<mpfr>()) {
+      top_.reset();
+      top_ = exact_maximum(spec_);
+      top_digits_ = working_digits10<mpfr>();
+    }
+    return *top_;
+  }
+
   const WaveSpec& spec_;
   Quantity q_;
   std::optional<mpfr> top_;
