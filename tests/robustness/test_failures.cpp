@@ -407,6 +407,11 @@ TEST(BadInput, LongDecimalIsNotAStackOverflow) {
   EXPECT_EXIT(
       {
         check_decimal("0." + std::string(100000, '1'), "long");
+        try {  // a decimal comma is said so, also in a long field
+          check_decimal("0," + std::string(100000, '1'), "long");
+          std::_Exit(5);
+        } catch (const InputError&) {
+        }
         try {
           check_decimal(std::string(100000, '1'), "long");  // 1e99999: overflow, an InputError
         } catch (const InputError&) {

@@ -180,6 +180,20 @@ def write(name, text):
 
 def bad_input_tests():
     mu = ["mu", "--wave", "sine"]
+    # Decimal commas (a European spreadsheet's export): said so, with the number as it should read.
+    for k, (name, text, value, fixed) in enumerate((
+            ("one column", "0,15420\n0,5\n-0,3\n-0,35\n", "0,15420", "0.15420"),
+            ("';' fields", "time;disp\n0,0;0,15420\n0,25;3,9093\n0,5;-1,2\n0,75;-2,1\n1,0;0,15420\n", "0,0", "0.0"),
+            ("';' fields, no header", "0,15420;3,9093\n0,5;1,2\n-0,3;0,4\n", "0,5", "0.5"))):
+        bad("decimal commas, %s" % name,
+            ["mu", "--wave", "samples:" + write("decimal-comma-%d.csv" % k, text), "--beta", "1", "--gamma", "0.5"],
+            values=[value], words=["decimal comma", fixed])
+    bad("--beta with a decimal comma", mu + ["--beta", "0,5", "--gamma", "0.5"], values=["0,5"],
+        words=["--beta", "decimal comma", "0.5"])
+    # Two whole numbers a line split by spaces are two columns, not decimal commas.
+    bad("two whole-number columns split by spaces", ["mu", "--wave", "samples:" + write("two-int-columns.txt", "0 0\n1 1\n2 0\n"),
+                                                     "--beta", "1", "--gamma", "0.5"],
+        words=["two columns and no header"])
     # curved contacts (model.md MDR): profiles, files, psi, physical shapes
     pmu = mu + ["--beta", "1", "--gamma", "0.5", "--profile"]
     for v in ("power:0.5", "wearflat:0", "wearflat:-1", "power:nan", "ball", "wearflat:"):

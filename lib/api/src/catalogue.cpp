@@ -163,6 +163,7 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
   Table t;
   std::string line;
   int number = 0;
+  bool commas = true;
   while (std::getline(in, line)) {
     ++number;
     if (static_cast<std::size_t>(number) > max_table_lines)
@@ -209,7 +210,9 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
       continue;
     }
     t.rows.emplace_back(number, std::move(fields));
+    commas = commas && delim == ',';
   }
+  t.comma_separated = commas && !t.rows.empty();
   return t;
 }
 
@@ -284,8 +287,33 @@ static bool is_decimal(const std::string& t) {
   return i == n;
 }
 
+// A number written with a decimal comma, "0,5" or "-1,25e-3" (a European spreadsheet's export).
+// Scanned by hand: std::regex recurses per character and overflows the stack on long fields.
+bool decimal_comma(const std::string& t) {
+  std::size_t i = !t.empty() && (t[0] == '+' || t[0] == '-') ? 1 : 0;
+  const auto digits = [&] {
+    const std::size_t start = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i > start;
+  };
+  if (!digits() || i == t.size() || t[i] != ',') return false;
+  ++i;
+  if (!digits()) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  return i == t.size();
+}
+
 void check_decimal(const std::string& text, const std::string& what) {
   if (text.empty()) throw InputError(what + " is empty: expected a decimal number");
+  if (decimal_comma(text)) {
+    std::string point = text;
+    std::replace(point.begin(), point.end(), ',', '.');
+    throw InputError(what + " = " + quoted(text) + " has a decimal comma: expected a decimal point (" + point + ")");
+  }
   if (!is_decimal(text))
     throw InputError(what + " = " + quoted(visible(text)) + ": expected a finite decimal number such as 0.5 or -3e-2 (exponent below 1e9)");
   errno = 0;
@@ -370,6 +398,19 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
     } else if (columns == 2) {
       const bool t0 = !header.empty() && is_time_name(header[0]);
       const bool t1 = !header.empty() && is_time_name(header[1]);
+      // Two whole numbers on every line, split at ',': one column written with decimal commas.
+      const auto integer = [](const std::string& t) { return !t.empty() && std::all_of(t.begin(), t.end(), [](char ch) {
+                                                                return ch >= '0' && ch <= '9';
+                                                              }); };
+      const bool commas = header.empty() && table.comma_separated && std::all_of(rows.begin(), rows.end(), [&](const auto& row) {
+                            const std::string& a = row.second[0];
+                            return integer(a.substr(a[0] == '-' || a[0] == '+' ? 1 : 0)) && integer(row.second[1]);
+                          });
+      if (commas)
+        throw InputError(source.name + ": two columns of whole numbers and no header, as one column written with "
+                         "decimal commas reads ('" + rows[0].second[0] + "," + rows[0].second[1] +
+                         "'): expected decimal points (" + rows[0].second[0] + "." + rows[0].second[1] +
+                         "), or a header naming one column 'time' (or 't')");
       if (header.empty() || t0 == t1)
         throw InputError(source.name + ": two columns" +
                          (header.empty() ? std::string(" and no header")

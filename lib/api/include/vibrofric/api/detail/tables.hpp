@@ -37,6 +37,7 @@ constexpr std::size_t max_profile_samples = 100'000;
 struct Table {
   std::vector<std::string> header;
   Rows rows;
+  bool comma_separated = false;  // read from text, every row's fields split at ','
 };
 
 // A user wave file's text as a table: a UTF-8 byte-order mark and CR line ends are dropped, '#'
