@@ -139,6 +139,33 @@ void expect_round_to_is_nearest(const char* type) {
   }
 }
 
+// Next to a midpoint of cpp_bin_float_50 (within 1e-110 of it, either side): the nearest, judged
+// against both neighbours with every value converted to MPFR exactly (an integer mantissa).
+TEST(evaluate_stream, ComputedValuesNextToMidpointsRoundToTheNearestBin50) {
+  const auto exact = [](const bin50& b) {
+    int e = 0;
+    const int bits = std::numeric_limits<bin50>::digits;
+    std::string m = bin50(ldexp(frexp(b, &e), bits)).str(0, std::ios_base::fixed);
+    m = m.substr(0, m.find('.'));
+    mpfr r;
+    mpfr_set_prec(r.backend().data(), 400);
+    mpfr_set_str(r.backend().data(), m.c_str(), 10, MPFR_RNDN);
+    mpfr_mul_2si(r.backend().data(), r.backend().data(), e - bits, MPFR_RNDN);
+    return r;
+  };
+  PrecisionScope scope(120);
+  std::mt19937_64 gen(5);
+  std::uniform_real_distribution<double> u(0.1, 1);
+  for (int k = 0; k < 2000; ++k) {
+    const bin50 b = bin50(u(gen)) / 3;
+    const mpfr x = (exact(b) + exact(boost::math::float_next(b))) / 2 + (k % 2 ? 1 : -1) * pow(mpfr(10), -110);
+    const bin50 c = detail::round_to<bin50>(x);
+    const mpfr d = abs(x - exact(c));
+    EXPECT_LT(d, abs(x - exact(boost::math::float_next(c)))) << x.str(60);
+    EXPECT_LT(d, abs(x - exact(boost::math::float_prior(c)))) << x.str(60);
+  }
+}
+
 TEST(evaluate_stream, ComputedValuesRoundToTheNearestOfEachType) {
   expect_round_to_is_nearest<double>("double");
   expect_round_to_is_nearest<long double>("long double");

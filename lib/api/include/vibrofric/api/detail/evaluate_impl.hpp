@@ -33,25 +33,10 @@ struct PointValue {
   Real relative_error;
 };
 
-// x rounded once to nearest in Real (mpfr: at the current precision). cpp_bin_float is rounded
-// to its bits in MPFR first, so that Boost's conversion, which does not promise to round, is exact.
+// x rounded once to nearest in Real (mpfr: at the current precision).
 template <class Real>
 Real round_to(const mpfr& x) {
-  if constexpr (std::is_same_v<Real, double>) {
-    return mpfr_get_d(x.backend().data(), MPFR_RNDN);
-  } else if constexpr (std::is_same_v<Real, long double>) {
-    return mpfr_get_ld(x.backend().data(), MPFR_RNDN);
-  } else if constexpr (is_runtime_precision_v<Real>) {
-    Real r;  // the current precision
-    mpfr_set(r.backend().data(), x.backend().data(), MPFR_RNDN);
-    return r;
-  } else {
-    mpfr t;
-    t.precision(static_cast<unsigned>(std::numeric_limits<Real>::digits10 + 10));
-    mpfr_set_prec(t.backend().data(), std::numeric_limits<Real>::digits);
-    mpfr_set(t.backend().data(), x.backend().data(), MPFR_RNDN);
-    return static_cast<Real>(t);
-  }
+  return rounded<Real>(x, static_cast<unsigned>(working_digits10<mpfr>()));
 }
 
 // β and γ of a point in Real: the computed value rounded once, else the decimal text parsed.
