@@ -201,6 +201,21 @@ TEST(evaluate_stream, PointByValueAnswersAsItsDecimal) {
   for (const TypeCase& c : type_cases()) EXPECT_THROW(evaluate(sine, Quantity::mu, {none}, c.precision), DomainError);
 }
 
+// A wear flat whose λ is computed (physical's b²/(R A)) acts as its 130-digit decimal does.
+TEST(evaluate_stream, ComputedWearFlatLambdaActsAsItsDecimal) {
+  const WaveSpec sine = parse_wave("sine");
+  PrecisionScope scope(130);
+  const mpfr lambda = mpfr(10) / 3;
+  BatchOptions by_text, by_value;
+  by_text.profile = parse_profile("wearflat:" + lambda.str(130, std::ios_base::scientific));
+  by_value.profile = parse_profile("wearflat:3.3");  // the name only
+  by_value.profile.parameter_value = lambda;
+  for (const Precision& p : {Precision{NumberType::float64, 17}, Precision{NumberType::mpfr, 30}})
+    for (const char* gamma : {"0.5", "-0.3"})
+      EXPECT_EQ(evaluate(sine, Quantity::mu, {{"1", gamma}}, p, by_value), evaluate(sine, Quantity::mu, {{"1", gamma}}, p, by_text))
+          << number_type_name(p.type) << " gamma " << gamma;
+}
+
 // Several ring laps (count not a multiple of the chunk) in double, with progress and the window.
 TEST(evaluate_stream, ManyPointsInOrderWithinTheWindow) {
   const WaveSpec wave = parse_wave("tri");

@@ -4,6 +4,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "vibrofric/api/detail/evaluate_impl.hpp"
@@ -73,7 +74,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   BatchOptions options = base;
   options.profile = ProfileSpec{};
   mpfr length = 1;
-  std::string lambda;
+  std::optional<mpfr> lambda;
   if (kind == "sphere") {
     options.profile = parse_profile("sphere");
     length = sphere_length(positive(r.R), A);
@@ -84,8 +85,19 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
     length = cone_length(theta, A);
   } else if (kind == "wearflat") {
     const mpfr R = positive(r.R), b = positive(r.flat_radius);
-    lambda = format_significant(mpfr(b * b / (R * A)), digits + 15);
-    options.profile = parse_profile("wearflat:" + lambda);
+    // λ goes to the profile as a value; its text (wearflat:λ) only names the profile.
+    lambda = mpfr(b * b / (R * A));
+    const std::string text = format_significant(*lambda, digits + 15);
+    // The decisions parse_profile makes on a typed λ: representable in double, above 0.
+    const double in_double = static_cast<double>(*lambda);
+    if (!(in_double > 0))
+      throw InputError("wear-flat LAMBDA = '" + text + "': expected LAMBDA = b^2/(R A) > 0 (and above 1e-308)");
+    if (!std::isfinite(in_double))
+      throw InputError("wear-flat LAMBDA = '" + text + "' overflows: expected a magnitude below 1e308");
+    options.profile.kind = ProfileKind::wearflat;
+    options.profile.name = "wearflat:" + text;
+    options.profile.parameter = text;
+    options.profile.parameter_value = lambda;
     length = b;
   } else if (kind == "profile") {
     options.profile = parse_profile(shape);
@@ -168,7 +180,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   } else {
     line("contact_radius_max_m", mpfr(length * edge));
   }
-  if (!lambda.empty()) line("lambda", mpfr(lambda));
+  if (lambda) line("lambda", *lambda);
   line("beta", g.beta);
   line("gamma", g.gamma);
   if (by_load) line("u_mean_m", mpfr(g.gamma * A));

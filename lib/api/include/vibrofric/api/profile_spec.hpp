@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -18,6 +19,8 @@ struct ProfileSpec {
   ProfileKind kind = ProfileKind::flat;
   std::string name;       // canonical: "flat", "power:2", "wearflat:0.5", "profile:FILE"
   std::string parameter;  // N of power:N, λ of wearflat:λ, as written
+  std::optional<mpfr> parameter_value;  // computed (physical's λ = b²/(R A)): used instead, rounded
+                                        // once to each type; `parameter` then only names it
   std::vector<std::string> r, f;  // profile:FILE samples, as written
   std::string height_unit = "1";   // profile:FILE heights are divided by this (physical: A in metres)
 };
@@ -38,10 +41,14 @@ std::unique_ptr<Profile<Real>> make_profile(const ProfileSpec& spec) {
     else if constexpr (std::is_same_v<Real, long double>) return std::strtold(text.c_str(), nullptr);
     else return Real(text);
   };
+  const auto parameter = [&]() -> Real {
+    if (spec.parameter_value) return detail::rounded<Real>(*spec.parameter_value, static_cast<unsigned>(working_digits10<mpfr>()));
+    return number(spec.parameter);
+  };
   switch (spec.kind) {
     case ProfileKind::flat: return nullptr;
-    case ProfileKind::power: return std::make_unique<PowerProfile<Real>>(number(spec.parameter), spec.name);
-    case ProfileKind::wearflat: return std::make_unique<WearFlatProfile<Real>>(number(spec.parameter), spec.name);
+    case ProfileKind::power: return std::make_unique<PowerProfile<Real>>(parameter(), spec.name);
+    case ProfileKind::wearflat: return std::make_unique<WearFlatProfile<Real>>(parameter(), spec.name);
     case ProfileKind::measured: {
       std::vector<Real> r, f;
       const Real unit = number(spec.height_unit);
