@@ -287,24 +287,14 @@ static bool is_decimal(const std::string& t) {
   return i == n;
 }
 
-// A number written with a decimal comma, "0,5" or "-1,25e-3" (a European spreadsheet's export).
-// Scanned by hand: std::regex recurses per character and overflows the stack on long fields.
-bool decimal_comma(const std::string& t) {
-  std::size_t i = !t.empty() && (t[0] == '+' || t[0] == '-') ? 1 : 0;
-  const auto digits = [&] {
-    const std::size_t start = i;
-    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
-    return i > start;
-  };
-  if (!digits() || i == t.size() || t[i] != ',') return false;
-  ++i;
-  if (!digits()) return false;
-  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
-    ++i;
-    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
-    if (!digits()) return false;
-  }
-  return i == t.size();
+// A number written with a decimal comma, "0,5" or "-1,25e-3" (a European spreadsheet's export):
+// one comma, and a decimal of our grammar with a point in its place.
+bool decimal_comma(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) return false;
+  std::string point = text;
+  point[comma] = '.';
+  return is_decimal(point);
 }
 
 void check_decimal(const std::string& text, const std::string& what) {
