@@ -19,8 +19,7 @@
 #include <iostream>
 #include <map>
 #include <mutex>
-#include <regex>
-#include <set>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,234 +96,56 @@ const char* const kPhysicalAbout =
     "  wearflat --R R --flat-radius b     sphere with a wear flat, lambda = b^2/(R A)\n"
     "  profile:FILE                       measured profile, lines 'r f' in metres, f(0) = 0\n";
 
-struct Args {
+enum class Format { text, csv, json };
+
+// A command's flags as typed values. CLI11 fills them while it parses: each flag's reader checks
+// the text as typed (our decimal and integer grammars, the names of choices) and throws InputError
+// quoting it. What is not given keeps its default.
+struct Flags {
   std::string command;
-  std::map<std::string, std::string> flags;  // the flags given, with their values as typed
-  bool help = false;
+  // Wave
+  std::optional<std::string> wave;
+  WaveReadOptions read;
+  bool diagnostics = false;
+  // Precision
+  std::optional<NumberType> type;
+  std::string type_text;
+  std::optional<int> digits;
+  bool no_escalate = false;
+  // Solver controls (solver.hpp Options): a budget the solver cannot meet is an error, never a value.
+  Options solver;
+  // mu, psi, trace: β and γ as typed; sweep: their values, and γ's text
+  std::optional<std::string> beta, gamma;
+  std::vector<std::string> betas, gammas;
+  std::optional<std::string> profile_text;
+  ProfileSpec profile;
+  std::optional<Format> format;
+  Quantity quantity = Quantity::mu;
+  unsigned threads = 0;
+  std::optional<int> points, harmonics;
+  std::optional<std::string> output, claim;
+  std::map<std::string, std::string> texts;  // as typed, by flag name: the flags without a reader
 };
 
-// One flag of a command: its name, the value's placeholder (empty: a switch), the help line and
-// the default shown by --help (empty: none).
+using Reader = void (*)(Flags&, const std::string& text);
+
+// One flag of a command: its name, the value's placeholder (empty: a switch), the help line, the
+// default shown by --help (empty: none) and the reader of its text (none: kept in Flags::texts
+// for the library to check, as physical's inputs are by physical_point).
 struct FlagSpec {
   const char* name;
   const char* value;
   const char* help;
   const char* fallback;
+  Reader read;
 };
 
-const std::vector<FlagSpec> kWaveFlags{
-    {"wave", "W", "the wave (required): catalogue name, power:P, fourier:FILE or samples:FILE", ""},
-    {"column", "C", "samples FILE: the value column, by header name or 1-based index", "the one value column"},
-    {"diagnostics", "", "print on stderr the normalisation of a user wave: raw mean, min, max, scale, period, end point", ""},
-};
-const std::vector<FlagSpec> kPrecisionFlags{
-    {"digits", "D", "significant digits, 1 to 10000 (mpfr, with guard digits)", "50"},
-    {"type", "T", "double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr", "mpfr"},
-    {"no-escalate", "", "fixed types: print the value computed in the type even where its rounding bound "
-                        "exceeds the type's epsilon (=true/false/yes/no/1/0; default off: recompute with mpfr)", ""},
-};
-const std::vector<FlagSpec> kSolverFlags{
-    {"area", "M", "auto | exact | quadrature: areas from antiderivatives or tanh-sinh, every event a breakpoint",
-     "auto"},
-    {"max-iterations", "N", "root-finder budget per event, 1 to 100000", "200 + working bits"},
-    {"max-levels", "N", "tanh-sinh halvings, 4 to 30", "15"},
-    {"quadrature-tolerance", "T", "tanh-sinh tolerance, in (0, 1)", "sqrt(eps) of the working precision"},
-};
-
-struct CommandSpec {
-  const char* name;
-  const char* synopsis;
-  std::vector<FlagSpec> flags;
-  std::vector<const std::vector<FlagSpec>*> groups;
-  std::string footer;
-};
-
-const std::vector<CommandSpec>& commands() {
-  static const std::vector<CommandSpec> specs{
-      {"mu", "mu --wave W --beta B --gamma G [--profile P]: mu/mu0 = g_w(beta, gamma) (Eq. 15)",
-       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", ""},
-        {"gamma", "G", "gamma = u_mean/A (Eq. 14), a decimal with contact, gamma > -max w (required)", ""},
-        {"profile", "P", "the indenter (model.md MDR)", "flat"},
-        {"format", "F", "text | csv | json", "text"}},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
-       std::string(kWaves) + kProfiles},
-      {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
-       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", ""},
-        {"profile", "P", "flat only: in a curved contact the outer springs always jump", "flat"},
-        {"format", "F", "text | csv | json", "text"}},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
-       kWaves},
-      {"sweep", "sweep --wave W --beta RANGE --gamma G1,G2,...|RANGE [--profile P]: rows streamed in order",
-       {{"beta", "RANGE", "FROM:TO:N (linear, ends included) or log:FROM:TO:N (geometric) (required)", ""},
-        {"gamma", "G", "a list G1,G2,... or a range FROM:TO:N (FROM > TO allowed); not with --quantity psi", ""},
-        {"quantity", "Q", "mu | psi", "mu"},
-        {"profile", "P", "the indenter (model.md MDR)", "flat"},
-        {"threads", "N", "worker threads, 0 for every core", "0"},
-        {"format", "F", "csv | json", "csv"}},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
-       std::string(kWaves) + kProfiles},
-      {"physical", "physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA] --v0 M/S --f HZ\n"
-                   "                          --A M (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",
-       {{"E1", "PA", "Young's modulus of body 1, > 0 (required)", ""},
-        {"nu1", "NU", "Poisson's ratio of body 1, -1 < nu <= 0.5 (required)", ""},
-        {"E2", "PA", "Young's modulus of body 2, > 0 (required)", ""},
-        {"nu2", "NU", "Poisson's ratio of body 2 (required)", ""},
-        {"G1", "PA", "shear modulus of body 1", "E1/(2(1 + nu1))"},
-        {"G2", "PA", "shear modulus of body 2", "E2/(2(1 + nu2))"},
-        {"v0", "M/S", "sliding velocity, > 0 (required; or a range)", ""},
-        {"f", "HZ", "oscillation frequency, > 0 (required; or a range)", ""},
-        {"A", "M", "zero-to-peak amplitude of the normal oscillation, > 0 (required; or a range)", ""},
-        {"u-mean", "M", "mean indentation (or a range); or give --F-N", ""},
-        {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", ""},
-        {"mu0", "MU", "local coefficient of friction, > 0 (required)", ""},
-        {"shape", "S", "flat | sphere | cone | wearflat | profile:FILE", "flat"},
-        {"radius", "M", "flat: punch radius (required for flat)", ""},
-        {"R", "M", "sphere, wearflat: radius of curvature", ""},
-        {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", ""},
-        {"flat-radius", "M", "wearflat: radius of the wear flat", ""},
-        {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)"}},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
-       std::string(kPhysicalAbout) + kWaves},
-      {"trace", "trace --wave W --beta B --gamma G: CSV phi,n,s over one period (Fig. 2)",
-       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", ""},
-        {"gamma", "G", "gamma = u_mean/A (Eq. 14), with contact (required)", ""},
-        {"points", "N", "N + 1 equally spaced phases i/N (0 and 1 both), N from 2 to 1000000, plus every stick phase's ends and the contact "
-                        "boundaries (where n = 0 exactly)", "1000"},
-        {"digits", "D", "significant digits, 1 to 10000", "17"}},
-       {&kWaveFlags},
-       kWaves},
-      {"fit", "fit --wave samples:FILE --harmonics K [--output FILE]: a fourier file from samples",
-       {{"harmonics", "K", "harmonics of the fit, 1 to 10000, 2K < samples (required)", ""},
-        {"output", "FILE", "write the fourier file here", "stdout"}},
-       {&kWaveFlags},
-       "--wave takes a samples:FILE (--column for a table). The fit is the DFT for uniform phases and\n"
-       "linear least squares (QR) on t/period for time stamps; the file's comments give the rms and\n"
-       "largest residual. Use the fit when the signal is noisy (samples:FILE follows every wiggle:\n"
-       "slopes enter beta_c, Eq. 6) and the samples when its kinks are real (a clipped or triangular\n"
-       "drive).\n"},
-      {"verify", "verify [--digits D] [--claim KEY] [--format json]: every claim of the paper and model.md",
-       {{"digits", "D", "working digits, 10 to 300 (the same verdicts over the range)", "50"},
-        {"claim", "KEY", "one claim (e.g. eq24)", "all"},
-        {"format", "F", "text | json (for the report generator)", "text"}},
-       {},
-       ""},
-      {"version", "version: versions of vibrofric, the compiler, Boost, MPFR and GMP", {}, {}, ""},
-  };
-  return specs;
-}
-
-// CLI11's help with our synopsis as its usage line.
-class HelpFormatter : public CLI::Formatter {
- public:
-  std::string make_usage(const CLI::App* app, std::string) const override {
-    for (const auto& c : commands())
-      if (app->get_name() == c.name) return std::string("usage: vibrofric ") + c.synopsis + "\n";
-    return "usage: vibrofric COMMAND [OPTIONS]\n";
-  }
-  std::string make_description(const CLI::App*) const override { return ""; }
-};
-
-bool is_switch(const std::string& name) { return name == "no-escalate" || name == "diagnostics"; }
-
-// A switch's state: absent is off; present alone, or =1/true/yes, on; =0/false/no, off; else bad input.
-bool switch_on(const Args& a, const std::string& name) {
-  const auto it = a.flags.find(name);
-  if (it == a.flags.end()) return false;
-  const std::string& v = it->second;
-  if (v == "1" || v == "true" || v == "yes") return true;
-  if (v == "0" || v == "false" || v == "no") return false;
-  throw InputError("--" + name + " = '" + detail::visible(v) + "': expected no value, or one of true, false, yes, no, 1, 0");
-}
-
-std::vector<FlagSpec> flags_of(const CommandSpec& c) {
-  std::vector<FlagSpec> all = c.flags;
-  for (const auto* g : c.groups) all.insert(all.end(), g->begin(), g->end());
-  return all;
-}
-
-// Parsed by CLI11; checked first for what CLI11 would misread: a value flag followed by another
-// flag (`--beta --gamma 0` would take '--gamma' as beta), an empty `--beta=`, unknown names.
-Args parse_args(int argc, char** argv) {
-  Args a;
-  std::string names;
-  for (const auto& c : commands()) names += (names.empty() ? "" : ", ") + std::string(c.name);
-  if (argc < 2) throw InputError("missing command: expected one of " + names + " (see --help)");
-  a.command = argv[1];
-  if (a.command == "--help" || a.command == "-h" || a.command == "help") {
-    std::cout << "usage: vibrofric COMMAND [OPTIONS]\n\n" << kAbout;
-    a.help = true;
-    return a;
-  }
-  CLI::App app("vibrofric");
-  app.formatter(std::make_shared<HelpFormatter>());
-  const auto spec = std::find_if(commands().begin(), commands().end(), [&](const CommandSpec& c) { return a.command == c.name; });
-  if (spec == commands().end())
-    throw InputError("unknown command '" + detail::visible(a.command) + "': expected one of " + names);
-  const std::vector<FlagSpec> flags = flags_of(*spec);
-  auto find = [&](const std::string& n) {
-    return std::find_if(flags.begin(), flags.end(), [&](const FlagSpec& f) { return n == f.name; });
-  };
-  std::set<std::string> seen;
-  for (int i = 2; i < argc; ++i) {
-    const std::string tok = argv[i];
-    if (tok == "--help" || tok == "-h") continue;
-    if (tok.rfind("--", 0) != 0) throw InputError("unexpected argument '" + detail::visible(tok) + "': expected --flag value");
-    const auto eq = tok.find('=');
-    const std::string name = tok.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
-    if (find(name) == flags.end()) throw InputError("unknown flag --" + detail::visible(name) + " for '" + a.command + "'");
-    if (!seen.insert(name).second) throw InputError("flag --" + name + " given twice");
-    if (is_switch(name)) {
-      // CLI11 would read an empty `--no-escalate=` as the switch alone.
-      if (eq + 1 == tok.size()) switch_on(Args{a.command, {{name, ""}}, false}, name);
-      continue;
-    }
-    // The next token is a value unless it is a flag by name ('--' alone is a value, and bad).
-    const auto is_flag = [](const std::string& t) { return t.size() > 2 && t.rfind("--", 0) == 0 && std::isalpha(t[2]); };
-    if (eq + 1 == tok.size()) throw InputError("--" + name + "= is empty: --" + name + " needs a value");
-    if (eq == std::string::npos && (i + 1 >= argc || is_flag(argv[i + 1])))
-      throw InputError("--" + name + " needs a value");
-    if (eq == std::string::npos) ++i;
-  }
-  CLI::App* sub = app.add_subcommand(spec->name, spec->synopsis);
-  std::map<std::string, std::string> values;
-  std::vector<std::pair<std::string, CLI::Option*>> options;
-  auto add = [&](const FlagSpec& f, const char* group) {
-    CLI::Option* o = f.value[0] == '\0' ? sub->add_flag(std::string("--") + f.name, values[f.name], f.help)
-                                        : sub->add_option(std::string("--") + f.name, values[f.name], f.help)
-                                              ->type_name(f.value);
-    if (f.fallback[0] != '\0') o->default_str(f.fallback);
-    o->group(group);
-    options.emplace_back(f.name, o);
-  };
-  for (const auto& f : spec->flags) add(f, "Options");
-  for (const auto* g : spec->groups)
-    for (const auto& f : *g)
-      add(f, g == &kWaveFlags ? "Wave" : g == &kPrecisionFlags ? "Precision" : "Solver controls");
-  if (!spec->footer.empty()) sub->footer(spec->footer);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << sub->help();
-    a.help = true;
-    return a;
-  } catch (const CLI::ParseError& e) {
-    std::string what = e.what();
-    if (const auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
-    throw InputError(a.command + ": " + what);
-  }
-  for (const auto& [name, o] : options)
-    if (o->count() > 0) a.flags[name] = values[name];
-  return a;
-}
-
-const std::string& need(const Args& a, const std::string& name) {
-  const auto it = a.flags.find(name);
-  if (it == a.flags.end()) throw InputError("missing --" + name + " for '" + a.command + "'");
-  return it->second;
-}
-
-int parse_int(const std::string& text, const std::string& what, long lo, long hi) {
-  if (!std::regex_match(text, std::regex("[+-]?[0-9]{1,9}")))
+// Our integer grammar: an optional sign and 1 to 9 digits (CLI11's int reads 010 as 8 and 0x10 as 16).
+int integer(const std::string& text, const std::string& what, long lo, long hi) {
+  const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
+  const bool digits = text.size() > sign && text.size() - sign <= 9 &&
+                      std::all_of(text.begin() + static_cast<long>(sign), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (!digits)
     throw InputError(what + " = '" + detail::visible(text) + "': expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
   const long v = std::stol(text);
   if (v < lo || v > hi)
@@ -332,20 +153,19 @@ int parse_int(const std::string& text, const std::string& what, long lo, long hi
   return static_cast<int>(v);
 }
 
-Precision parse_precision(const Args& a) {
-  Precision p;
-  const bool has_digits = a.flags.count("digits"), has_type = a.flags.count("type");
-  if (has_type) {
-    const auto type = number_type_named(a.flags.at("type"));
-    if (!type) throw InputError("--type '" + a.flags.at("type") + "': expected " + number_type_choices);
-    p.type = *type;
-  }
-  if (has_digits) {
-    if (has_type && p.type != NumberType::mpfr)
-      throw InputError("--digits goes with mpfr only: --type " + detail::visible(a.flags.at("type")) + " has fixed precision");
-    p.digits = parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits);
-  }
-  return p;
+// A switch's value: alone (CLI11 passes "true"), or =1/true/yes, on; =0/false/no, off; else bad input
+// (CLI11 would also take on/off/enable/disable and more).
+bool switch_value(const std::string& text, const std::string& name) {
+  if (text == "1" || text == "true" || text == "yes") return true;
+  if (text == "0" || text == "false" || text == "no") return false;
+  throw InputError("--" + name + " = '" + detail::visible(text) + "': expected no value, or one of true, false, yes, no, 1, 0");
+}
+
+Format format_named(const std::string& text) {
+  if (text == "text") return Format::text;
+  if (text == "csv") return Format::csv;
+  if (text == "json") return Format::json;
+  throw InputError("--format '" + detail::visible(text) + "': expected text, csv or json");
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -359,18 +179,17 @@ std::vector<std::string> split(const std::string& s, char sep) {
   }
 }
 
-// β_i = FROM + i (TO − FROM)/(N − 1), as decimal strings of 17 significant digits computed at
-// 40 digits: the printed β is exactly the β evaluated.
 // FROM:TO:N, N values with both ends (linear), or log:FROM:TO:N (geometric, FROM and TO > 0). As
-// decimals of 17 significant digits, trailing zeros dropped. `flag` names the flag in messages;
-// `descending` allows TO < FROM (γ from 1 down to −1, as the paper's figures).
+// decimals of 17 significant digits computed at 40 digits, trailing zeros dropped: the printed
+// value is exactly the value evaluated. `flag` names the flag in messages; `descending` allows
+// TO < FROM (γ from 1 down to −1, as the paper's figures).
 std::vector<std::string> value_range(const std::string& spec, const std::string& flag, bool descending) {
   const bool log = spec.rfind("log:", 0) == 0;
   const auto parts = split(log ? spec.substr(4) : spec, ':');
   if (parts.size() != 3) throw InputError(flag + " '" + detail::visible(spec) + "': expected FROM:TO:N or log:FROM:TO:N");
   check_decimal(parts[0], flag + " FROM");
   check_decimal(parts[1], flag + " TO");
-  const int n = parse_int(parts[2], flag + " N", 1, max_range_points);
+  const int n = integer(parts[2], flag + " N", 1, max_range_points);
   PrecisionScope scope(40);
   const mpfr from(parts[0]), to(parts[1]);
   if (!descending && to < from) throw InputError(flag + " '" + detail::visible(spec) + "': empty range, expected FROM <= TO");
@@ -395,52 +214,317 @@ std::vector<std::string> value_range(const std::string& spec, const std::string&
   return out;
 }
 
-// Solver controls (solver.hpp Options): a budget the solver cannot meet is an error, never a value.
-Options parse_solver_options(const Args& a) {
-  Options o;
-  if (a.flags.count("area")) {
-    const std::string& m = a.flags.at("area");
-    if (m == "auto")
-      o.area = AreaMethod::automatic;
-    else if (m == "exact")
-      o.area = AreaMethod::exact;
-    else if (m == "quadrature")
-      o.area = AreaMethod::quadrature;
-    else
-      throw InputError("--area '" + detail::visible(m) + "': expected auto, exact or quadrature");
-  }
-  if (a.flags.count("max-iterations"))
-    o.max_root_iterations = static_cast<std::uintmax_t>(parse_int(a.flags.at("max-iterations"), "--max-iterations", 1, root_iterations_limit));
-  if (a.flags.count("max-levels"))
-    o.max_quadrature_levels = static_cast<std::size_t>(parse_int(a.flags.at("max-levels"), "--max-levels", 4, 30));
-  if (a.flags.count("quadrature-tolerance")) {
-    const std::string& t = a.flags.at("quadrature-tolerance");
-    check_decimal(t, "--quadrature-tolerance");
-    const double v = std::strtod(t.c_str(), nullptr);
-    if (!(v > 0 && v < 1)) throw InputError("--quadrature-tolerance = " + t + ": expected a number in (0, 1)");
-    o.quadrature_tolerance = v;
-  }
-  return o;
+const std::vector<FlagSpec> kWaveFlags{
+    {"wave", "W", "the wave (required): catalogue name, power:P, fourier:FILE or samples:FILE", "",
+     [](Flags& f, const std::string& t) { f.wave = t; }},
+    {"column", "C", "samples FILE: the value column, by header name or 1-based index", "the one value column",
+     [](Flags& f, const std::string& t) { f.read.column = t; }},
+    {"diagnostics", "", "print on stderr the normalisation of a user wave: raw mean, min, max, scale, period, end point", "",
+     [](Flags& f, const std::string& t) { f.diagnostics = switch_value(t, "diagnostics"); }},
+};
+const std::vector<FlagSpec> kPrecisionFlags{
+    {"digits", "D", "significant digits, 1 to 10000 (mpfr, with guard digits)", "50",
+     [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_digits, max_digits); }},
+    {"type", "T", "double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr", "mpfr",
+     [](Flags& f, const std::string& t) {
+       f.type = number_type_named(t);
+       if (!f.type) throw InputError("--type '" + detail::visible(t) + "': expected " + number_type_choices);
+       f.type_text = t;
+     }},
+    {"no-escalate", "", "fixed types: print the value computed in the type even where its rounding bound "
+                        "exceeds the type's epsilon (=true/false/yes/no/1/0; default off: recompute with mpfr)", "",
+     [](Flags& f, const std::string& t) { f.no_escalate = switch_value(t, "no-escalate"); }},
+};
+const std::vector<FlagSpec> kSolverFlags{
+    {"area", "M", "auto | exact | quadrature: areas from antiderivatives or tanh-sinh, every event a breakpoint",
+     "auto", [](Flags& f, const std::string& t) {
+       if (t == "auto")
+         f.solver.area = AreaMethod::automatic;
+       else if (t == "exact")
+         f.solver.area = AreaMethod::exact;
+       else if (t == "quadrature")
+         f.solver.area = AreaMethod::quadrature;
+       else
+         throw InputError("--area '" + detail::visible(t) + "': expected auto, exact or quadrature");
+     }},
+    {"max-iterations", "N", "root-finder budget per event, 1 to 100000", "200 + working bits",
+     [](Flags& f, const std::string& t) {
+       f.solver.max_root_iterations = static_cast<std::uintmax_t>(integer(t, "--max-iterations", 1, root_iterations_limit));
+     }},
+    {"max-levels", "N", "tanh-sinh halvings, 4 to 30", "15",
+     [](Flags& f, const std::string& t) { f.solver.max_quadrature_levels = static_cast<std::size_t>(integer(t, "--max-levels", 4, 30)); }},
+    {"quadrature-tolerance", "T", "tanh-sinh tolerance, in (0, 1)", "sqrt(eps) of the working precision",
+     [](Flags& f, const std::string& t) {
+       check_decimal(t, "--quadrature-tolerance");
+       const double v = std::strtod(t.c_str(), nullptr);
+       if (!(v > 0 && v < 1)) throw InputError("--quadrature-tolerance = " + t + ": expected a number in (0, 1)");
+       f.solver.quadrature_tolerance = v;
+     }},
+};
+
+void decimal_beta(Flags& f, const std::string& t) {
+  check_decimal(t, "--beta");
+  f.beta = t;
+}
+void profile_named(Flags& f, const std::string& t) {
+  f.profile = parse_profile(t);
+  f.profile_text = t;
+}
+void format_of_point(Flags& f, const std::string& t) { f.format = format_named(t); }
+// A sweep writes rows: csv (its default) or json.
+void format_of_rows(Flags& f, const std::string& t) {
+  f.format = format_named(t);
+  if (f.format == Format::text) throw InputError("--format text: sweep writes csv (the default) or json");
+}
+void text_beta(Flags& f, const std::string& t) { f.beta = t; }
+void text_gamma(Flags& f, const std::string& t) { f.gamma = t; }
+
+struct CommandSpec {
+  const char* name;
+  const char* synopsis;
+  std::vector<FlagSpec> flags;
+  std::vector<const std::vector<FlagSpec>*> groups;
+  std::string footer;
+  int (*run)(const Flags&);
+};
+
+int run_mu(const Flags& f);
+int run_psi(const Flags& f);
+int run_sweep(const Flags& f);
+int run_physical(const Flags& f);
+int run_trace(const Flags& f);
+int run_fit(const Flags& f);
+int run_verify(const Flags& f);
+int run_version(const Flags& f);
+
+const std::vector<CommandSpec>& commands() {
+  static const std::vector<CommandSpec> specs{
+      {"mu", "mu --wave W --beta B --gamma G [--profile P]: mu/mu0 = g_w(beta, gamma) (Eq. 15)",
+       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", decimal_beta},
+        {"gamma", "G", "gamma = u_mean/A (Eq. 14), a decimal with contact, gamma > -max w (required)", "",
+         [](Flags& f, const std::string& t) {
+           check_decimal(t, "--gamma");
+           f.gamma = t;
+         }},
+        {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
+        {"format", "F", "text | csv | json", "text", format_of_point}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       std::string(kWaves) + kProfiles,
+       run_mu},
+      {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
+       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", decimal_beta},
+        {"profile", "P", "flat only: in a curved contact the outer springs always jump", "flat", profile_named},
+        {"format", "F", "text | csv | json", "text", format_of_point}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       kWaves,
+       run_psi},
+      {"sweep", "sweep --wave W --beta RANGE --gamma G1,G2,...|RANGE [--profile P]: rows streamed in order",
+       {{"beta", "RANGE", "FROM:TO:N (linear, ends included) or log:FROM:TO:N (geometric) (required)", "",
+         [](Flags& f, const std::string& t) { f.betas = value_range(t, "--beta", false); }},
+        {"gamma", "G", "a list G1,G2,... or a range FROM:TO:N (FROM > TO allowed); not with --quantity psi", "",
+         [](Flags& f, const std::string& t) {
+           f.gamma = t;
+           f.gammas = t.find(':') != std::string::npos ? value_range(t, "--gamma", true) : split(t, ',');
+           for (const auto& g : f.gammas) check_decimal(g, "--gamma value");
+         }},
+        {"quantity", "Q", "mu | psi", "mu",
+         [](Flags& f, const std::string& t) {
+           if (t != "mu" && t != "psi") throw InputError("--quantity '" + detail::visible(t) + "': expected mu or psi");
+           f.quantity = t == "psi" ? Quantity::psi : Quantity::mu;
+         }},
+        {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
+        {"threads", "N", "worker threads, 0 for every core", "0",
+         [](Flags& f, const std::string& t) { f.threads = static_cast<unsigned>(integer(t, "--threads", 0, 1024)); }},
+        {"format", "F", "csv | json", "csv", format_of_rows}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       std::string(kWaves) + kProfiles,
+       run_sweep},
+      {"physical", "physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA] --v0 M/S --f HZ\n"
+                   "                          --A M (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",
+       {{"E1", "PA", "Young's modulus of body 1, > 0 (required)", "", nullptr},
+        {"nu1", "NU", "Poisson's ratio of body 1, -1 < nu <= 0.5 (required)", "", nullptr},
+        {"E2", "PA", "Young's modulus of body 2, > 0 (required)", "", nullptr},
+        {"nu2", "NU", "Poisson's ratio of body 2 (required)", "", nullptr},
+        {"G1", "PA", "shear modulus of body 1", "E1/(2(1 + nu1))", nullptr},
+        {"G2", "PA", "shear modulus of body 2", "E2/(2(1 + nu2))", nullptr},
+        {"v0", "M/S", "sliding velocity, > 0 (required; or a range)", "", nullptr},
+        {"f", "HZ", "oscillation frequency, > 0 (required; or a range)", "", nullptr},
+        {"A", "M", "zero-to-peak amplitude of the normal oscillation, > 0 (required; or a range)", "", nullptr},
+        {"u-mean", "M", "mean indentation (or a range); or give --F-N", "", nullptr},
+        {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", "", nullptr},
+        {"mu0", "MU", "local coefficient of friction, > 0 (required)", "", nullptr},
+        {"shape", "S", "flat | sphere | cone | wearflat | profile:FILE", "flat", nullptr},
+        {"radius", "M", "flat: punch radius (required for flat)", "", nullptr},
+        {"R", "M", "sphere, wearflat: radius of curvature", "", nullptr},
+        {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", "", nullptr},
+        {"flat-radius", "M", "wearflat: radius of the wear flat", "", nullptr},
+        {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)", format_of_point}},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       std::string(kPhysicalAbout) + kWaves,
+       run_physical},
+      {"trace", "trace --wave W --beta B --gamma G: CSV phi,n,s over one period (Fig. 2)",
+       {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", text_beta},
+        {"gamma", "G", "gamma = u_mean/A (Eq. 14), with contact (required)", "", text_gamma},
+        {"points", "N", "N + 1 equally spaced phases i/N (0 and 1 both), N from 2 to 1000000, plus every stick phase's ends and the contact "
+                        "boundaries (where n = 0 exactly)", "1000",
+         [](Flags& f, const std::string& t) { f.points = integer(t, "--points", min_trace_points, max_trace_points); }},
+        {"digits", "D", "significant digits, 1 to 10000", "17",
+         [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_digits, max_digits); }}},
+       {&kWaveFlags},
+       kWaves,
+       run_trace},
+      {"fit", "fit --wave samples:FILE --harmonics K [--output FILE]: a fourier file from samples",
+       {{"harmonics", "K", "harmonics of the fit, 1 to 10000, 2K < samples (required)", "",
+         [](Flags& f, const std::string& t) { f.harmonics = integer(t, "--harmonics", 1, max_fit_harmonics); }},
+        {"output", "FILE", "write the fourier file here", "stdout", [](Flags& f, const std::string& t) { f.output = t; }}},
+       {&kWaveFlags},
+       "--wave takes a samples:FILE (--column for a table). The fit is the DFT for uniform phases and\n"
+       "linear least squares (QR) on t/period for time stamps; the file's comments give the rms and\n"
+       "largest residual. Use the fit when the signal is noisy (samples:FILE follows every wiggle:\n"
+       "slopes enter beta_c, Eq. 6) and the samples when its kinks are real (a clipped or triangular\n"
+       "drive).\n",
+       run_fit},
+      {"verify", "verify [--digits D] [--claim KEY] [--format json]: every claim of the paper and model.md",
+       {{"digits", "D", "working digits, 10 to 300 (the same verdicts over the range)", "50",
+         [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_verify_digits, max_verify_digits); }},
+        {"claim", "KEY", "one claim (e.g. eq24)", "all", [](Flags& f, const std::string& t) { f.claim = t; }},
+        {"format", "F", "text | json (for the report generator)", "text",
+         [](Flags& f, const std::string& t) {
+           if (t != "json" && t != "text") throw InputError("--format '" + detail::visible(t) + "': expected text or json");
+           f.format = format_named(t);
+         }}},
+       {},
+       "",
+       run_verify},
+      {"version", "version: versions of vibrofric, the compiler, Boost, MPFR and GMP", {}, {}, "", run_version},
+  };
+  return specs;
 }
 
-ProfileSpec parse_profile_flag(const Args& a) {
-  return a.flags.count("profile") ? parse_profile(a.flags.at("profile")) : ProfileSpec{};
+// CLI11's help with our synopsis as its usage line.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_usage(const CLI::App* app, std::string) const override {
+    for (const auto& c : commands())
+      if (app->get_name() == c.name) return std::string("usage: vibrofric ") + c.synopsis + "\n";
+    return "usage: vibrofric COMMAND [OPTIONS]\n";
+  }
+  std::string make_description(const CLI::App*) const override { return ""; }
+};
+
+const std::string& need(const Flags& f, const std::optional<std::string>& value, const std::string& name) {
+  if (!value) throw InputError("missing --" + name + " for '" + f.command + "'");
+  return *value;
+}
+
+// The command's exit status, or none after --help. CLI11 parses into Flags and runs the command
+// as its callback. Checked before CLI11 sees the arguments, for what CLI11 2.1 reads wrongly:
+// - a value flag followed by a flag: `--beta --gamma 0` becomes "argument not expected: 0";
+// - an empty value: `--beta= --gamma 0` the same, and `--no-escalate=` is taken as the switch alone;
+// - a bare `--` ends CLI11's flags and turns the rest into positional arguments;
+// - --help anywhere: CLI11 checks every value before it looks for --help.
+std::optional<int> run_command(int argc, char** argv) {
+  std::string names;
+  for (const auto& c : commands()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  if (argc < 2) throw InputError("missing command: expected one of " + names + " (see --help)");
+  Flags flags;
+  flags.command = argv[1];
+  if (flags.command == "--help" || flags.command == "-h" || flags.command == "help") {
+    std::cout << "usage: vibrofric COMMAND [OPTIONS]\n\n" << kAbout;
+    return std::nullopt;
+  }
+  const auto spec = std::find_if(commands().begin(), commands().end(), [&](const CommandSpec& c) { return flags.command == c.name; });
+  if (spec == commands().end())
+    throw InputError("unknown command '" + detail::visible(flags.command) + "': expected one of " + names);
+  CLI::App app("vibrofric");
+  app.formatter(std::make_shared<HelpFormatter>());
+  CLI::App* sub = app.add_subcommand(spec->name, spec->synopsis);
+  sub->allow_extras();
+  std::map<std::string, CLI::Option*> options;
+  auto add = [&](const FlagSpec& f, const char* group) {
+    const std::string name = std::string("--") + f.name;
+    CLI::Option* o = f.value[0] == '\0' ? sub->add_flag(name, f.help) : sub->add_option(name, f.help)->type_name(f.value);
+    if (f.fallback[0] != '\0') o->default_str(f.fallback);
+    o->group(group)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    o->each([&flags, read = f.read, name = std::string(f.name)](const std::string& text) {
+      if (read)
+        read(flags, text);
+      else
+        flags.texts[name] = text;
+    });
+    options[f.name] = o;
+  };
+  for (const auto& f : spec->flags) add(f, "Options");
+  for (const auto* g : spec->groups)
+    for (const auto& f : *g) add(f, g == &kWaveFlags ? "Wave" : g == &kPrecisionFlags ? "Precision" : "Solver controls");
+  if (!spec->footer.empty()) sub->footer(spec->footer);
+  for (int i = 2; i < argc; ++i) {
+    const std::string tok = argv[i];
+    if (tok == "--help" || tok == "-h") {
+      std::cout << sub->help();
+      return std::nullopt;
+    }
+  }
+  const auto is_flag = [](const std::string& t) { return t.size() > 2 && t.rfind("--", 0) == 0 && std::isalpha(static_cast<unsigned char>(t[2])); };
+  for (int i = 2; i < argc; ++i) {
+    const std::string tok = argv[i];
+    if (tok == "--") throw InputError("unknown flag -- for '" + flags.command + "'");
+    if (!is_flag(tok)) continue;
+    const auto eq = tok.find('=');
+    const std::string name = tok.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
+    const auto o = options.find(name);
+    if (o == options.end()) continue;  // CLI11 leaves it over, refused below
+    if (o->second->get_expected_max() == 0) {
+      if (eq + 1 == tok.size()) switch_value("", name);
+      continue;
+    }
+    if (eq + 1 == tok.size()) throw InputError("--" + name + "= is empty: --" + name + " needs a value");
+    if (eq == std::string::npos && (i + 1 >= argc || is_flag(argv[i + 1]))) throw InputError("--" + name + " needs a value");
+    if (eq == std::string::npos) ++i;
+  }
+  int status = 0;
+  sub->callback([&] {
+    for (const std::string& extra : sub->remaining()) {
+      if (extra.rfind("--", 0) == 0)
+        throw InputError("unknown flag --" + detail::visible(extra.substr(2, extra.find('=') - 2)) + " for '" + flags.command + "'");
+      throw InputError("unexpected argument '" + detail::visible(extra) + "': expected --flag value");
+    }
+    for (const auto& [name, o] : options)
+      if (o->count() > 1) throw InputError("flag --" + name + " given twice");
+    status = spec->run(flags);
+  });
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    if (const auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
+    throw InputError(flags.command + ": " + what);
+  }
+  return status;
+}
+
+Precision precision_of(const Flags& f) {
+  Precision p;
+  if (f.type) p.type = *f.type;
+  if (f.digits) {
+    if (f.type && *f.type != NumberType::mpfr)
+      throw InputError("--digits goes with mpfr only: --type " + detail::visible(f.type_text) + " has fixed precision");
+    p.digits = *f.digits;
+  }
+  return p;
+}
+
+BatchOptions batch_options(const Flags& f) {
+  BatchOptions o;
+  o.profile = f.profile;
+  o.escalate = !f.no_escalate;
+  o.solver = f.solver;
+  return o;
 }
 
 // Output formats of mu, psi, sweep and physical: their plain text, CSV (RFC 4180: a field with a
 // comma, a quote or a line break is quoted by libcsv) or JSON (nlohmann; values as decimal strings,
 // which keep every digit). One record is a JSON object, several are an array of objects.
-enum class Format { text, csv, json };
-
-Format parse_format(const Args& a) {
-  if (!a.flags.count("format")) return Format::text;
-  const std::string& f = a.flags.at("format");
-  if (f == "text") return Format::text;
-  if (f == "csv") return Format::csv;
-  if (f == "json") return Format::json;
-  throw InputError("--format '" + detail::visible(f) + "': expected text, csv or json");
-}
-
 std::string csv_field(const std::string& f) {
   if (f.find_first_of(",\"\r\n") == std::string::npos) return f;
   std::string out(2 * f.size() + 3, '\0');
@@ -465,32 +549,26 @@ std::string pending_diagnostics;
 
 // The wave of --wave, its value column (--column) and, with --diagnostics, the normalisation a
 // user wave went through (model.md, user waveforms), for stderr so that stdout stays data.
-WaveSpec read_wave(const Args& a) {
-  WaveReadOptions options;
+WaveSpec read_wave(const Flags& f) {
+  WaveReadOptions options = f.read;
   options.column_name = "--column";
-  if (a.flags.count("column")) options.column = a.flags.at("column");
-  WaveSpec wave = parse_wave(need(a, "wave"), options);
-  if (switch_on(a, "diagnostics"))
+  WaveSpec wave = parse_wave(need(f, f.wave, "wave"), options);
+  if (f.diagnostics)
     for (const auto& [name, value] : describe_normalisation(wave, 17))
       pending_diagnostics += "normalisation: " + name + " = " + value + "\n";
   return wave;
 }
 
-int run_mu_psi(const Args& a, Quantity q) {
-  const WaveSpec wave = read_wave(a);
-  Point p{need(a, "beta"), q == Quantity::mu ? need(a, "gamma") : std::string()};
-  check_decimal(p.beta, "--beta");
-  if (q == Quantity::mu) check_decimal(p.gamma, "--gamma");
-  BatchOptions opt;
-  opt.profile = parse_profile_flag(a);
+int run_point(const Flags& f, Quantity q) {
+  const WaveSpec wave = read_wave(f);
+  const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : std::string()};
+  const BatchOptions opt = batch_options(f);
   if (q == Quantity::psi && opt.profile.kind != ProfileKind::flat)
-    throw InputError("psi --profile " + detail::visible(a.flags.at("profile")) +
+    throw InputError("psi --profile " + detail::visible(*f.profile_text) +
                      ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
                      "so Eq. 13's separation does not exist (use mu)");
-  opt.escalate = !switch_on(a, "no-escalate");
-  opt.solver = parse_solver_options(a);
-  const Format format = parse_format(a);
-  const std::string value = evaluate(wave, q, {p}, parse_precision(a), opt).front();
+  const Format format = f.format.value_or(Format::text);
+  const std::string value = evaluate(wave, q, {p}, precision_of(f), opt).front();
   if (format == Format::text) {
     std::cout << value << '\n';
     return 0;
@@ -517,33 +595,30 @@ int run_mu_psi(const Args& a, Quantity q) {
   return 0;
 }
 
-int run_sweep(const Args& a) {
-  const WaveSpec wave = read_wave(a);
-  const auto betas = value_range(need(a, "beta"), "--beta", false);
+int run_mu(const Flags& f) { return run_point(f, Quantity::mu); }
+int run_psi(const Flags& f) { return run_point(f, Quantity::psi); }
+
+int run_sweep(const Flags& f) {
+  const WaveSpec wave = read_wave(f);
+  if (f.betas.empty()) throw InputError("missing --beta for 'sweep'");
   // --quantity psi: Ψ_w(β) (Eq. 12), which has no γ.
-  const std::string quantity = a.flags.count("quantity") ? a.flags.at("quantity") : "mu";
-  if (quantity != "mu" && quantity != "psi") throw InputError("--quantity '" + detail::visible(quantity) + "': expected mu or psi");
-  const Quantity q = quantity == "psi" ? Quantity::psi : Quantity::mu;
+  const Quantity q = f.quantity;
   std::vector<std::string> gammas;
   if (q == Quantity::psi) {
-    if (a.flags.count("gamma")) throw InputError("--gamma does not apply to --quantity psi: Psi_w(beta) has no gamma (Eq. 12)");
+    if (f.gamma) throw InputError("--gamma does not apply to --quantity psi: Psi_w(beta) has no gamma (Eq. 12)");
     gammas.push_back("");
   } else {
-    const std::string& gs = need(a, "gamma");
-    gammas = gs.find(':') != std::string::npos ? value_range(gs, "--gamma", true) : split(gs, ',');
-    for (const auto& g : gammas) check_decimal(g, "--gamma value");
+    need(f, f.gamma, "gamma");
+    gammas = f.gammas;
   }
-  const Precision prec = parse_precision(a);
-  const Format format = a.flags.count("format") ? parse_format(a) : Format::csv;
-  if (format == Format::text) throw InputError("--format text: sweep writes csv (the default) or json");
+  const std::vector<std::string>& betas = f.betas;
+  const Precision prec = precision_of(f);
+  const Format format = f.format.value_or(Format::csv);
   // Points made on demand, γ-major as the rows (a 3000 × 3000 map holds no vector of points).
   const std::size_t count = betas.size() * gammas.size();
   const auto point = [&](std::size_t i) { return Point{betas[i % betas.size()], gammas[i / betas.size()]}; };
-  BatchOptions opt;
-  opt.profile = parse_profile_flag(a);
-  opt.escalate = !switch_on(a, "no-escalate");
-  opt.solver = parse_solver_options(a);
-  opt.threads = a.flags.count("threads") ? static_cast<unsigned>(parse_int(a.flags.at("threads"), "--threads", 0, 1024)) : 0;
+  BatchOptions opt = batch_options(f);
+  opt.threads = f.threads;
   // The progress line on a terminal: at most ten redraws a second, never backwards (workers report
   // out of order), with the percentage and the remaining time; the callback costs an atomic load
   // and a clock read per point between redraws.
@@ -612,19 +687,17 @@ int run_sweep(const Args& a) {
   return 0;
 }
 
-// `physical`'s inputs as typed, each named by its flag (the input u_mean is --u-mean), and its controls.
-PhysicalOutputs physical_record(const Args& a, const WaveSpec& wave) {
-  BatchOptions options;
-  options.escalate = !switch_on(a, "no-escalate");
-  options.solver = parse_solver_options(a);
+// `physical`'s inputs as typed (`texts`, swept or not), each named by its flag (the input u_mean is
+// --u-mean), and its controls.
+PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, std::string>& texts, const WaveSpec& wave) {
   PhysicalRequest request;
   for (auto& [member, input] : request.inputs()) {
     std::string flag = member;
     std::replace(flag.begin(), flag.end(), '_', '-');
     input->name = "--" + flag;
-    if (a.flags.count(flag)) input->text = a.flags.at(flag);
+    if (const auto it = texts.find(flag); it != texts.end()) input->text = it->second;
   }
-  return physical_point(wave, request, parse_precision(a), options);
+  return physical_point(wave, request, precision_of(f), batch_options(f));
 }
 
 // Names and values of output records, for CSV and JSON.
@@ -641,18 +714,18 @@ std::vector<std::string> values_of(const PhysicalOutputs& r) {
 
 // `physical` at one point, or over a range of one input (--v0, --A, --f, --F-N or --u-mean as
 // FROM:TO:N or log:FROM:TO:N): one row per value, streamed as it is computed.
-int run_physical(const Args& a) {
-  const WaveSpec wave = read_wave(a);
+int run_physical(const Flags& f) {
+  const WaveSpec wave = read_wave(f);
   std::string swept;
   for (const char* name : {"v0", "A", "f", "F-N", "u-mean"})
-    if (a.flags.count(name) && a.flags.at(name).find(':') != std::string::npos) {
+    if (f.texts.count(name) && f.texts.at(name).find(':') != std::string::npos) {
       if (!swept.empty())
         throw InputError("--" + swept + " and --" + name + " are both ranges: expected one swept input at a time");
       swept = name;
     }
   if (swept.empty()) {
-    const Format format = parse_format(a);
-    const PhysicalOutputs rec = physical_record(a, wave);
+    const Format format = f.format.value_or(Format::text);
+    const PhysicalOutputs rec = physical_record(f, f.texts, wave);
     if (format == Format::csv) {
       write_csv_row(names_of(rec));
       write_csv_row(values_of(rec));
@@ -663,15 +736,15 @@ int run_physical(const Args& a) {
     }
     return 0;
   }
-  const Format format = a.flags.count("format") ? parse_format(a) : Format::csv;
+  const Format format = f.format.value_or(Format::csv);
   if (format == Format::text) throw InputError("--format text: a physical sweep writes csv (the default) or json");
   // A range of u_mean may start below contact (gamma < -1 for the sine): such rows are errors, as at one point.
-  const auto range = value_range(a.flags.at(swept), "--" + swept, swept == "u-mean");
+  const auto range = value_range(f.texts.at(swept), "--" + swept, swept == "u-mean");
   // Every input's domain is monotone along a range: its two ends decide it before the first row.
-  Args point = a;
+  std::map<std::string, std::string> texts = f.texts;
   auto at = [&](std::size_t i) {
-    point.flags[swept] = range[i];
-    return physical_record(point, wave);
+    texts[swept] = range[i];
+    return physical_record(f, texts, wave);
   };
   const PhysicalOutputs first = at(0), last = at(range.size() - 1);
   for (std::size_t i = 0; i < range.size(); ++i) {
@@ -691,16 +764,15 @@ int run_physical(const Args& a) {
 
 // s(φ) and n(φ) over one period (the paper's Fig. 2): N equally spaced phases plus both ends of
 // every stick phase, so that a plot shows the kinks where they are.
-int run_trace(const Args& a) {
-  const WaveSpec wave = read_wave(a);
+int run_trace(const Flags& f) {
+  const WaveSpec wave = read_wave(f);
   TraceRequest request;
-  request.beta = {need(a, "beta"), "--beta"};
-  request.gamma = {need(a, "gamma"), "--gamma"};
+  request.beta = {need(f, f.beta, "beta"), "--beta"};
+  request.gamma = {need(f, f.gamma, "gamma"), "--gamma"};
   request.points_name = "--points";
   request.digits_name = "--digits";
-  if (a.flags.count("digits")) request.digits = parse_int(a.flags.at("digits"), "--digits", min_digits, max_digits);
-  if (a.flags.count("points"))
-    request.points = parse_int(a.flags.at("points"), "--points", min_trace_points, max_trace_points);
+  if (f.digits) request.digits = *f.digits;
+  if (f.points) request.points = *f.points;
   const auto rows = trace_rows(wave, request);
   std::cout << "phi,n,s\n";
   for (const auto& r : rows) std::cout << r[0] << ',' << r[1] << ',' << r[2] << '\n';
@@ -709,16 +781,17 @@ int run_trace(const Args& a) {
 
 // A samples file fitted by K harmonics (DFT for uniform phases, least squares for time stamps),
 // written as a fourier file that --wave fourier:FILE reads.
-int run_fit(const Args& a) {
-  const WaveSpec wave = read_wave(a);
-  const int harmonics = parse_int(need(a, "harmonics"), "--harmonics", 1, max_fit_harmonics);
+int run_fit(const Flags& f) {
+  const WaveSpec wave = read_wave(f);
+  if (!f.harmonics) throw InputError("missing --harmonics for 'fit'");
+  const int harmonics = *f.harmonics;
   const FourierFit fit = fit_fourier(wave, static_cast<unsigned>(harmonics));
-  const std::string text = fourier_file_text(fit, need(a, "wave"));
-  if (!a.flags.count("output")) {
+  const std::string text = fourier_file_text(fit, *f.wave);
+  if (!f.output) {
     std::cout << text;
     return 0;
   }
-  const std::string& path = a.flags.at("output");
+  const std::string& path = *f.output;
   if (std::filesystem::is_directory(path))
     throw InputError("--output '" + detail::visible(path) + "' is a directory: expected a file name");
   std::ofstream out(path);
@@ -729,7 +802,7 @@ int run_fit(const Args& a) {
   return 0;
 }
 
-int run_version() {
+int run_version(const Flags&) {
   std::printf("vibrofric %s\n", VIBROFRIC_VERSION);
 #if defined(__clang__)
   std::printf("compiler clang %s\n", __clang_version__);
@@ -744,16 +817,14 @@ int run_version() {
   return 0;
 }
 
-int run_verify(const Args& a) {
-  const int digits = a.flags.count("digits") ? parse_int(a.flags.at("digits"), "--digits", min_verify_digits, max_verify_digits) : 50;
-  if (a.flags.count("format") && a.flags.at("format") != "json" && a.flags.at("format") != "text")
-    throw InputError("--format '" + detail::visible(a.flags.at("format")) + "': expected text or json");
+int run_verify(const Flags& f) {
+  const int digits = f.digits.value_or(50);
   std::vector<ClaimCheck> checks;
-  if (a.flags.count("claim"))
-    checks.push_back(check_claim(a.flags.at("claim"), digits));
+  if (f.claim)
+    checks.push_back(check_claim(*f.claim, digits));
   else
     checks = verify_claims(digits);
-  if (a.flags.count("format") && a.flags.at("format") == "json") {
+  if (f.format == Format::json) {
     std::cout << claims_json(checks, digits) << '\n';
     return 0;
   }
@@ -797,27 +868,10 @@ std::string one_line(const std::string& message) {
 int main(int argc, char** argv) {
   pending_diagnostics.clear();
   try {
-    const Args a = parse_args(argc, argv);
-    if (a.help) return 0;
-    int rc = 0;
-    if (a.command == "mu")
-      rc = run_mu_psi(a, Quantity::mu);
-    else if (a.command == "psi")
-      rc = run_mu_psi(a, Quantity::psi);
-    else if (a.command == "sweep")
-      rc = run_sweep(a);
-    else if (a.command == "physical")
-      rc = run_physical(a);
-    else if (a.command == "trace")
-      rc = run_trace(a);
-    else if (a.command == "fit")
-      rc = run_fit(a);
-    else if (a.command == "version")
-      rc = run_version();
-    else
-      rc = run_verify(a);
+    const std::optional<int> status = run_command(argc, argv);
+    if (!status) return 0;  // --help
     std::cerr << pending_diagnostics;
-    return rc;
+    return *status;
   } catch (const InputError& e) {
     std::cerr << "vibrofric: " << one_line(e.what()) << '\n';
     return 2;

@@ -1288,6 +1288,26 @@ def cli_tests():
         [], ["--beta needs a value"])
     bad("--beta= (empty)", ["mu", "--wave", "sine", "--beta=", "--gamma", "0"], [], ["--beta needs a value", "empty"])
     bad("--no-escalate followed by a value", mu + ["--type", "double", "--no-escalate", "true"], ["'true'"])
+    # Where CLI11 2.1 alone would read a value otherwise (the tool checks these itself):
+    # its int reads 0x10 as 16 and 010 as 8; its switches take on/off; '--' would end the flags.
+    bad("--digits 0x10 (not an integer in our grammar)", mu + ["--digits", "0x10"], ["'0x10'"], ["--digits"])
+
+    def leading_zero_is_decimal():
+        ten, eight = ok_run(mu + ["--digits", "10"]), ok_run(mu + ["--digits", "8"])
+        if ok_run(mu + ["--digits", "010"]) != ten or ten == eight:
+            raise Fail("--digits 010 printed other than --digits 10 (%r)" % ten)
+    case("--digits 010 is ten (decimal), not CLI11's octal eight", leading_zero_is_decimal)
+    bad("--no-escalate=on (CLI11 would take it)", mu + ["--type", "double", "--no-escalate=on"], ["'on'"], ["no-escalate"])
+    bad("a bare -- (CLI11 would end the flags there)", mu + ["--", "--digits", "5"], ["--"])
+    # A value is checked as it is read, before the command looks for its required flags.
+    bad("a bad value before a missing --wave", ["mu", "--digits", "10001"], ["10001"], ["--digits"])
+
+    def help_wins():
+        for args in (["mu", "--help", "--beta"], ["sweep", "--bogus", "--help"], ["mu", "--beta", "x", "-h"]):
+            rc, out, err = run(args)
+            if rc != 0 or not out.startswith("usage: vibrofric " + args[0]) or err:
+                raise Fail("%s: exit %d, stdout %r, stderr %r: expected the command's help" % (cmd(args), rc, out[:80], err))
+    case("--help wins over a missing value, an unknown flag and a bad value", help_wins)
     # Values are quoted as typed, invisible characters escaped.
     bad("--type with a CR", mu + ["--type", "double\r"], [], ["'double\\r'"])
     bad("--format with a no-break space", mu + ["--format", "csv\u00a0"], [], ["'csv\\xC2\\xA0'"])
