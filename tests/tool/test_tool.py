@@ -1034,6 +1034,25 @@ def physical_tests():
         expect_digits(got["mu"], F(got["mu_over_mu0"]) * mu0, 50, "mu = mu0 * mu_over_mu0")
     case("physical steel on steel (sine): E*, G*, k_z, k_x, beta, gamma (Eqs. 1, 5, 14), mu", steel_fn)
 
+    # 1b. mu is mu0 times the double that mu_over_mu0 prints (17 digits name one double), rounded
+    # once to 17 significant digits: the product of the value, not of its printed decimal.
+    def product_of_the_value_fn():
+        common = {"--type": "double", "--A": "1e-5", "--v0": "1e-3"}
+        for change in ({}, {"--u-mean": "0"}, {"--shape": "sphere", "--R": "0.01", "--radius": None},
+                       {"--wave": "triangle", "--u-mean": "-2e-6", "--shape": "cone", "--half-angle": "80", "--radius": None}):
+            a = physical_args(**dict(common, **change))
+            got = parse(ok_run(a))
+            exact = Fraction(float(got["mu_over_mu0"])) * Fraction(steel["mu0"])
+            with decimal.localcontext() as ctx:
+                ctx.prec = 200
+                q = Decimal(exact.numerator) / Decimal(exact.denominator)
+                ctx.prec, ctx.rounding = 17, decimal.ROUND_HALF_EVEN
+                want = +q
+            if Fraction(got["mu"]) != Fraction(want):
+                raise Fail("%s: mu = %s, expected mu0 x mu_over_mu0 (%s) rounded once: %s"
+                           % (cmd(a), got["mu"], got["mu_over_mu0"], want))
+    case("physical --type double: mu is mu0 times the double of mu_over_mu0, rounded once", product_of_the_value_fn)
+
     # 2. steel on aluminium with explicit shear moduli; triangle, gamma 0.25: mu = 2b/(4+b)
     alu = dict(E1="210e9", nu1="0.3", E2="70e9", nu2="0.33", G1="80e9", G2="26e9", radius="0.0025",
                v0="0.00005", f="200", A="0.000001", umean="0.00000025", mu0="0.4")

@@ -115,11 +115,11 @@ TEST(evaluate_stream, SameStringsAsEvaluateInEveryType) {
   }
 }
 
-// round_to<T> (a computed point's β and γ in each type) is the nearest T: the same as the type's
+// detail::rounded<T> (a computed point's β and γ in each type) is the nearest T: the same as the type's
 // own parsing of the value's first 120 decimal digits, an independent rounding (the values carry
 // 80 digits, so no midpoint of T lies between the two at any seed of this run).
 template <class T>
-void expect_round_to_is_nearest(const char* type) {
+void expect_rounded_is_nearest(const char* type) {
   PrecisionScope scope(80);
   std::mt19937_64 gen(7);
   std::uniform_real_distribution<double> mantissa(-1, 1);
@@ -130,11 +130,11 @@ void expect_round_to_is_nearest(const char* type) {
     const std::string decimal120 = x.str(120, std::ios_base::scientific);
     if constexpr (is_runtime_precision_v<T>) {
       PrecisionScope at(30);
-      EXPECT_EQ(detail::round_to<T>(x).str(40, std::ios_base::scientific),
+      EXPECT_EQ(detail::rounded<T>(x).str(40, std::ios_base::scientific),
                 parse_real<T>(decimal120, "x").str(40, std::ios_base::scientific))
           << type << " " << decimal120;
     } else {
-      EXPECT_EQ(detail::round_to<T>(x), parse_real<T>(decimal120, "x")) << type << " " << decimal120;
+      EXPECT_EQ(detail::rounded<T>(x), parse_real<T>(decimal120, "x")) << type << " " << decimal120;
     }
   }
 }
@@ -159,7 +159,7 @@ TEST(evaluate_stream, ComputedValuesNextToMidpointsRoundToTheNearestBin50) {
   for (int k = 0; k < 2000; ++k) {
     const bin50 b = bin50(u(gen)) / 3;
     const mpfr x = (exact(b) + exact(boost::math::float_next(b))) / 2 + (k % 2 ? 1 : -1) * pow(mpfr(10), -110);
-    const bin50 c = detail::round_to<bin50>(x);
+    const bin50 c = detail::rounded<bin50>(x);
     const mpfr d = abs(x - exact(c));
     EXPECT_LT(d, abs(x - exact(boost::math::float_next(c)))) << x.str(60);
     EXPECT_LT(d, abs(x - exact(boost::math::float_prior(c)))) << x.str(60);
@@ -167,11 +167,11 @@ TEST(evaluate_stream, ComputedValuesNextToMidpointsRoundToTheNearestBin50) {
 }
 
 TEST(evaluate_stream, ComputedValuesRoundToTheNearestOfEachType) {
-  expect_round_to_is_nearest<double>("double");
-  expect_round_to_is_nearest<long double>("long double");
-  expect_round_to_is_nearest<bin50>("cpp_bin_float_50");
-  expect_round_to_is_nearest<bin100>("cpp_bin_float_100");
-  expect_round_to_is_nearest<mpfr>("mpfr 30");
+  expect_rounded_is_nearest<double>("double");
+  expect_rounded_is_nearest<long double>("long double");
+  expect_rounded_is_nearest<bin50>("cpp_bin_float_50");
+  expect_rounded_is_nearest<bin100>("cpp_bin_float_100");
+  expect_rounded_is_nearest<mpfr>("mpfr 30");
 }
 
 // A point given by value (physical_point's β and γ) answers as its decimal does: exactly for
@@ -214,6 +214,62 @@ TEST(evaluate_stream, ComputedWearFlatLambdaActsAsItsDecimal) {
     for (const char* gamma : {"0.5", "-0.3"})
       EXPECT_EQ(evaluate(sine, Quantity::mu, {{"1", gamma}}, p, by_value), evaluate(sine, Quantity::mu, {{"1", gamma}}, p, by_text))
           << number_type_name(p.type) << " gamma " << gamma;
+}
+
+// evaluate_one's value is the value it prints: for double and long double the value its
+// round-trip digits name (parsed independently); for cpp_bin_float a value of the type within half
+// a unit of the printed last digit that prints as the text; for mpfr within half a unit of the
+// last digit, with more bits than the digits need. Points from every rung of double's ladder
+// (own, long double, mpfr: β = 1e-6 and γ near −1 escalate), Ψ, and a sphere.
+TEST(evaluate_stream, EvaluateOneGivesTheValueItPrints) {
+  const WaveSpec sine = parse_wave("sine"), triangle = parse_wave("triangle");
+  BatchOptions sphere;
+  sphere.profile = parse_profile("sphere");
+  struct Case {
+    const WaveSpec* wave;
+    Quantity q;
+    Point point;
+    const BatchOptions* options;
+  };
+  const BatchOptions flat;
+  const std::vector<Case> cases{{&sine, Quantity::mu, {"0.5", "0.2"}, &flat},     {&sine, Quantity::mu, {"1e-6", "0.5"}, &flat},
+                                {&sine, Quantity::mu, {"0.3", "-0.9999999"}, &flat}, {&triangle, Quantity::mu, {"2", "1.5"}, &flat},
+                                {&sine, Quantity::psi, {"0.7"}, &flat},           {&sine, Quantity::mu, {"1", "0.5"}, &sphere}};
+  for (const TypeCase& c : type_cases()) {
+    const int digits = output_digits(c.precision);
+    for (const Case& k : cases) {
+      if (k.options == &sphere && c.curved_points == 0) continue;
+      const Evaluated e = evaluate_one(*k.wave, k.q, k.point, c.precision, *k.options);
+      const std::string where = number_type_name(c.precision.type) + " " + k.wave->name + " beta " + k.point.beta + " gamma " + k.point.gamma;
+      EXPECT_EQ(e.text, evaluate(*k.wave, k.q, {k.point}, c.precision, *k.options).front()) << where;
+      PrecisionScope scope(static_cast<unsigned>(digits + 40));
+      const mpfr printed(e.text);
+      const mpfr half_unit = abs(printed) * pow(mpfr(10), 1 - digits) / 2;
+      switch (c.precision.type) {
+        case NumberType::float64:
+          EXPECT_EQ(e.value, mpfr(std::stod(e.text))) << where;
+          break;
+        case NumberType::float80:
+          EXPECT_EQ(e.value, mpfr(std::stold(e.text))) << where;
+          break;
+        case NumberType::bin50:
+          EXPECT_EQ(e.value, mpfr(detail::rounded<bin50>(e.value))) << where;
+          EXPECT_EQ(format_significant(detail::rounded<bin50>(e.value), digits), e.text) << where;
+          EXPECT_LE(abs(e.value - printed), half_unit) << where;
+          break;
+        case NumberType::bin100:
+          EXPECT_EQ(e.value, mpfr(detail::rounded<bin100>(e.value))) << where;
+          EXPECT_EQ(format_significant(detail::rounded<bin100>(e.value), digits), e.text) << where;
+          EXPECT_LE(abs(e.value - printed), half_unit) << where;
+          break;
+        case NumberType::mpfr:
+          EXPECT_GT(e.value.precision(), static_cast<unsigned>(digits)) << where;
+          EXPECT_EQ(format_significant(e.value, digits), e.text) << where;
+          EXPECT_LE(abs(e.value - printed), half_unit) << where;
+          break;
+      }
+    }
+  }
 }
 
 // Several ring laps (count not a multiple of the chunk) in double, with progress and the window.

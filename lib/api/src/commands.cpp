@@ -147,12 +147,13 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   point.gamma = format_significant(g.gamma, digits + 15);
   point.beta_value = g.beta;
   point.gamma_value = g.gamma;
-  // μ = μ0·(μ̄/μ0) from the ratio at 10 more digits, then rounded once to the requested digits.
+  // μ = μ0·(μ̄/μ0) from the ratio's value (mpfr: decided at 10 more digits), rounded once to the
+  // requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  const std::string ratio_fine = evaluate(wave, Quantity::mu, {point}, fine, options).front();
-  const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(mpfr(ratio_fine), digits) : ratio_fine;
-  const mpfr mu = mpfr(ratio_fine) * in.mu0;
+  const Evaluated ratio = evaluate_one(wave, Quantity::mu, point, fine, options);
+  const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(ratio.value, digits) : ratio.text;
+  const mpfr mu = ratio.value * in.mu0;
   mpfr edge;
   const mpfr force = load(g.gamma, &edge);
   // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,

@@ -35,14 +35,34 @@ int output_digits(const Precision& p) {
   return p.digits;
 }
 
-void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
-                     const std::function<Point(std::size_t)>& point, const Precision& precision,
-                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink) {
+namespace {
+// The digits printed, after the request's are checked.
+int checked_output_digits(const Precision& precision) {
   if (precision.type == NumberType::mpfr &&
       (precision.digits < min_digits || precision.digits > max_digits))
     throw InputError("digits = " + std::to_string(precision.digits) + ": expected " +
                      std::to_string(min_digits) + " to " + std::to_string(max_digits));
-  const int digits = output_digits(precision);
+  return output_digits(precision);
+}
+}  // namespace
+
+Evaluated evaluate_one(const WaveSpec& wave, Quantity q, const Point& point, const Precision& precision,
+                       const BatchOptions& options) {
+  const int digits = checked_output_digits(precision);
+  switch (precision.type) {
+    case NumberType::float64: return detail::evaluate_one_typed<double>(wave, q, point, digits, options);
+    case NumberType::float80: return detail::evaluate_one_typed<long double>(wave, q, point, digits, options);
+    case NumberType::bin50: return detail::evaluate_one_typed<bin50>(wave, q, point, digits, options);
+    case NumberType::bin100: return detail::evaluate_one_typed<bin100>(wave, q, point, digits, options);
+    case NumberType::mpfr: return detail::evaluate_one_typed<mpfr>(wave, q, point, digits, options);
+  }
+  throw std::logic_error("evaluate_one: unknown number type");
+}
+
+void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
+                     const std::function<Point(std::size_t)>& point, const Precision& precision,
+                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink) {
+  const int digits = checked_output_digits(precision);
   switch (precision.type) {
     case NumberType::float64: return detail::evaluate_stream_typed<double>(wave, q, count, point, digits, options, sink);
     case NumberType::float80: return detail::evaluate_stream_typed<long double>(wave, q, count, point, digits, options, sink);

@@ -97,6 +97,16 @@ void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
                      const std::function<Point(std::size_t)>& point, const Precision& precision,
                      const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink);
 
+// One point's printed value and the value itself, for a caller that computes on with it (physical's
+// μ = μ0 · μ̄/μ0) instead of parsing the text: the fixed types' value held exactly, mpfr's at the
+// working precision that decided its digits. The same checks, ladder and text as evaluate().
+struct Evaluated {
+  std::string text;
+  mpfr value;
+};
+Evaluated evaluate_one(const WaveSpec& wave, Quantity q, const Point& point, const Precision& precision,
+                       const BatchOptions& options = {});
+
 // Points in flight per worker thread in evaluate_stream (the memory bound's chunk).
 inline constexpr std::size_t stream_chunk = 4096;
 
@@ -106,6 +116,8 @@ template <class Real>
 void evaluate_stream_typed(const WaveSpec& wave, Quantity q, std::size_t count,
                            const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
                            const std::function<void(std::size_t, const std::string&)>& sink);
+template <class Real>
+Evaluated evaluate_one_typed(const WaveSpec& wave, Quantity q, const Point& point, int digits, const BatchOptions& options);
 }  // namespace detail
 
 }  // namespace vibrofric

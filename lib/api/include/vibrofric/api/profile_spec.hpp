@@ -42,7 +42,7 @@ std::unique_ptr<Profile<Real>> make_profile(const ProfileSpec& spec) {
     else return Real(text);
   };
   const auto parameter = [&]() -> Real {
-    if (spec.parameter_value) return detail::rounded<Real>(*spec.parameter_value, static_cast<unsigned>(working_digits10<mpfr>()));
+    if (spec.parameter_value) return detail::rounded<Real>(*spec.parameter_value);
     return number(spec.parameter);
   };
   switch (spec.kind) {

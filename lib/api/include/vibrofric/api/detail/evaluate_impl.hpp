@@ -33,20 +33,14 @@ struct PointValue {
   Real relative_error;
 };
 
-// x rounded once to nearest in Real (mpfr: at the current precision).
-template <class Real>
-Real round_to(const mpfr& x) {
-  return rounded<Real>(x, static_cast<unsigned>(working_digits10<mpfr>()));
-}
-
 // β and γ of a point in Real: the computed value rounded once, else the decimal text parsed.
 template <class Real>
 Real point_beta(const Point& p) {
-  return p.beta_value ? round_to<Real>(*p.beta_value) : parse_real<Real>(p.beta, "beta");
+  return p.beta_value ? rounded<Real>(*p.beta_value) : parse_real<Real>(p.beta, "beta");
 }
 template <class Real>
 Real point_gamma(const Point& p) {
-  return p.gamma_value ? round_to<Real>(*p.gamma_value) : parse_real<Real>(p.gamma, "gamma");
+  return p.gamma_value ? rounded<Real>(*p.gamma_value) : parse_real<Real>(p.gamma, "gamma");
 }
 
 // What names γ in the Contact caches: the text as typed, or a computed value's exact binary
@@ -214,11 +208,11 @@ PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& 
   return {r.mu, r.relative_error};
 }
 
-// One point at `digits` significant digits: mpfr raises its working precision until the
-// error estimate is below half a unit in the last requested digit.
+// One point for `digits` significant digits: mpfr raises its working precision until the error
+// estimate is below half a unit in the last requested digit, and the value keeps that precision.
 template <class Real>
-std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantity q, const Point& p,
-                           int digits, const Options& opt) {
+Real evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantity q, const Point& p,
+                    int digits, const Options& opt) {
   if constexpr (is_runtime_precision_v<Real>) {
     RaisePolicy policy;
     policy.guard = guard_digits(digits);
@@ -227,12 +221,12 @@ std::string evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantit
         digits + guard_digits(digits), policy,
         [&] { return compute_point(waves, q, p, opt, Real(pow(Real(10), -digits) / 8)); },
         [&](const PointValue<Real>& r) { return shortfall(r.relative_error, Real(pow(Real(10), -digits) / 2)); });
-    if (v) return format_significant(v->value, digits);
+    if (v) return v->value;
     throw SolverError("wave " + spec.name + ", beta = " + p.beta +
                       (q == Quantity::mu ? ", gamma = " + p.gamma : std::string()) +
                       ": could not reach " + std::to_string(digits) + " digits (ill-conditioned)");
   } else {
-    return format_significant(compute_point(waves, q, p, opt).value, digits);
+    return compute_point(waves, q, p, opt).value;
   }
 }
 
@@ -286,8 +280,8 @@ bool own_rung_may_certify(WaveCache<Real>& waves, Quantity q, const Point& p, co
 // for double next the long double value where its bound does (as Boost.Math promotes double);
 // else mpfr at twice the type's digits and more, until the rounding is certified.
 template <class Real>
-std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
-                           const WaveSpec& spec, Quantity q, const Point& p, int digits, const BatchOptions& options) {
+Real evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
+                    const WaveSpec& spec, Quantity q, const Point& p, const BatchOptions& options) {
   using std::abs;
   // A rung whose precision cannot resolve the waveform (PrecisionError) is not certified.
   auto rung = [&](auto& cache) -> std::optional<PointValue<typename std::decay_t<decltype(cache)>::real_type>> {
@@ -304,13 +298,13 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
   if (!options.escalate || own_rung_may_certify(waves, q, p, options.solver))
     if (const auto v = rung(waves); v && (!options.escalate || rounds_to_itself<Real>(v->value, Real(v->relative_error * abs(v->value))))) {
       count(&LadderCounts::own);
-      return format_significant(v->value, digits);
+      return v->value;
     }
   if constexpr (std::is_same_v<Real, double>) {
     const auto w = rung(wider);
     if (w && rounds_alike<double>(w->value, static_cast<long double>(w->relative_error * abs(w->value)))) {
       count(&LadderCounts::long_double);
-      return format_significant(static_cast<double>(w->value), digits);
+      return static_cast<double>(w->value);
     }
   }
   count(&LadderCounts::mpfr);
@@ -324,16 +318,13 @@ std::string evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider
       PrecisionScope scope(static_cast<unsigned>(work));
       const auto v = rung(fallback);
       if (v && rounds_alike<Real>(v->value, mpfr(v->relative_error * abs(v->value))))
-        return format_significant(static_cast<Real>(v->value), digits);
+        return static_cast<Real>(v->value);
     }
-    // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: round the decimal, which
-    // evaluate_point gives within half a unit of its last digit.
-    return format_significant(parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, work, options.solver), "escalated value"),
-                              digits);
+    // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: the value evaluate_point
+    // gives within half a unit of its `work`-th digit, rounded once to the type.
+    return rounded<Real>(evaluate_point<mpfr>(fallback, spec, q, p, work, options.solver));
   } else {
-    return format_significant(
-        parse_real<Real>(evaluate_point<mpfr>(fallback, spec, q, p, 2 * type_digits + 3, options.solver), "escalated value"),
-        digits);
+    return rounded<Real>(evaluate_point<mpfr>(fallback, spec, q, p, 2 * type_digits + 3, options.solver));
   }
 }
 
@@ -407,13 +398,16 @@ class PointEvaluator {
   PointEvaluator(const WaveSpec& spec, Quantity q, int digits, const BatchOptions& options)
       : spec_(spec), q_(q), digits_(digits), options_(options), check_(spec, q), waves_(spec, options.profile),
         wider_(spec, options.profile), fallback_(spec, options.profile) {}
-  std::string operator()(const Point& p) {
+  // The value as a number: the type's correctly rounded value (fixed types); mpfr's at the working
+  // precision that decides its `digits` digits.
+  Real value(const Point& p) {
     check_(p);
     if constexpr (is_runtime_precision_v<Real>)
       return evaluate_point<Real>(waves_, spec_, q_, p, digits_, options_.solver);
     else
-      return evaluate_fixed(waves_, wider_, fallback_, spec_, q_, p, digits_, options_);
+      return evaluate_fixed(waves_, wider_, fallback_, spec_, q_, p, options_);
   }
+  std::string operator()(const Point& p) { return format_significant(value(p), digits_); }
 
  private:
   const WaveSpec& spec_;
@@ -425,6 +419,19 @@ class PointEvaluator {
   WaveCache<long double> wider_;
   WaveCache<mpfr> fallback_;
 };
+
+// evaluate_one (evaluate.hpp): a fixed type's value copied into an mpfr with more bits, exactly.
+template <class Real>
+Evaluated evaluate_one_typed(const WaveSpec& spec, Quantity q, const Point& point, int digits, const BatchOptions& options) {
+  PointEvaluator<Real> evaluator(spec, q, digits, options);
+  const Real v = evaluator.value(point);
+  if constexpr (is_runtime_precision_v<Real>) {
+    return {format_significant(v, digits), v};
+  } else {
+    PrecisionScope scope(static_cast<unsigned>(std::numeric_limits<Real>::max_digits10 + 2));
+    return {format_significant(v, digits), mpfr(v)};
+  }
+}
 
 // The streaming core under evaluate() and evaluate_stream() (evaluate.hpp).
 //
@@ -556,4 +563,6 @@ void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
 #define VIBROFRIC_INSTANTIATE_EVALUATE(Real)                                                     \
   template void vibrofric::detail::evaluate_stream_typed<Real>(                                 \
       const WaveSpec&, Quantity, std::size_t, const std::function<Point(std::size_t)>&, int,    \
-      const BatchOptions&, const std::function<void(std::size_t, const std::string&)>&);
+      const BatchOptions&, const std::function<void(std::size_t, const std::string&)>&);        \
+  template vibrofric::Evaluated vibrofric::detail::evaluate_one_typed<Real>(                     \
+      const WaveSpec&, Quantity, const Point&, int, const BatchOptions&);
