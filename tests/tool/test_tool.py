@@ -217,9 +217,22 @@ def bad_input_tests():
     for v in ("0", "-1", "0.0", "-0", "0e5", "-2.5e-3"):
         bad("beta=%s" % v, mu_beta(v), [v], ["beta"])
     bad("psi beta=0", ["psi", "--wave", "triangle", "--beta", "0"], ["0"], ["beta"])
-    # A positive beta that underflows the type is named as written, not as 0.
+    # A positive beta that underflows the type: the same decision as in mpfr (a value), the
+    # ladder's wider rung rounded to the type (mu ~ 3.6e-5001 rounds to 0 in both); refused, named
+    # as written, only where the type's own value is asked for.
     for t in ("double", "long-double"):
-        bad("beta=1e-5000 --type %s" % t, mu_beta("1e-5000") + ["--type", t], ["1e-5000"], ["beta", "underflows"])
+        bad("beta=1e-5000 --type %s --no-escalate" % t, mu_beta("1e-5000") + ["--type", t, "--no-escalate"],
+            ["1e-5000"], ["beta", "underflows"])
+
+    def underflowing_beta_is_a_value():
+        wide = Decimal(ok_run(mu_beta("1e-5000") + ["--digits", "25"]).strip())
+        if not (Decimal("3e-5001") < wide < Decimal("4e-5001")):
+            raise Fail("mu at beta 1e-5000, 25 digits: %s, expected about 0.365 beta" % wide)
+        for t in ("double", "long-double"):
+            got = ok_run(mu_beta("1e-5000") + ["--type", t]).strip()
+            if Decimal(got) != 0:
+                raise Fail("mu at beta 1e-5000 --type %s: %s, expected 0 (%s rounded to the type)" % (t, got, wide))
+    case("beta=1e-5000 in double and long double: mpfr's value rounded to the type", underflowing_beta_is_a_value)
     # NaN / infinities, overflow, garbage, empty: beta and gamma
     for v in ("NaN", "nan", "inf", "-inf", "Infinity", "1e400", "-1e999", "1.5x", "1.5.3", "0x10",
               " 1", "1e", "e5", "--", "1,5"):
@@ -380,12 +393,12 @@ def bad_input_tests():
         ("samples", "nbsp.txt", "0\n1\xa0\n-1\n", [], ["\\xC2\\xA0"]),
         ("fourier", "fourier-two-columns-header.txt", "k,a\n1,0\n", [], ["three"]),
     ]
-    for case in cases:
-        kind, fname, text, vals = case[:4]
+    for file_case in cases:
+        kind, fname, text, vals = file_case[:4]
         path = write(kind + "-" + fname, text)
         bad("%s file %s" % (kind, fname), ["mu", "--wave", "%s:%s" % (kind, path), "--beta", "1",
                                             "--gamma", "0.5"],
-            vals, [os.path.basename(path)] + (list(case[4]) if len(case) > 4 else []))
+            vals, [os.path.basename(path)] + (list(file_case[4]) if len(file_case) > 4 else []))
     bad("samples file is a directory", ["mu", "--wave", "samples:" + TMP, "--beta", "1", "--gamma", "0.5"],
         words=["directory"])
 

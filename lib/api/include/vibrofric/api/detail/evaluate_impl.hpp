@@ -186,6 +186,14 @@ class WaveCache {
   std::string text_;
 };
 
+// A positive β that a type's range cannot hold (1e-5000 in double): bad input for that type alone.
+// The ladder takes it to a wider rung, as any input the type cannot resolve, so that every type
+// decides the input alike; without escalation (or in mpfr, past its exponent range) it is refused.
+class UnderflowError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // `target`: the relative accuracy asked of a curved contact's spring integral (0: the type's).
 template <class Real>
 PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt,
@@ -194,7 +202,7 @@ PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& 
   // A positive β below the type's smallest number reads as 0: name what was written.
   if (beta == 0 && !p.beta_value && p.beta[0] != '-' &&
       p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
-    throw InputError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: more digits)");
+    throw UnderflowError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: more digits)");
   if (const Profile<Real>* profile = waves.profile()) {
     if (q == Quantity::psi)
       throw InputError("psi with profile " + profile->name() +
@@ -283,11 +291,15 @@ template <class Real>
 Real evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveCache<mpfr>& fallback,
                     const WaveSpec& spec, Quantity q, const Point& p, const BatchOptions& options) {
   using std::abs;
-  // A rung whose precision cannot resolve the waveform (PrecisionError) is not certified.
+  // A rung whose precision cannot resolve the waveform (PrecisionError), or whose range cannot hold
+  // β (UnderflowError), is not certified.
   auto rung = [&](auto& cache) -> std::optional<PointValue<typename std::decay_t<decltype(cache)>::real_type>> {
     try {
       return compute_point(cache, q, p, options.solver);
     } catch (const PrecisionError&) {
+      if (!options.escalate) throw;
+      return std::nullopt;
+    } catch (const UnderflowError&) {
       if (!options.escalate) throw;
       return std::nullopt;
     }
