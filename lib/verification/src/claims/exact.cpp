@@ -128,8 +128,8 @@ ClaimCheck eq22(int digits) {
 ClaimCheck fig3(int digits) {
   Check c(entry("fig3"), digits);
   c.out().how = "square, the figure's 11 gamma (1, 0.8, ..., -0.8, and -0.999 for -1, where there is no contact) x "
-                "(beta = 0.1, 0.2, ..., 8 + 5 around the threshold): solver against Eq. 22; the data are `vibrofric sweep "
-                "--wave square`";
+                "(beta = 0.1, 0.2, ..., 8 + 5 around the threshold): solver against Eq. 22, at the "
+                "points of the figure's data (a sweep of the square wave)";
   Solver s("square", digits);
   std::vector<Real> betas;
   for (int k = 1; k <= 80; ++k) betas.push_back(Real(k) / 10);
