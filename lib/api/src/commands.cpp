@@ -87,17 +87,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
     const mpfr R = positive(r.R), b = positive(r.flat_radius);
     // λ goes to the profile as a value; its text (wearflat:λ) only names the profile.
     lambda = mpfr(b * b / (R * A));
-    const std::string text = format_significant(*lambda, digits + 15);
-    // The decisions parse_profile makes on a typed λ: representable in double, above 0.
-    const double in_double = static_cast<double>(*lambda);
-    if (!(in_double > 0))
-      throw InputError("wear-flat LAMBDA = '" + text + "': expected LAMBDA = b^2/(R A) > 0 (and above 1e-308)");
-    if (!std::isfinite(in_double))
-      throw InputError("wear-flat LAMBDA = '" + text + "' overflows: expected a magnitude below 1e308");
-    options.profile.kind = ProfileKind::wearflat;
-    options.profile.name = "wearflat:" + text;
-    options.profile.parameter = text;
-    options.profile.parameter_value = lambda;
+    options.profile = wear_flat_profile(*lambda, format_significant(*lambda, digits + 15));
     length = b;
   } else if (kind == "profile") {
     options.profile = parse_profile(shape);

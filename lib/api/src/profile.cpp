@@ -1,5 +1,6 @@
 #include "vibrofric/api/profile_spec.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -12,6 +13,16 @@ namespace vibrofric {
 
 namespace {
 std::string as_typed(const std::string& s) { return "'" + s + "'"; }
+
+// λ of a wear flat, typed or computed: above 0 and within double's range, so that every number
+// type decides it alike.
+void check_wear_flat(const mpfr& lambda, const std::string& text) {
+  const double in_double = static_cast<double>(lambda);
+  if (!(lambda > 0) || !(in_double > 0))
+    throw InputError("wear-flat LAMBDA = " + as_typed(text) + ": expected LAMBDA = b^2/(R A) > 0 (and above 1e-308)");
+  if (!std::isfinite(in_double))
+    throw InputError("wear-flat LAMBDA = " + as_typed(text) + " overflows: expected a magnitude below 1e308");
+}
 
 // Decimal text compared exactly enough: 400 digits hold every value a profile file may carry
 // (the grammar allows at most 9 exponent digits but no profile needs more than 400 digits).
@@ -46,8 +57,8 @@ ProfileSpec parse_profile(const std::string& text) {
     s.kind = ProfileKind::wearflat;
     s.parameter = arg;
     check_decimal(arg, "wear-flat LAMBDA in " + as_typed(text));
-    if (!(compare_decimal(arg, "0") > 0) || !(std::strtod(arg.c_str(), nullptr) > 0))
-      throw InputError("wear-flat LAMBDA = " + as_typed(arg) + ": expected LAMBDA = b^2/(R A) > 0 (and above 1e-308)");
+    PrecisionScope scope(400);
+    check_wear_flat(mpfr(arg), arg);
     return s;
   }
   if (colon != std::string::npos && head == "profile") {
@@ -56,6 +67,16 @@ ProfileSpec parse_profile(const std::string& text) {
   }
   throw InputError("unknown profile " + as_typed(text) +
                    ": expected flat, sphere, cone, power:N, wearflat:LAMBDA or profile:FILE");
+}
+
+ProfileSpec wear_flat_profile(const mpfr& lambda, const std::string& text) {
+  check_wear_flat(lambda, text);
+  ProfileSpec s;
+  s.kind = ProfileKind::wearflat;
+  s.name = "wearflat:" + text;
+  s.parameter = text;
+  s.parameter_value = lambda;
+  return s;
 }
 
 ProfileSpec parse_profile_file(const std::string& path, const std::string& text) {

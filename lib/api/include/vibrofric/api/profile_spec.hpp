@@ -29,6 +29,10 @@ struct ProfileSpec {
 // Throws InputError quoting the text otherwise (also for bad files: see parse_profile_file).
 ProfileSpec parse_profile(const std::string& text);
 
+// A wear flat of computed λ (physical's b²/(R A)), with the decisions parse_profile makes on a
+// typed one (λ > 0, within double's range); λ is the value, `text` only names it.
+ProfileSpec wear_flat_profile(const mpfr& lambda, const std::string& text);
+
 // Reads a measured profile: lines 'r f' ('#' comments, blank lines ignored; comma, semicolon or
 // whitespace between the two fields), r strictly increasing from r = 0, f(0) = 0, f
 // non-decreasing and convex (slopes non-decreasing), at least two samples, at most 100000.
