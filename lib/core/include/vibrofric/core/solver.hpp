@@ -490,8 +490,8 @@ class EventPass {
     err += (q - p) * value_bound();
     if (method_ == AreaMethod::exact) {
       const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
-      err += abs(wq) + abs(wp) + w_.antiderivative_error(g.piece, q) + w_.antiderivative_error(g.piece, p) +
-             abs(gamma_) * (q - p);
+      err += abs(wq) + abs(wp) + w_.antiderivative_error(g.piece, q, wq) +
+             w_.antiderivative_error(g.piece, p, wp) + abs(gamma_) * (q - p);
       return gamma_ * (q - p) + (wq - wp);
     }
     return quad([&](const Real& x) -> Real { return n(g, x); }, p, q, err);

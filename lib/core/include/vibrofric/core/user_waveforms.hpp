@@ -165,7 +165,7 @@ class FourierSeries final : public Waveform<Real> {
   }
 
   Real value_error() const override { return value_error_; }
-  Real antiderivative_error(std::size_t, const Real&) const override { return antiderivative_error_; }
+  Real antiderivative_error(std::size_t, const Real&, const Real&) const override { return antiderivative_error_; }
   Real value(std::size_t, const Real& phi) const override { return derivative(phi, 0); }
   Real slope(std::size_t, const Real& phi) const override { return derivative(phi, 1); }
   bool has_antiderivative() const override { return true; }

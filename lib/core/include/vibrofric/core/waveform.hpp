@@ -125,9 +125,10 @@ class Waveform {
   // normalisation, sample phases rounded to the type) and evaluations whose rounding is not
   // proportional to the result (a sum of harmonics; an antiderivative that cancels within its
   // piece). Near the contact edge the normal area is small and these errors dominate its
-  // relative error (tests/robustness/test_stress.cpp found both).
+  // relative error (tests/robustness/test_stress.cpp found both). `value` is antiderivative(i, φ)
+  // as the caller computed it (the bound scales with it; recomputing it cost a third of a solve).
   virtual Real value_error() const { return Real(0); }
-  virtual Real antiderivative_error(std::size_t, const Real&) const { return Real(0); }
+  virtual Real antiderivative_error(std::size_t, const Real&, const Real& /*value*/) const { return Real(0); }
 
   // One-sided values and slopes at the piece ends, computed once.
   const Real& begin_value(std::size_t i) const { return begin_value_[i]; }
@@ -342,7 +343,14 @@ class PiecewiseLinear : public Waveform<Real> {
   PiecewiseLinear(std::string name, std::vector<Piece> pieces)
       : Waveform<Real>(std::move(name)), pieces_(std::move(pieces)) {
     std::vector<Real> begins;
-    for (const auto& p : pieces_) begins.push_back(p.begin);
+    using std::abs;
+    using std::frexp;
+    for (const auto& p : pieces_) {
+      begins.push_back(p.begin);
+      int e = 0;
+      exact_.push_back({Real(p.begin / 2), Real(2 * p.begin),
+                        p.slope == 0 || abs(Real(frexp(p.slope, &e))) == Real(0.5)});
+    }
     this->set_pieces(std::move(begins));
   }
   Real value(std::size_t i, const Real& phi) const override {
@@ -361,16 +369,16 @@ class PiecewiseLinear : public Waveform<Real> {
   // subtraction exact (begin = 0, or begin/2 ≤ φ ≤ 2·begin), δ2 = 0 where slope is a power of two
   // and d is exact (the catalogue's ±4, ±2). Where anchor and slope·d/2 cancel this exceeds the
   // solver's eps·|W| by far (samples next to a steep piece).
-  Real antiderivative_error(std::size_t i, const Real& phi) const override {
+  Real antiderivative_error(std::size_t i, const Real& phi, const Real& value) const override {
     using std::abs;
-    using std::frexp;
     const Piece& p = pieces_[i];
-    const Real d = phi - p.begin;
-    const bool d_exact = p.begin == 0 || (p.begin > 0 && phi >= p.begin / 2 && phi <= 2 * p.begin);
-    int e = 0;
-    const bool product_exact = d_exact && (p.slope == 0 || abs(Real(frexp(p.slope, &e))) == Real(0.5));
+    const Exactness& x = exact_[i];
+    const bool d_exact = p.begin == 0 || (p.begin > 0 && phi >= x.half_begin && phi <= x.twice_begin);
+    const bool product_exact = d_exact && x.slope_power_of_two;
     const int rounded = (d_exact ? 0 : 1) + (product_exact ? 0 : 1);
-    return abs(p.slope) * d * d * rounded / 2 + abs(Real(d * (p.anchor + p.slope * d / 2))) * (d_exact ? 1 : 2);
+    if (rounded == 0) return abs(value);
+    const Real d = phi - p.begin;
+    return abs(p.slope) * d * d * rounded / 2 + abs(value) * (d_exact ? 1 : 2);
   }
   std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
     const Piece& p = pieces_[i];
@@ -380,6 +388,14 @@ class PiecewiseLinear : public Waveform<Real> {
 
  protected:
   std::vector<Piece> pieces_;
+
+ private:
+  // Where φ − begin is exact (Sterbenz) and whether slope·d is then exact (the catalogue's ±4, ±2).
+  struct Exactness {
+    Real half_begin, twice_begin;
+    bool slope_power_of_two;
+  };
+  std::vector<Exactness> exact_;
 };
 
 template <class Real>
