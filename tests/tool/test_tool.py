@@ -1055,7 +1055,8 @@ def physical_tests():
                        {"--wave": "triangle", "--u-mean": "-2e-6", "--shape": "cone", "--half-angle": "80", "--radius": None}):
             a = physical_args(**dict(common, **change))
             got = parse(ok_run(a))
-            exact = Fraction(float(got["mu_over_mu0"])) * Fraction(steel["mu0"])
+            mu0 = a[a.index("--mu0") + 1]  # as this command gives it
+            exact = Fraction(float(got["mu_over_mu0"])) * Fraction(mu0)
             with decimal.localcontext() as ctx:
                 ctx.prec = 200
                 q = Decimal(exact.numerator) / Decimal(exact.denominator)
@@ -1091,6 +1092,30 @@ def physical_tests():
         exact["stick_fraction"] = 2 * (1 + exact["gamma"]) / (4 + b)
         check_groups(a, got, exact, 40)
     case("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
+
+    # 2a. two stick phases a period: samples -1, 1, -1, 0 at j/4 (normalised: w = y + 1/4), two
+    # triangular teeth of n = gamma + w, peaks H1 = gamma + 5/4 (slopes +-8) and H2 = gamma + 1/4
+    # (slopes +-4), with loss of contact between them (gamma < 3/4). In a tooth of peak H and slope
+    # k > beta the spring sticks from touch-down until beta t = n on the falling flank,
+    # t_e = 2H/(k + beta): int s = 2 beta H^2/(k (k + beta)), int n = H^2/k, contact 2H/k.
+    def two_teeth_fn():
+        path = write("two-teeth.txt", "-1\n1\n-1\n0\n")
+        a = physical_args(alu_args, **{"--wave": "samples:" + path, "--digits": "40"})
+        got = parse(ok_run(a))
+        exact, mu0 = groups(**alu)
+        b, g = exact["beta"], exact["gamma"]
+        assert b < 4 and -Fraction(1, 4) < g < Fraction(3, 4)
+        teeth = [(g + Fraction(5, 4), 8), (g + Fraction(1, 4), 4)]
+        retained = sum(2 * b * h * h / (k * (k + b)) for h, k in teeth)
+        normal = sum(h * h / k for h, k in teeth)
+        exact["mu_over_mu0"] = retained / normal
+        exact["mu"] = mu0 * retained / normal
+        exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(alu["A"]) * normal
+        exact["beta_c"] = Fraction(8)
+        exact["contact_fraction"] = sum(2 * h / k for h, k in teeth)
+        exact["stick_fraction"] = sum(2 * h / (k + b) for h, k in teeth)  # both phases
+        check_groups(a, got, exact, 40)
+    case("physical, two stick phases a period (two triangular teeth, closed form), --digits 40", two_teeth_fn)
 
     # 2b. rubber (nu = 0.5, incompressible) on steel: Eq. 1 as for any nu
     def rubber_fn():

@@ -48,8 +48,9 @@ int working_digits10() {
 
 namespace detail {
 // x rounded once to nearest in Real (to `mpfr_digits10` decimal digits of precision when Real is
-// mpfr, by default the current precision's). cpp_bin_float is rounded to its bits in MPFR first: Boost 1.81's conversion from mpfr
-// missed the nearest cpp_bin_float_50 in 3,606 of 20,000 values within 1e-110 of a midpoint.
+// mpfr, by default the current precision's). cpp_bin_float is rounded to its bits in MPFR first:
+// Boost 1.81's conversion from mpfr missed the nearest cpp_bin_float_50 in 3,606 of 20,000 values
+// within 1e-110 of a midpoint.
 template <class Real>
 Real rounded(const mpfr& x, unsigned mpfr_digits10 = static_cast<unsigned>(working_digits10<mpfr>())) {
   if constexpr (std::is_same_v<Real, double>) {
