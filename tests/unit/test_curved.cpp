@@ -6,6 +6,7 @@
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -358,9 +359,10 @@ TEST(CurvedQuadrature, GaussSegmentReturnsOnlyValuesWithinItsEstimate) {
 }
 
 // The curved solver's own bound (the quadrature estimates plus the springs' rounding bounds at
-// the evaluated nodes) against 40 digits at the type's own inputs; returns the bound.
+// the evaluated nodes) against 40 digits at the type's own inputs; returns the bound, and its
+// margin (actual error / bound) through `margin`.
 template <class Real>
-Real expect_bound_holds(const char* wave, const char* profile, const char* b, const char* g) {
+Real expect_bound_holds(const char* wave, const char* profile, const char* b, const char* g, double* margin = nullptr) {
   const Real beta = parse_real<Real>(b, "beta"), gamma = parse_real<Real>(g, "gamma");
   const auto r = curved<Real>(wave, profile, beta, gamma);
   PrecisionScope scope(40);
@@ -368,6 +370,7 @@ Real expect_bound_holds(const char* wave, const char* profile, const char* b, co
   const mpfr actual = abs((mpfr(r.mu) - ref.mu) / ref.mu);
   EXPECT_LE(actual, mpfr(r.relative_error)) << wave << " " << profile << " " << b << " " << g << " in "
                                             << std::numeric_limits<Real>::digits << " bits";
+  if (margin && r.relative_error > 0) *margin = static_cast<double>(actual / mpfr(r.relative_error));
   return r.relative_error;
 }
 
@@ -389,14 +392,30 @@ TEST(CurvedPrecision, LongDoubleBoundHoldsAgainstFortyDigits) {
 // ungraded, sine on power:3 at β = 0.01, γ = −0.3 erred by 1.04 times its bound in double), and
 // the flat springs' rounding bounds are a large part of the curved bound (without them, 2 to 3
 // times exceeded here).
+//
+// The margin is measured, not only that the bound holds: at its tightest on this grid the actual
+// error is 0.068 of the bound in double and 0.079 in long double (2026-11-26), so the estimate is
+// at least 12 times pessimistic here, and a bound made 4 times smaller would still hold (no output
+// test can tell it apart; the certified enclosures of issue 28 can). What is checked is that it
+// stays informative: at its tightest within a factor 100 of the error, else the ladder escalates
+// for nothing.
 TEST(CurvedPrecision, BoundsHoldAtSmallBetaInDoubleAndLongDouble) {
+  double tightest_double = 0, tightest_long_double = 0;
   for (const char* wave : {"sine", "triangle", "sawtooth-left"})
     for (const char* profile : {"sphere", "cone", "power:3", "wearflat:10"})
       for (const char* b : {"0.01", "0.05"})
         for (const char* g : {"-0.9", "-0.3", "0.2", "4"}) {
-          expect_bound_holds<double>(wave, profile, b, g);
-          expect_bound_holds<long double>(wave, profile, b, g);
+          double m = 0;
+          expect_bound_holds<double>(wave, profile, b, g, &m);
+          tightest_double = std::max(tightest_double, m);
+          m = 0;
+          expect_bound_holds<long double>(wave, profile, b, g, &m);
+          tightest_long_double = std::max(tightest_long_double, m);
         }
+  std::printf("[ margin ] curved bound at small beta, largest actual error / bound: double %.3g, long double %.3g\n",
+              tightest_double, tightest_long_double);
+  EXPECT_GE(tightest_double, 0.01) << "the curved bound is over 100 times the error everywhere on the grid in double";
+  EXPECT_GE(tightest_long_double, 0.01) << "the same in long double";
 }
 
 // The flat punch's area_error (the springs' rounding bound the spring integral adds up) bounds
