@@ -14,6 +14,7 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric::testing {

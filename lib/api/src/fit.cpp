@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/core/numbers.hpp"
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/user_waveforms.hpp"

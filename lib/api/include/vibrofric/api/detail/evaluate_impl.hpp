@@ -16,6 +16,7 @@
 
 #include <boost/math/special_functions/next.hpp>
 
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/ladder.hpp"
 #include "vibrofric/core/curved.hpp"
