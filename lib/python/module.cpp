@@ -440,7 +440,8 @@ std::optional<int> optional_int(const py::object& x, const char* what) {
 unsigned to_threads(const py::object& x) {
   const auto t = optional_int(x, "threads");
   if (!t) return 0;
-  if (*t < 0 || *t > 4096) throw InputError("threads = " + std::to_string(*t) + ": expected 0 (all cores) to 4096");
+  if (*t < 0 || *t > static_cast<long long>(max_threads))
+    throw InputError("threads = " + std::to_string(*t) + ": expected 0 (all cores) to " + std::to_string(max_threads));
   return static_cast<unsigned>(*t);
 }
 

@@ -334,7 +334,7 @@ const std::vector<CommandSpec>& commands() {
          }},
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
         {"threads", "N", "worker threads, 0 for every core", "0",
-         [](Flags& f, const std::string& t) { f.threads = static_cast<unsigned>(integer(t, "--threads", 0, 1024)); }},
+         [](Flags& f, const std::string& t) { f.threads = static_cast<unsigned>(integer(t, "--threads", 0, max_threads)); }},
         {"format", "F", "csv | json", "csv", format_of_rows}},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
        std::string(kWaves) + kProfiles,

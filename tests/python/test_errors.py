@@ -27,6 +27,13 @@ def test_nan_and_infinite_beta_gamma():
     raises_value_error(vibrofric.mu, "sine", [1.0, math.nan, 2.0], 0.5, names=("beta",))
 
 
+def test_threads_beyond_the_tools_limit():
+    # the same limit as the tool's --threads (api/limits.hpp): 0 (every core) to 1024
+    raises_value_error(vibrofric.mu, "sine", [1.0, 2.0], 0.5, threads=1025, names=("threads", "1025", "1024"))
+    raises_value_error(vibrofric.mu, "sine", [1.0, 2.0], 0.5, threads=-1, names=("threads", "-1"))
+    assert len(vibrofric.mu("sine", [1.0, 2.0], 0.5, threads=1024)) == 2
+
+
 def test_beta_not_positive():
     raises_value_error(vibrofric.mu, "sine", 0.0, 0.5, names=("beta", "0"))
     raises_value_error(vibrofric.mu, "triangle", -1.5, 0.5, names=("beta", "-1.5"))

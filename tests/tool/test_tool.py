@@ -355,6 +355,9 @@ def bad_input_tests():
         ["threads"])
     bad("sweep threads=x", sw + ["--beta", "1:2:3", "--gamma", "0.5", "--threads", "x"], ["x"],
         ["threads"])
+    # one limit of worker threads for the tool and the module (api/limits.hpp)
+    bad("sweep threads=1025", sw + ["--beta", "1:2:3", "--gamma", "0.5", "--threads", "1025"], ["1025"],
+        ["1024"])
 
     # user waveform files
     missing = os.path.join(TMP, "no-such-file.txt")

@@ -28,8 +28,8 @@ WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::
   if (!t.empty() && t.size() != y.size())
     throw InputError(label + ": t has " + std::to_string(t.size()) + " values and y " + std::to_string(y.size()) +
                      ": expected one time stamp per value (one period with its end point)");
-  if (y.size() + (t.empty() ? 0 : 1) > detail::max_table_lines)
-    throw InputError("file " + quoted_label(label) + " has more than " + std::to_string(detail::max_table_lines) +
+  if (y.size() + (t.empty() ? 0 : 1) > max_table_lines)
+    throw InputError("file " + quoted_label(label) + " has more than " + std::to_string(max_table_lines) +
                      " lines: expected fewer");
   check_all(y, label + " y");
   check_all(t, label + " t");

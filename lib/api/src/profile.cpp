@@ -96,7 +96,7 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
     std::vector<std::string> tok;
     for (std::string t; ls >> t;) tok.push_back(t);
     if (!tok.empty()) rows.emplace_back(number, std::move(tok));
-    if (rows.size() > detail::max_profile_samples) break;  // the checks refuse the file there
+    if (rows.size() > max_profile_samples) break;  // the checks refuse the file there
   }
   return detail::profile_from_rows(rows, detail::file_source(path, text));
 }

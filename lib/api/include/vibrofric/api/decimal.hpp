@@ -1,6 +1,6 @@
-// Decimal output of every number type, the API's "decimal out" (model.md, "Domain and edge
-// behaviour": values as the user reads them): the correctly rounded significant digits that the
-// tool, the module and the reports print. The core computes in binary and prints nothing.
+// Decimal output of every number type, the API's "decimal out": μ̄/μ0 (Eq. 15), Ψ (Eq. 17) and
+// every other value as the correctly rounded significant digits that the tool, the module and
+// the reports print (README, "Precision"). The core computes in binary and prints nothing.
 #pragma once
 #include <charconv>
 #include <cstdio>

@@ -1,4 +1,5 @@
-// The mpfr rung of the precision ladder (README, "Precision"): a computation is
+// The mpfr rung of the precision ladder (README, "Precision"; model.md, "The paper's claims that
+// the suite verifies": decided to working precision): a computation is
 // repeated at a rising working precision until its own error bound meets the target. Every caller
 // shares this loop: evaluate's mpfr rung, the claim checks and their curved contacts.
 #pragma once

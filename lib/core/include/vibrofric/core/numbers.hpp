@@ -1,4 +1,6 @@
-// Number types of vibrofric and their precision handling.
+// Number types of vibrofric and their precision handling: the working precision in which every
+// equation of the paper (Eqs. 3–24) is solved and "holds exactly (to working precision)" is decided
+// (model.md, "The paper's claims that the suite verifies").
 // mpfr is runtime precision: set it per thread with PrecisionScope before constructing values
 // (Boost 1.81 keeps the default precision thread-local).
 #pragma once

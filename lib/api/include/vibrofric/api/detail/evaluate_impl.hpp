@@ -1,4 +1,6 @@
-// Implementation of evaluate_stream_typed<Real> (evaluate.hpp); included by one .cpp per number type.
+// Implementation of evaluate_stream_typed<Real> (evaluate.hpp): μ̄/μ0 (Eq. 15) and Ψ (Eq. 17) of
+// decimal points, correctly rounded or refused (model.md, "Domain and edge behaviour"); included
+// by one .cpp per number type.
 #pragma once
 #include <algorithm>
 #include <atomic>

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 
 namespace vibrofric::detail {
@@ -27,12 +28,6 @@ RowSource file_source(const std::string& path, const std::string& wave);
 RowSource array_source(const std::string& label, int header_lines);
 
 using Rows = std::vector<std::pair<int, std::vector<std::string>>>;  // line number, fields
-
-// A wave file holds at most this many lines, a profile at most this many samples: the readers
-// stop there (an endless input is an error, not a memory exhaustion), and arrays are held to the
-// same numbers.
-constexpr std::size_t max_table_lines = 10'000'000;
-constexpr std::size_t max_profile_samples = 100'000;
 
 struct Table {
   std::vector<std::string> header;
