@@ -325,19 +325,22 @@ Real evaluate_fixed(WaveCache<Real>& waves, WaveCache<long double>& wider, WaveC
   count(&LadderCounts::mpfr);
   constexpr int type_digits = std::numeric_limits<Real>::max_digits10;
   if constexpr (std::is_floating_point_v<Real>) {
-    // mpfr's value and bound straight into Ziv's test, no decimal in between. The lower rungs
-    // left a value close to a midpoint of the type, typically within 1/20 ulp: 8 digits beyond
-    // the type's nearly always decide it, and cost less than the 48 digits of a decimal route.
-    int work = type_digits + 8;
-    for (; work <= 8 * type_digits + 3; work *= 2) {
-      PrecisionScope scope(static_cast<unsigned>(work));
-      const auto v = rung(fallback);
-      if (v && rounds_alike<Real>(v->value, mpfr(v->relative_error * abs(v->value))))
-        return static_cast<Real>(v->value);
-    }
+    // mpfr's value and bound straight into Ziv's test, no decimal in between, on the one ladder.
+    // The lower rungs left a value close to a midpoint of the type, typically within 1/20 ulp: 8
+    // digits beyond the type's nearly always decide it, and cost less than the 48 digits of a
+    // decimal route. Ziv's test tells no shortfall, so the precision doubles, up to
+    // 8·max_digits10 + 3 digits (three doublings).
+    const int first = type_digits + 8;
+    RaisePolicy policy;
+    policy.max_work = 8 * type_digits + 3;
+    policy.double_on_precision_error = false;  // rung() has taken the PrecisionErrors it may
+    const auto v = raise_precision(
+        first, policy, [&] { return rung(fallback); },
+        [&](const auto& r) { return Shortfall{r && rounds_alike<Real>(r->value, mpfr(r->relative_error * abs(r->value))), {}}; });
+    if (v) return static_cast<Real>((*v)->value);
     // Within 10^-(8·max_digits10) of a midpoint of the type, or on it: the value evaluate_point
-    // gives within half a unit of its `work`-th digit, rounded once to the type.
-    return rounded<Real>(evaluate_point<mpfr>(fallback, spec, q, p, work, options.solver));
+    // gives within half a unit of its digit at the next doubling (8·first), rounded once to the type.
+    return rounded<Real>(evaluate_point<mpfr>(fallback, spec, q, p, 8 * first, options.solver));
   } else {
     return rounded<Real>(evaluate_point<mpfr>(fallback, spec, q, p, 2 * type_digits + 3, options.solver));
   }
