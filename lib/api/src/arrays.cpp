@@ -1,7 +1,6 @@
 #include "vibrofric/api/arrays.hpp"
 
 #include <charconv>
-#include <sstream>
 
 #include "vibrofric/api/detail/tables.hpp"
 
@@ -64,16 +63,11 @@ WaveSpec fourier_wave(const std::vector<std::string>& a, const std::vector<std::
 }
 
 WaveSpec fitted_wave(const FourierFit& fit, const std::string& label) {
-  const std::string text = fourier_file_text(fit, label);
-  int header_lines = 0;  // the comment lines and the 'k a_k b_k' header: label[k] is harmonic k
-  for (std::size_t at = 0; at < text.size() && (text[at] == '#' || text[at] == 'k'); ++header_lines) {
-    at = text.find('\n', at);
-    if (at == std::string::npos) break;
-    ++at;
-  }
-  std::istringstream in(text);
-  WaveSpec spec = detail::fourier_from_table(detail::read_table(in, detail::array_source(label, header_lines)),
-                                             detail::array_source(label, header_lines));
+  // The rows 'k a_k b_k' of the fit's fourier file, from its coefficients as stated (17 digits),
+  // not from the file's text: row k + 1 is label[k].
+  detail::Table table;
+  for (const auto& h : fit.harmonics) table.rows.push_back({static_cast<int>(h.k) + 1, {std::to_string(h.k), h.a, h.b}});
+  WaveSpec spec = detail::fourier_from_table(table, detail::array_source(label, 1));
   spec.name = label;
   return spec;
 }

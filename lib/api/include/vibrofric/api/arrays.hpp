@@ -34,9 +34,9 @@ WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::
 WaveSpec fourier_wave(const std::vector<std::string>& a, const std::vector<std::string>& b, const std::string& a0 = "",
                       const std::string& label = "fourier");
 
-// The wave of a fit (fit.hpp): parse_wave's WaveSpec for the fourier:FILE that fourier_file_text
-// writes for it (the same coefficients, normalised by the same reader), named `label`; what a
-// front end that keeps the fit in memory evaluates, equal to the tool's fit output read back.
+// The wave of a fit (fit.hpp): the WaveSpec of its coefficients as stated, through the fourier
+// reader's checks and normalisation (no file text in between), named `label`; what a front end
+// that keeps the fit in memory evaluates, equal to the tool's fit output read back.
 WaveSpec fitted_wave(const FourierFit& fit, const std::string& label = "fit");
 
 // A measured axisymmetric profile from samples r_j, f_j: parse_profile's ProfileSpec for a
