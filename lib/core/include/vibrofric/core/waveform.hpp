@@ -126,7 +126,7 @@ class Waveform {
   // proportional to the result (a sum of harmonics; an antiderivative that cancels within its
   // piece). Near the contact edge the normal area is small and these errors dominate its
   // relative error (tests/robustness/test_stress.cpp found both). `value` is antiderivative(i, φ)
-  // as the caller computed it (the bound scales with it; recomputing it cost a third of a solve).
+  // as the caller computed it (the bound scales with it; recomputing it cost a quarter of a solve).
   virtual Real value_error() const { return Real(0); }
   virtual Real antiderivative_error(std::size_t, const Real&, const Real& /*value*/) const { return Real(0); }
 
