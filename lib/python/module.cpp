@@ -169,10 +169,12 @@ Real read_decimal(const std::string& s) {
   return x;
 }
 
-// How values come back: float64 and numpy.longdouble for the hardware types (from_chars: the
-// nearest value of the library's round-trip text), otherwise mpmath.mpf (created at the printed
-// digits + 3) when mpmath is importable, else the library's decimal strings; strings=True gives the
-// strings for every type.
+// How values come back: float64 and numpy.longdouble for the hardware types, otherwise mpmath.mpf
+// (created at the printed digits + 3) when mpmath is importable, else the library's decimal
+// strings; strings=True gives the strings for every type. mu and psi store the value the stream
+// delivers (StreamValue::number); the API's other outputs (physical, normalisation, trace) are
+// decimal by definition, their digits computed at a higher precision, and a float is the nearest
+// one to the printed decimal (from_chars), as Python's float() of the tool's output.
 enum class Form { float64, float80, mpf, text };
 
 Form result_form(const Precision& p, bool strings) {
@@ -336,14 +338,15 @@ class Output {
       }
     }
   }
-  // Without the GIL.
-  void put(std::size_t i, const std::string& value) {
+  // Without the GIL. float64 and long double store the number the stream delivers (the value its
+  // text prints, held exactly); the other forms are made from the text.
+  void put(std::size_t i, const StreamValue& value) {
     if (doubles_) {
-      doubles_[i] = read_decimal<double>(value);
+      doubles_[i] = static_cast<double>(value.number.value());
     } else if (long_doubles_) {
-      long_doubles_[i] = read_decimal<long double>(value);
+      long_doubles_[i] = value.number.value();
     } else {
-      pending_.emplace_back(i, value);
+      pending_.emplace_back(i, value.text);
       if (pending_.size() == batch) flush();
     }
   }
@@ -416,7 +419,7 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
           if (with_gamma) p.gamma = gammas.text(at[1]);
           return p;
         },
-        precision, options, [&](std::size_t i, const std::string& value) { out.put(i, value); });
+        precision, options, [&](std::size_t i, const StreamValue& value) { out.put(i, value); });
     out.flush();
   }
   const py::array& flat = out.array();

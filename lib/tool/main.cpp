@@ -671,13 +671,13 @@ int run_sweep(const Flags& f) {
     std::cout << "[";
   else
     write_csv_row(names);
-  evaluate_stream(wave, q, count, point, prec, opt, [&](std::size_t i, const std::string& value) {
+  evaluate_stream(wave, q, count, point, prec, opt, [&](std::size_t i, const StreamValue& value) {
     const Point pt = point(i);
     std::vector<std::string> r{wave.name};
     if (curved) r.push_back(opt.profile.name);
     r.push_back(pt.beta);
     if (q == Quantity::mu) r.push_back(pt.gamma);
-    r.push_back(value);
+    r.push_back(value.text);
     if (format == Format::json)
       std::cout << (i ? ",\n " : "\n ") << json_record(names, r).dump();
     else

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cstdio>
 #include <memory>
 #include <random>
@@ -53,6 +54,27 @@ struct Row {
   std::string value;
 };
 
+// A delivered value's number is the value its text prints: for double and long double, the text
+// (max_digits10 digits, which read back exactly) read by from_chars is the number to the bit; the
+// other types deliver no number.
+void expect_number_is_text(const StreamValue& v, const Precision& p) {
+  if (p.type == NumberType::float64 || p.type == NumberType::float80) {
+    ASSERT_TRUE(v.number.has_value()) << v.text;
+    if (p.type == NumberType::float64) {
+      double x = 0;
+      ASSERT_EQ(std::from_chars(v.text.data(), v.text.data() + v.text.size(), x).ec, std::errc()) << v.text;
+      EXPECT_EQ(static_cast<long double>(x), *v.number) << v.text;
+      EXPECT_EQ(static_cast<long double>(static_cast<double>(*v.number)), *v.number) << "not a double: " << v.text;
+    } else {
+      long double x = 0;
+      ASSERT_EQ(std::from_chars(v.text.data(), v.text.data() + v.text.size(), x).ec, std::errc()) << v.text;
+      EXPECT_EQ(x, *v.number) << v.text;
+    }
+  } else {
+    EXPECT_FALSE(v.number.has_value()) << v.text;
+  }
+}
+
 // evaluate_stream's rows, checking order and the calling thread as they come.
 std::vector<std::string> stream(const WaveSpec& wave, Quantity q, const std::vector<Point>& points, const Precision& p,
                                 const BatchOptions& o, std::vector<Row>* rows = nullptr) {
@@ -60,11 +82,12 @@ std::vector<std::string> stream(const WaveSpec& wave, Quantity q, const std::vec
   const auto caller = std::this_thread::get_id();
   evaluate_stream(
       wave, q, points.size(), [&](std::size_t i) { return points.at(i); }, p, o,
-      [&](std::size_t i, const std::string& v) {
+      [&](std::size_t i, const StreamValue& v) {
         EXPECT_EQ(i, out.size()) << "rows out of order";
         EXPECT_EQ(std::this_thread::get_id(), caller) << "sink called from a worker";
-        out.push_back(v);
-        if (rows) rows->push_back({i, v});
+        expect_number_is_text(v, p);
+        out.push_back(v.text);
+        if (rows) rows->push_back({i, v.text});
       });
   return out;
 }
@@ -300,9 +323,9 @@ TEST(evaluate_stream, ManyPointsInOrderWithinTheWindow) {
           return points[i];
         },
         p, o,
-        [&](std::size_t i, const std::string& v) {
+        [&](std::size_t i, const StreamValue& v) {
           ASSERT_EQ(i, got.size());
-          got.push_back(v);
+          got.push_back(v.text);
           delivered.store(i + 1);
         });
     EXPECT_EQ(got, want) << "threads " << threads;
@@ -321,13 +344,13 @@ TEST(evaluate_stream, ZeroPoints) {
     bool called = false;
     evaluate_stream(
         parse_wave("sine"), Quantity::mu, 0, [&](std::size_t) { called = true; return Point{"1", "0"}; },
-        {NumberType::float64, 17}, o, [&](std::size_t, const std::string&) { called = true; });
+        {NumberType::float64, 17}, o, [&](std::size_t, const StreamValue&) { called = true; });
     EXPECT_FALSE(called);
   }
   // The precision is checked whatever the count, as evaluate() does.
   EXPECT_THROW(evaluate_stream(
                    parse_wave("sine"), Quantity::mu, 0, [](std::size_t) { return Point{"1", "0"}; },
-                   {NumberType::mpfr, max_digits + 1}, {}, [](std::size_t, const std::string&) {}),
+                   {NumberType::mpfr, max_digits + 1}, {}, [](std::size_t, const StreamValue&) {}),
                InputError);
 }
 
@@ -457,14 +480,14 @@ TEST(evaluate_stream, CallbackExceptions) {
                        if (i == 1234) throw std::runtime_error("generator");
                        return points[i];
                      },
-                     p, o, [&](std::size_t, const std::string&) { ++rows; }),
+                     p, o, [&](std::size_t, const StreamValue&) { ++rows; }),
                  std::runtime_error);
     EXPECT_EQ(rows, 1234u);
 
     rows = 0;
     EXPECT_THROW(evaluate_stream(
                      sine, Quantity::mu, points.size(), [&](std::size_t i) { return points[i]; }, p, o,
-                     [&](std::size_t i, const std::string&) {
+                     [&](std::size_t i, const StreamValue&) {
                        if (i == 100) throw std::logic_error("sink");
                        ++rows;
                      }),
@@ -478,7 +501,7 @@ TEST(evaluate_stream, CallbackExceptions) {
     rows = 0;
     EXPECT_THROW(evaluate_stream(
                      sine, Quantity::mu, points.size(), [&](std::size_t i) { return points[i]; }, p, cancel,
-                     [&](std::size_t, const std::string&) { ++rows; }),
+                     [&](std::size_t, const StreamValue&) { ++rows; }),
                  std::runtime_error);
     EXPECT_LE(rows, 2000u + threads);  // the 2000th point done: index 1999 or, with workers, a little later
   }

@@ -61,7 +61,7 @@ Evaluated evaluate_one(const WaveSpec& wave, Quantity q, const Point& point, con
 
 void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
                      const std::function<Point(std::size_t)>& point, const Precision& precision,
-                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink) {
+                     const BatchOptions& options, const std::function<void(std::size_t, const StreamValue&)>& sink) {
   const int digits = checked_output_digits(precision);
   switch (precision.type) {
     case NumberType::float64: return detail::evaluate_stream_typed<double>(wave, q, count, point, digits, options, sink);
@@ -77,7 +77,7 @@ std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::v
   std::vector<std::string> out(points.size());
   evaluate_stream(
       wave, q, points.size(), [&](std::size_t i) { return points[i]; }, precision, options,
-      [&](std::size_t i, const std::string& value) { out[i] = value; });
+      [&](std::size_t i, const StreamValue& value) { out[i] = value.text; });
   return out;
 }
 

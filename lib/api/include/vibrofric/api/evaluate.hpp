@@ -78,6 +78,14 @@ struct BatchOptions {
 std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::vector<Point>& points,
                                   const Precision& precision, const BatchOptions& options = {});
 
+// One point's result as evaluate_stream delivers it: the printed digits (evaluate()'s string) and,
+// for double and long double, the value itself, held exactly, so that a front end storing numbers
+// does not parse the text back. The other types' result is their decimal text (D correct digits).
+struct StreamValue {
+  std::string text;
+  std::optional<long double> number;  // double and long double only
+};
+
 // The values of points 0 … count − 1, each passed to the sink as soon as it and every point before
 // it are done, with memory bounded independently of count (evaluate() is this with a vector).
 //  - point(i) makes point i on demand. With options.threads other than 1 it is called from the
@@ -86,7 +94,7 @@ std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::v
 //  - Memory: a window of options threads × stream_chunk points is in flight (points claimed
 //    ahead of the oldest undelivered one wait for it), plus each worker's waveform caches, which
 //    live for the whole stream.
-//  - Values are identical, string for string, to evaluate()'s for the same point and options.
+//  - Texts are identical, string for string, to evaluate()'s for the same point and options.
 //  - Errors: the error of the first failing point by index (as evaluate(); an exception thrown by
 //    point(i) or by options.progress after point i counts as point i's) is thrown after the rows
 //    before it were delivered, and no row after it is. An exception thrown by the sink stops the
@@ -95,7 +103,7 @@ std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::v
 //    points done that grows by one per call; calls from different workers may arrive out of order.
 void evaluate_stream(const WaveSpec& wave, Quantity q, std::size_t count,
                      const std::function<Point(std::size_t)>& point, const Precision& precision,
-                     const BatchOptions& options, const std::function<void(std::size_t, const std::string&)>& sink);
+                     const BatchOptions& options, const std::function<void(std::size_t, const StreamValue&)>& sink);
 
 // One point's printed value and the value itself, for a caller that computes on with it (physical's
 // μ = μ0 · μ̄/μ0) instead of parsing the text: the fixed types' value held exactly, mpfr's at the
@@ -115,7 +123,7 @@ namespace detail {
 template <class Real>
 void evaluate_stream_typed(const WaveSpec& wave, Quantity q, std::size_t count,
                            const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
-                           const std::function<void(std::size_t, const std::string&)>& sink);
+                           const std::function<void(std::size_t, const StreamValue&)>& sink);
 template <class Real>
 Evaluated evaluate_one_typed(const WaveSpec& wave, Quantity q, const Point& point, int digits, const BatchOptions& options);
 }  // namespace detail

@@ -14,6 +14,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <boost/math/special_functions/next.hpp>
@@ -425,7 +426,12 @@ class PointEvaluator {
     else
       return evaluate_fixed(waves_, wider_, fallback_, spec_, q_, p, options_);
   }
-  std::string operator()(const Point& p) { return format_significant(value(p), digits_); }
+  StreamValue operator()(const Point& p) {
+    const Real v = value(p);
+    StreamValue out{format_significant(v, digits_), std::nullopt};
+    if constexpr (std::is_same_v<Real, double> || std::is_same_v<Real, long double>) out.number = v;
+    return out;
+  }
 
  private:
   const WaveSpec& spec_;
@@ -467,13 +473,13 @@ Evaluated evaluate_one_typed(const WaveSpec& spec, Quantity q, const Point& poin
 template <class Real>
 void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
                            const std::function<Point(std::size_t)>& point, int digits, const BatchOptions& options,
-                           const std::function<void(std::size_t, const std::string&)>& sink) {
+                           const std::function<void(std::size_t, const StreamValue&)>& sink) {
   if (count == 0) return;
   unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, count));
   std::atomic<std::size_t> done{0};
   // Point i's value, or its error (its own, its generator's or its progress report's).
-  auto compute = [&](PointEvaluator<Real>& evaluator, std::size_t i, std::string& value, std::exception_ptr& error) {
+  auto compute = [&](PointEvaluator<Real>& evaluator, std::size_t i, StreamValue& value, std::exception_ptr& error) {
     error = nullptr;
     try {
       value = evaluator(point(i));
@@ -490,7 +496,7 @@ void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
 
   if (threads <= 1) {
     PointEvaluator<Real> evaluator(spec, q, digits, options);
-    std::string value;
+    StreamValue value;
     for (std::size_t i = 0; i < count; ++i) {
       std::exception_ptr error;
       compute(evaluator, i, value, error);
@@ -502,7 +508,7 @@ void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
 
   struct Slot {
     std::atomic<std::size_t> filled{0};  // index + 1 of the point written here, 0 before any
-    std::string value;
+    StreamValue value;
     std::exception_ptr error;
   };
   const std::size_t size = std::min<std::size_t>(count, std::size_t{threads} * stream_chunk);
@@ -581,6 +587,6 @@ void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
 #define VIBROFRIC_INSTANTIATE_EVALUATE(Real)                                                     \
   template void vibrofric::detail::evaluate_stream_typed<Real>(                                 \
       const WaveSpec&, Quantity, std::size_t, const std::function<Point(std::size_t)>&, int,    \
-      const BatchOptions&, const std::function<void(std::size_t, const std::string&)>&);        \
+      const BatchOptions&, const std::function<void(std::size_t, const StreamValue&)>&);        \
   template vibrofric::Evaluated vibrofric::detail::evaluate_one_typed<Real>(                     \
       const WaveSpec&, Quantity, const Point&, int, const BatchOptions&);
