@@ -755,6 +755,27 @@ def format_tests():
     case("samples files: every layout of one period gives the same mu (separators, CRLF, BOM, header, time column)",
          sample_layouts)
 
+    def profile_layouts():
+        # A measured profile is read in the grammar of a wave file: every layout of the same three
+        # samples gives the value of the plain one, digit for digit (the same decimals).
+        rows = [("0", "0"), ("1", "0.5"), ("2", "2")]
+        layouts = {
+            "plain": "".join("%s %s\n" % r for r in rows),
+            "crlf-bom-header-commas": "\ufeffr [mm], f [mm]\r\n" + "".join("%s, %s\r\n" % r for r in rows),
+            "tabs-comment": "# from a profilometer\n" + "".join("%s\t%s  # sample\n" % r for r in rows),
+            "semicolons-quoted": "".join('"%s";"%s"\n' % r for r in rows),
+        }
+        got = {}
+        for name, text in layouts.items():
+            path = write("profile-layout-" + name + ".txt", text)
+            got[name] = ok_run(["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--profile", "profile:" + path,
+                                "--digits", "20"]).strip()
+        for name, v in got.items():
+            if v != got["plain"]:
+                raise Fail("profile layout %s gives %s, the plain file gives %s" % (name, v, got["plain"]))
+    case("profile files: the wave files' grammar (BOM, CRLF, header, commas, tabs, comments, quotes) gives one value",
+         profile_layouts)
+
     def trace():
         out = ok_run(["trace", "--wave", "triangle", "--beta", "1", "--gamma", "3", "--points", "8", "--digits", "20"])
         rows = [[decimal.Decimal(x) for x in line.split(",")] for line in out.strip().splitlines()[1:]]

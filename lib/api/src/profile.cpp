@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <sys/stat.h>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -83,21 +82,11 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
   struct stat st {};
   if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
     throw InputError("profile file " + as_typed(path) + " is a directory: expected a file of 'r f' lines");
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read profile file " + as_typed(path));
-  // Lines 'r f': '#' starts a comment, ',', ';', tabs and spaces separate, blank lines are skipped.
-  detail::Rows rows;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
-    for (char& c : line)
-      if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
-    std::istringstream ls(line);
-    std::vector<std::string> tok;
-    for (std::string t; ls >> t;) tok.push_back(t);
-    if (!tok.empty()) rows.emplace_back(number, std::move(tok));
-    if (rows.size() > max_profile_samples) break;  // the checks refuse the file there
-  }
+  // Lines 'r f' in the grammar of a wave file (read_table): comments, separators, quoting, a
+  // header line of names (ignored here), a byte-order mark and CR line ends alike.
+  const detail::Rows rows = detail::read_table(in, detail::file_source(path, text)).rows;
   return detail::profile_from_rows(rows, detail::file_source(path, text));
 }
 
