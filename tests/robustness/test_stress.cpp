@@ -154,7 +154,7 @@ Wave random_wave(std::mt19937& rng) {
         w.spec.samples.push_back(std::to_string(y));
         raw.push_back(y);
       }
-      const env::Normalised n = env::normalise_samples(raw);
+      const env::NormalisedSamples n = env::normalise_samples(raw);
       w.exact = env::samples(n.y);
       std::tie(w.lo, w.hi) = env::range(w.exact);
       const std::size_t m = n.y.size();

@@ -186,7 +186,7 @@ TEST(EnvelopeVsSolver, RandomSampledWaveforms) {
   for (int trial = 0; trial < 3000; ++trial) {
     const bool rises = trial % 3 == 0;
     const std::vector<Rational> raw = random_samples(rng, rises);
-    const env::Normalised norm = env::normalise_samples(raw);
+    const env::NormalisedSamples norm = env::normalise_samples(raw);
     const env::Vertices w = env::samples(norm.y);
     const auto [lo, hi] = env::range(w);
 
@@ -296,7 +296,7 @@ TEST(EnvelopeVsSolver, BetaEqualToAPieceSlope) {
   Tally tally;
   for (int trial = 0; trial < 150; ++trial) {
     const std::vector<Rational> raw = random_samples(rng, trial % 2 == 0);
-    const env::Normalised norm = env::normalise_samples(raw);
+    const env::NormalisedSamples norm = env::normalise_samples(raw);
     const env::Vertices w = env::samples(norm.y);
     const auto [lo, hi] = env::range(w);
     const std::size_t n = norm.y.size();
@@ -347,7 +347,7 @@ TEST(EnvelopeVsSolver, RegressionRampAlongAPieceOfSlopeBeta) {
   const std::vector<Case> cases{{{4, 3, 0, -1, 12, 10, 8, 11, 9, 9, 9}, q(66, 13), q(313, 143), q(283, 313)},
                                 {{5, 6, 2, 2, 1, 1, 0, 11, 10, 7, 10}, q(2), q(21, 11), q(25, 33)}};
   for (const Case& c : cases) {
-    const env::Normalised norm = env::normalise_samples(c.raw);
+    const env::NormalisedSamples norm = env::normalise_samples(c.raw);
     ASSERT_EQ(env::mu(env::samples(norm.y), c.beta, c.gamma).mu, c.mu);
     for (unsigned digits : {30u, 60u, 100u}) {
       vibrofric::PrecisionScope precision(digits);

@@ -464,7 +464,7 @@ TEST(SecondAlgorithm, RandomSampledSignals) {
       raw_m.push_back(y);
       raw_d.push_back(y);
     }
-    const env::Normalised norm = env::normalise_samples(raw_q);
+    const env::NormalisedSamples norm = env::normalise_samples(raw_q);
     const env::Vertices exact_w = env::samples(norm.y);
     const auto [lo, hi] = env::range(exact_w);
     const auto wave_m = make_samples<mpfr>("random", raw_m);

@@ -329,14 +329,7 @@ ClaimCheck uniqueness(int digits) {
   const std::vector<Rational> betas{Rational(1, 10), 1, 3, 7, 20}, gammas{Rational(9, 10), Rational(1, 2), 0, Rational(-1, 2), Rational(-9, 10)};
   std::string found;
   for (const Case& k : cases) {
-    // Normalise exactly (zero mean, min −1, max +1) as model.md prescribes for user waves.
-    const auto [lo, hi] = envelope::range(k.w);
-    const Rational off = envelope::mean(k.w), scale = (hi - lo) / 2;
-    Vertices w = k.w;
-    for (auto& v : w) {
-      v.left = (v.left - off) / scale;
-      v.right = (v.right - off) / scale;
-    }
+    const Vertices w = envelope::normalise(k.w).w;  // as model.md prescribes for user waves
     const Rational g1 = -envelope::range(w).first;  // the reference: n touches zero, no clipping yet
     bool invariant = true;
     Rational vmax = 0;

@@ -143,6 +143,23 @@ inline Rational mean(const Vertices& w) {
   return s;
 }
 
+// (w − offset)/scale with offset = ∫₀¹ w and scale = (max − min)/2: model.md's normalisation of a
+// user wave (zero mean, unit amplitude), exactly.
+struct Normalised {
+  Vertices w;
+  Rational offset, scale;
+};
+inline Normalised normalise(const Vertices& w) {
+  const auto [lo, hi] = range(w);
+  if (!(hi > lo)) throw std::invalid_argument("envelope: constant wave");
+  Normalised r{w, mean(w), (hi - lo) / 2};
+  for (Vertex& v : r.w) {
+    v.left = (v.left - r.offset) / r.scale;
+    v.right = (v.right - r.offset) / r.scale;
+  }
+  return r;
+}
+
 // n = max(γ + w, 0), exactly: values shifted and clipped, and a vertex added where a piece
 // crosses zero (a rational phase, as the ends are rational). Clipping is then linear per piece.
 inline Vertices normal_force(const Vertices& w, const Rational& gamma) {
@@ -191,23 +208,17 @@ inline Vertices samples(const std::vector<Rational>& y) {
   return v;
 }
 
-// (w − offset)/scale with offset = mean and scale = (max − min)/2 of the raw samples: the
-// normalisation model.md prescribes for sampled signals (the PL mean equals the sample mean).
-struct Normalised {
+// The samples' values normalised as their wave (the PL mean equals the sample mean), with the
+// offset and scale used.
+struct NormalisedSamples {
   std::vector<Rational> y;
   Rational offset, scale;
 };
-inline Normalised normalise_samples(const std::vector<Rational>& raw) {
+inline NormalisedSamples normalise_samples(const std::vector<Rational>& raw) {
   if (raw.size() < 2) throw std::invalid_argument("envelope: fewer than 2 samples");
-  Rational sum = 0, lo = raw[0], hi = raw[0];
-  for (const Rational& v : raw) {
-    sum += v;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  if (!(hi > lo)) throw std::invalid_argument("envelope: constant samples");
-  Normalised r{{}, sum / raw.size(), (hi - lo) / 2};
-  for (const Rational& v : raw) r.y.push_back((v - r.offset) / r.scale);
+  const Normalised n = normalise(samples(raw));
+  NormalisedSamples r{{}, n.offset, n.scale};
+  for (const Vertex& v : n.w) r.y.push_back(v.left);
   return r;
 }
 
