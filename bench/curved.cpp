@@ -105,7 +105,7 @@ void BM_curved_double(benchmark::State& state, const std::string& profile) {
 }
 
 void BM_curved_mpfr(benchmark::State& state, const std::string& profile, int digits) {
-  PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
+  PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
   const auto w = make_waveform<mpfr>(parse_wave("sine"));
   const auto p = make_profile<mpfr>(parse_profile(profile));
   const mpfr target = pow(mpfr(10), -digits) / 8;

@@ -206,7 +206,7 @@ std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const T
   if (digits < min_digits || digits > max_digits)
     throw InputError(request.digits_name + " = " + std::to_string(digits) + ": expected an integer from " +
                      std::to_string(min_digits) + " to " + std::to_string(max_digits));
-  PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
+  PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
   const auto w = make_waveform<mpfr>(wave);
   const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
   const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);

@@ -124,7 +124,7 @@ ClaimCheck check_claim(const std::string& key, int digits) {
   std::string keys;
   for (const auto& e : claims_catalogue()) {
     if (e.key == key) {
-      PrecisionScope scope(static_cast<unsigned>(digits + detail::guard_digits(digits)));
+      PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
       return e.check(digits);
     }
     keys += (keys.empty() ? "" : ", ") + e.key;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "vibrofric/api/ladder.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/solver.hpp"

@@ -196,7 +196,7 @@ ClaimCheck scope_wearflat(int digits) {
   closed_forms(c, digits);
 
   // The deviation study at kStudyDigits.
-  PrecisionScope study(static_cast<unsigned>(kStudyDigits + detail::guard_digits(kStudyDigits)));
+  PrecisionScope study(static_cast<unsigned>(kStudyDigits + guard_digits(kStudyDigits)));
   double order_lo = 1e9, order_hi = -1e9, coeff_worst = 0, worst_at_1e4 = 0, worst_at_100 = 0;
   for (const WaveGrid& wg : waves) {
     Solver flat(wg.wave, kStudyDigits);
@@ -295,7 +295,7 @@ ClaimCheck scope_numerics(int digits) {
     const auto p = make_profile<double>(parse_profile("sphere"));
     solve_curved(*w, *p, std::strtod(b, nullptr), std::strtod(g, nullptr));
     for (int d : {30, digits}) {
-      PrecisionScope scope(static_cast<unsigned>(d + detail::guard_digits(d)));
+      PrecisionScope scope(static_cast<unsigned>(d + guard_digits(d)));
       curved("sine", named("sphere"), num(b), num(g), d);
     }
   }
@@ -313,7 +313,7 @@ ClaimCheck scope_numerics(int digits) {
     }
     const Real beta = num(b), gamma = num(g);
     auto timed = [&](int d, double& total) {
-      PrecisionScope scope(static_cast<unsigned>(d + detail::guard_digits(d)));
+      PrecisionScope scope(static_cast<unsigned>(d + guard_digits(d)));
       const double t0 = thread_cpu_seconds();
       auto r = curved("sine", named("sphere"), beta, gamma, d);
       const double dt = thread_cpu_seconds() - t0;
@@ -325,7 +325,7 @@ ClaimCheck scope_numerics(int digits) {
     (void)dt30;
     springs += rd.springs;
     worst_time = std::max(worst_time, dtd);
-    PrecisionScope ref_scope(static_cast<unsigned>(digits + 30 + detail::guard_digits(digits + 30)));
+    PrecisionScope ref_scope(static_cast<unsigned>(digits + 30 + guard_digits(digits + 30)));
     const auto ref = curved("sine", named("sphere"), beta, gamma, digits + 30);
     c.compare(rd.mu, ref.mu, "sphere, " + at("sine", beta, &gamma) + " (" + std::to_string(digits) + " digits)");
     const double d30 = Check::deviation(r30.mu, ref.mu), dd = Check::deviation(Real(mu_double), ref.mu);
@@ -533,7 +533,7 @@ ClaimCheck curved_power_flat(int digits) {
                 std::to_string(kStudyDigits) + " significant digits; the order of D in 1/N from N = 64 to 256 and N D(N)";
   c.out().criterion = "limit claim: holds approximately if D decreases to 0 along N with measured order > 0.9 (1 derived); "
                       "fails otherwise. Deviation: the largest D at N = 256";
-  PrecisionScope study(static_cast<unsigned>(kStudyDigits + detail::guard_digits(kStudyDigits)));
+  PrecisionScope study(static_cast<unsigned>(kStudyDigits + guard_digits(kStudyDigits)));
   double order_lo = 1e9, order_hi = -1e9, worst_last = 0;
   bool decreasing = true;
   for (const char* wave : {"sine", "square"}) {

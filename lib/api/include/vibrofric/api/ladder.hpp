@@ -28,6 +28,12 @@ Shortfall shortfall(const Real& error, const Real& target) {
   return {false, static_cast<int>(std::ceil(static_cast<double>(log10(error / target))))};
 }
 
+// Extra digits carried beyond the request before the solver's own rounding bound is consulted
+// (and the precision raised if it says the request is not met): every rung's first working
+// precision is digits + guard_digits(digits). Fewer guard digits were measured slower: more points
+// then need the second pass.
+inline int guard_digits(int digits) { return 10 + digits / 20; }
+
 struct RaisePolicy {
   int guard = 10;         // digits added beyond those missing
   int max_work = 0;       // working digits not to go beyond (0: no limit but the attempts)

@@ -26,11 +26,6 @@
 
 namespace vibrofric::detail {
 
-// Extra digits carried beyond the request before the solver's own rounding bound is consulted
-// (and the precision raised if it says the request is not met). Fewer guard digits were
-// measured slower: more points then need the second pass.
-inline int guard_digits(int digits) { return 10 + digits / 20; }
-
 template <class Real>
 struct PointValue {
   Real value;
