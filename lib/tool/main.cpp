@@ -140,6 +140,11 @@ struct FlagSpec {
   Reader read;
 };
 
+// The help texts below quote these limits (string literals, as CLI11 takes them).
+static_assert(max_digits == 10000 && root_iterations_limit == 100000 && max_fit_harmonics == 10000 &&
+                  detail::min_quadrature_levels == 4 && quadrature_levels_limit == 30,
+              "a limit changed: update the help texts that quote it");
+
 // Our integer grammar: an optional sign and 1 to 9 digits (CLI11's int reads 010 as 8 and 0x10 as 16).
 int integer(const std::string& text, const std::string& what, long lo, long hi) {
   const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
@@ -252,7 +257,10 @@ const std::vector<FlagSpec> kSolverFlags{
        f.solver.max_root_iterations = static_cast<std::uintmax_t>(integer(t, "--max-iterations", 1, root_iterations_limit));
      }},
     {"max-levels", "N", "tanh-sinh halvings, 4 to 30", "15",
-     [](Flags& f, const std::string& t) { f.solver.max_quadrature_levels = static_cast<std::size_t>(integer(t, "--max-levels", 4, 30)); }},
+     [](Flags& f, const std::string& t) {
+       f.solver.max_quadrature_levels = static_cast<std::size_t>(
+           integer(t, "--max-levels", static_cast<long>(detail::min_quadrature_levels), quadrature_levels_limit));
+     }},
     {"quadrature-tolerance", "T", "tanh-sinh tolerance, in (0, 1)", "sqrt(eps) of the working precision",
      [](Flags& f, const std::string& t) {
        check_decimal(t, "--quadrature-tolerance");

@@ -9,6 +9,7 @@ namespace vibrofric {
 inline constexpr int min_digits = 1;      // significant digits of an mpfr request
 inline constexpr int max_digits = 10000;
 inline constexpr int root_iterations_limit = 100000;  // the largest Options::max_root_iterations a caller may set
+inline constexpr int quadrature_levels_limit = 30;    // the largest Options::max_quadrature_levels (2^30 nodes a level)
 inline constexpr int min_trace_points = 2;          // trace: N + 1 phases
 inline constexpr int max_trace_points = 1000000;
 inline constexpr int max_range_points = 1000000;    // sweep ranges FROM:TO:N

@@ -175,12 +175,15 @@ namespace detail {
 
 // One tanh-sinh integrator per thread and precision: its tables are built at the precision that
 // is current when it is constructed (toolchain.md).
+// Boost 1.81's tanh_sinh builds its first rows unconditionally: fewer than 4 levels crash it.
+inline constexpr std::size_t min_quadrature_levels = 4;
+
 template <class Real>
 boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
   using Q = boost::math::quadrature::tanh_sinh<Real>;
-  // Boost 1.81's tanh_sinh builds its first rows unconditionally: fewer than 4 levels crash it.
-  if (levels < 4)
-    throw InputError("max_quadrature_levels = " + std::to_string(levels) + ": expected at least 4 (tanh-sinh)");
+  if (levels < min_quadrature_levels)
+    throw InputError("max_quadrature_levels = " + std::to_string(levels) + ": expected at least " +
+                     std::to_string(min_quadrature_levels) + " (tanh-sinh)");
   thread_local std::map<std::pair<int, std::size_t>, std::unique_ptr<Q>> cache;
   const auto key = std::make_pair(working_digits10<Real>(), levels);
   auto& slot = cache[key];
@@ -202,9 +205,9 @@ class EventPass {
       method_ = w.has_antiderivative() ? AreaMethod::exact : AreaMethod::quadrature;
     if (method_ == AreaMethod::exact && !w.has_antiderivative())
       throw InputError("waveform " + w.name() + " has no antiderivative: use the quadrature area method");
-    if (method_ == AreaMethod::quadrature && opt.max_quadrature_levels < 4)
-      throw InputError("max_quadrature_levels = " + std::to_string(opt.max_quadrature_levels) +
-                       ": expected at least 4 (tanh-sinh)");
+    if (method_ == AreaMethod::quadrature && opt.max_quadrature_levels < detail::min_quadrature_levels)
+      throw InputError("max_quadrature_levels = " + std::to_string(opt.max_quadrature_levels) + ": expected at least " +
+                       std::to_string(detail::min_quadrature_levels) + " (tanh-sinh)");
   }
 
   Result<Real> run() {
