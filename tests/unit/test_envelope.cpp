@@ -236,7 +236,7 @@ TEST(EnvelopeVsSolver, RandomSampledWaveforms) {
       compare(mu_tally, got.mu, exact.mu, "mu, " + what);
       ++phases[std::min<std::size_t>(got.stick_phases.size(), 3)];
       if (k == 0) {
-        const Rational n_area = env::mu(w, beta, -lo).normal;  // scale of Ψ, which may be exactly 0
+        const Rational n_area = env::mu(w, beta, -lo).normal_area;  // scale of Ψ, which may be exactly 0
         try {
           compare(psi_tally, vibrofric::psi(*wave, to_mpfr(beta)).lost_area, env::psi(w, beta), "psi, " + what, &n_area);
         } catch (const std::exception& e) {
@@ -275,7 +275,7 @@ TEST(EnvelopeVsSolver, CatalogueWavesWithJumps) {
       try {
         compare(mu_tally, vibrofric::solve(*wave, to_mpfr(beta), to_mpfr(gamma)).mu, env::mu(w, beta, gamma).mu, "mu, " + what);
         if (trial % 4 == 0) {
-          const Rational n_area = env::mu(w, beta, 1).normal;
+          const Rational n_area = env::mu(w, beta, 1).normal_area;
           compare(psi_tally, vibrofric::psi(*wave, to_mpfr(beta)).lost_area, env::psi(w, beta), "psi, " + what, &n_area);
         }
       } catch (const std::exception& e) {

@@ -394,8 +394,8 @@ TEST(SpringRow, WrongRowsAreRejected) {
     const double sigma_max = c.gamma + w->maximum();
     for (std::size_t i = 0; i < kN; ++i) {
       const auto s = detail::step_row_spring(table, c.beta, c.gamma - (i + 0.5) * sigma_max / kN, 0);
-      f += s.retained;
-      n += s.normal;
+      f += s.retained_area;
+      n += s.normal_area;
     }
     const double b1 = row_bound(right, c.beta, k_w);
     EXPECT_LE(std::abs(right.mu - mu_sphere), b1) << c.wave << ", beta = " << c.beta << ", gamma = " << c.gamma;
@@ -406,8 +406,8 @@ TEST(SpringRow, WrongRowsAreRejected) {
     const double mu_flat = solve_curved(*w, *flat, c.beta, c.gamma).mu;
     const SpringRowResult<double> right2 = simulate_spring_row(*w, *flat, c.beta, c.gamma, o);
     const auto centre = detail::step_row_spring(table, c.beta, c.gamma, 0);
-    const double f2 = right2.friction_integral - flat->flat_length() * centre.retained;
-    const double n2 = right2.normal_integral - flat->flat_length() * centre.normal;
+    const double f2 = right2.friction_integral - flat->flat_length() * centre.retained_area;
+    const double n2 = right2.normal_integral - flat->flat_length() * centre.normal_area;
     const double b2 = row_bound(right2, c.beta, k_w);
     EXPECT_LE(std::abs(right2.mu - mu_flat), b2) << c.wave << ", beta = " << c.beta << ", gamma = " << c.gamma;
     EXPECT_GT(std::abs(f2 / n2 - mu_flat), b2) << "row without the flat not rejected: " << c.wave << ", beta = " << c.beta

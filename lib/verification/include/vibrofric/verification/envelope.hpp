@@ -33,10 +33,10 @@ struct Vertex {
 using Vertices = std::vector<Vertex>;
 
 struct Result {
-  Rational retained;  // ∫₀¹ s
-  Rational normal;    // ∫₀¹ n
-  Rational mu;        // μ̄/μ0 = ∫s/∫n
-  Rational lost() const { return normal - retained; }
+  Rational retained_area;  // ∫₀¹ s
+  Rational normal_area;    // ∫₀¹ n
+  Rational mu;             // μ̄/μ0 = ∫s/∫n
+  Rational lost() const { return normal_area - retained_area; }
 };
 
 namespace detail {
@@ -115,11 +115,11 @@ inline Result lower_envelope(const Vertices& n, const Rational& beta) {
       const Rational shift = k <= j ? Rational(n[k].x) : Rational(n[k].x - 1);
       lines[k + 1] = {level - beta * shift, beta};
     }
-    r.retained += detail::integrate_lower_envelope(lines, a, b);
-    r.normal += (b - a) * (n[j].right + end.left) / 2;
+    r.retained_area += detail::integrate_lower_envelope(lines, a, b);
+    r.normal_area += (b - a) * (n[j].right + end.left) / 2;
   }
-  if (r.normal == 0) throw std::invalid_argument("envelope: n vanishes identically (no contact)");
-  r.mu = r.retained / r.normal;
+  if (r.normal_area == 0) throw std::invalid_argument("envelope: n vanishes identically (no contact)");
+  r.mu = r.retained_area / r.normal_area;
   return r;
 }
 

@@ -69,7 +69,7 @@ namespace detail {
 
 template <class Real>
 struct GridSample {
-  Real retained = 0, normal = 0, lost = 0, mismatch = 0;
+  Real retained_area = 0, normal_area = 0, lost = 0, mismatch = 0;
   std::size_t crossings = 0;
 };
 
@@ -79,20 +79,20 @@ template <class Real>
 void integrate_subcell(const Real& L, const Real& a, const Real& b, const Real& r0, const Real& beta, GridSample<Real>& acc) {
   const Real r1 = r0 + beta * L;
   const Real d0 = a - r0, d1 = b - r1;  // n − r at the ends
-  acc.normal += L * (a + b) / 2;
+  acc.normal_area += L * (a + b) / 2;
   if (d0 >= 0 && d1 >= 0) {  // stick throughout: s = r
-    acc.retained += L * (r0 + r1) / 2;
+    acc.retained_area += L * (r0 + r1) / 2;
     acc.lost += L * (d0 + d1) / 2;
   } else if (d0 <= 0 && d1 <= 0) {  // slip throughout: s = n
-    acc.retained += L * (a + b) / 2;
+    acc.retained_area += L * (a + b) / 2;
   } else {  // one sign change of the linear n − r, at θL
     const Real theta = d0 / (d0 - d1);
     const Real xm = theta * L, ym = r0 + beta * xm;  // n = r = ym there
     if (d0 > 0) {
-      acc.retained += xm * (r0 + ym) / 2 + (L - xm) * (ym + b) / 2;
+      acc.retained_area += xm * (r0 + ym) / 2 + (L - xm) * (ym + b) / 2;
       acc.lost += xm * d0 / 2;
     } else {
-      acc.retained += xm * (a + ym) / 2 + (L - xm) * (ym + r1) / 2;
+      acc.retained_area += xm * (a + ym) / 2 + (L - xm) * (ym + r1) / 2;
       acc.lost += (L - xm) * d1 / 2;
     }
   }
@@ -188,17 +188,17 @@ GridEnvelope<Real> grid_envelope(const W& w, const Real& beta, const Real& gamma
   std::vector<Real> g(points);
   for (std::size_t i = 0; i < points; ++i) g[i] = gamma + w(Real(i) / points);
   const detail::GridSample<Real> fine = detail::grid_sample(g, 1, beta);
-  if (!(fine.normal > 0))
+  if (!(fine.normal_area > 0))
     throw DomainError("grid envelope: gamma = " + detail::short_str(gamma) + ": n vanishes at all " + std::to_string(points) +
                       " grid points (no contact)");
   const detail::GridSample<Real> coarse = detail::grid_sample(g, 2, beta);
   GridEnvelope<Real> r;
-  r.mu = fine.retained / fine.normal;
-  r.retained_area = fine.retained;
-  r.normal_area = fine.normal;
+  r.mu = fine.retained_area / fine.normal_area;
+  r.retained_area = fine.retained_area;
+  r.normal_area = fine.normal_area;
   r.lost_area = fine.lost;
-  r.coarse_mu = coarse.normal > 0 ? Real(coarse.retained / coarse.normal) : std::numeric_limits<Real>::quiet_NaN();
-  r.error_estimate = coarse.normal > 0 ? Real(abs(r.mu - r.coarse_mu)) : std::numeric_limits<Real>::infinity();
+  r.coarse_mu = coarse.normal_area > 0 ? Real(coarse.retained_area / coarse.normal_area) : std::numeric_limits<Real>::quiet_NaN();
+  r.error_estimate = coarse.normal_area > 0 ? Real(abs(r.mu - r.coarse_mu)) : std::numeric_limits<Real>::infinity();
   r.recursion_mismatch = fine.mismatch > coarse.mismatch ? fine.mismatch : coarse.mismatch;
   r.points = points;
   r.evaluations = points;

@@ -76,8 +76,8 @@ namespace detail {
 
 template <class Real>
 struct RowSpring {
-  Real retained, normal;  // h Σ s and h Σ n over the steady period (Φ_i, N_i)
-  Real stick;             // fraction of that period's steps with s < n
+  Real retained_area, normal_area;  // h Σ s and h Σ n over the steady period (Φ_i, N_i)
+  Real stick;                       // fraction of that period's steps with s < n
   std::size_t periods = 0;
 };
 
@@ -116,8 +116,8 @@ RowSpring<Real> step_row_spring(const std::vector<Real>& w_table, const Real& be
       sum_n += nk;
     }
     if (p >= 2 && abs(sum_s - previous) <= 4 * Real(N) * eps * sum_s) {
-      out.retained = sum_s / N;
-      out.normal = sum_n / N;
+      out.retained_area = sum_s / N;
+      out.normal_area = sum_n / N;
       out.stick = Real(sticking) / N;
       out.periods = p;
       return out;
@@ -170,8 +170,8 @@ SpringRowResult<Real> simulate_spring_row(const Waveform<Real>& w, const Profile
   Real F = 0, N = 0, S = 0;
   if (L > 0) {
     const detail::RowSpring<Real> c = detail::step_row_spring(table, beta, gamma, opt.max_periods);
-    F += L * c.retained;
-    N += L * c.normal;
+    F += L * c.retained_area;
+    N += L * c.normal_area;
     S += L * c.stick;
     r.periods = c.periods;
   }
@@ -179,8 +179,8 @@ SpringRowResult<Real> simulate_spring_row(const Waveform<Real>& w, const Profile
   for (std::size_t i = 0; i < opt.springs; ++i) {
     const Real x = L + (Real(i) + Real(0.5)) * dx;
     const detail::RowSpring<Real> c = detail::step_row_spring(table, beta, Real(gamma - p.sigma_at_x(x)), opt.max_periods);
-    cf += c.retained;
-    cn += c.normal;
+    cf += c.retained_area;
+    cn += c.normal_area;
     cs += c.stick;
     if (c.periods > r.periods) r.periods = c.periods;
   }
