@@ -6,12 +6,7 @@
 #pragma once
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/mpfr.hpp>
-#include <charconv>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <sstream>
-#include <string>
 #include <type_traits>
 
 namespace vibrofric {
