@@ -1,0 +1,182 @@
+// Closed real intervals with outward-rounded endpoints (MPFI), the number type of certified
+// enclosures (README, "Precision"; model.md, "The paper's claims that the suite verifies": a claim
+// decided to working precision becomes one decided by an enclosure). Every operation returns an
+// interval holding the exact result for every point of its arguments.
+//
+// There is no operator< or ==: on intervals a comparison can be undecided. sign() and compare()
+// say negative, positive, zero (both ends exactly 0) or undecided, and a caller decides only on a
+// certain answer (Boost 1.81's mpfi_float throws from a noexcept compare on overlap, which
+// terminates the process, and calls two equal wide intervals equal).
+#pragma once
+#include <mpfi.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
+
+namespace vibrofric {
+
+enum class Sign { negative, zero, positive, undecided };
+
+class Interval {
+ public:
+  // [0, 0] with `bits` of precision per endpoint.
+  explicit Interval(mpfr_prec_t bits) {
+    mpfi_init2(v_, bits);
+    mpfi_set_si(v_, 0);
+  }
+  Interval(const Interval& other) {
+    mpfi_init2(v_, mpfi_get_prec(other.v_));
+    mpfi_set(v_, other.v_);
+  }
+  Interval(Interval&& other) noexcept {
+    mpfi_init2(v_, mpfi_get_prec(other.v_));
+    mpfi_swap(v_, other.v_);
+  }
+  Interval& operator=(const Interval& other) {
+    if (this != &other) {
+      mpfi_set_prec(v_, mpfi_get_prec(other.v_));
+      mpfi_set(v_, other.v_);
+    }
+    return *this;
+  }
+  Interval& operator=(Interval&& other) noexcept {
+    mpfi_swap(v_, other.v_);
+    return *this;
+  }
+  ~Interval() { mpfi_clear(v_); }
+
+  // The integer k, exactly.
+  static Interval integer(long k, mpfr_prec_t bits) {
+    Interval r(bits);
+    mpfi_set_si(r.v_, k);
+    return r;
+  }
+  // The exact value of an mpfr number (at least its own precision, so no rounding).
+  static Interval exact(const mpfr& x, mpfr_prec_t bits) {
+    Interval r(std::max(bits, mpfr_get_prec(x.backend().data())));
+    mpfi_set_fr(r.v_, x.backend().data());
+    return r;
+  }
+  // The decimal `text` (our grammar: check_decimal has accepted it), enclosed: its exact value
+  // lies inside, with each end rounded outward.
+  static Interval decimal(const std::string& text, mpfr_prec_t bits) {
+    Interval r(bits);
+    if (mpfi_set_str(r.v_, text.c_str(), 10) != 0 || mpfi_nan_p(r.v_))
+      throw InputError("'" + text + "': not a decimal number to enclose");
+    return r;
+  }
+  // The smallest interval holding [lo, hi] (lo ≤ hi).
+  static Interval hull(const mpfr& lo, const mpfr& hi, mpfr_prec_t bits) {
+    Interval r = exact(lo, bits);
+    const Interval b = exact(hi, bits);
+    mpfi_union(r.v_, r.v_, b.v_);
+    return r;
+  }
+  static Interval pi(mpfr_prec_t bits) {
+    Interval r(bits);
+    mpfi_const_pi(r.v_);
+    return r;
+  }
+
+  mpfr_prec_t precision() const { return mpfi_get_prec(v_); }
+  mpfr lower() const { return end(mpfi_get_left); }
+  mpfr upper() const { return end(mpfi_get_right); }
+  mpfr midpoint() const { return end(mpfi_mid); }
+  // upper − lower, rounded up.
+  mpfr width() const { return end(mpfi_diam_abs); }
+  bool bounded() const { return mpfi_bounded_p(v_) != 0; }
+  bool contains(const mpfr& x) const { return mpfi_is_inside_fr(x.backend().data(), v_) > 0; }
+  bool contains(const Interval& inner) const { return mpfi_is_inside(inner.v_, v_) > 0; }
+
+  // The certain sign of every point, or undecided (NaN ends, or an interval holding 0 and more).
+  Sign sign() const {
+    const __mpfr_struct* lo = &v_->left;
+    const __mpfr_struct* hi = &v_->right;
+    if (mpfr_nan_p(lo) || mpfr_nan_p(hi)) return Sign::undecided;
+    if (mpfr_sgn(lo) > 0) return Sign::positive;
+    if (mpfr_sgn(hi) < 0) return Sign::negative;
+    if (mpfr_zero_p(lo) && mpfr_zero_p(hi)) return Sign::zero;
+    return Sign::undecided;
+  }
+
+  Interval& operator+=(const Interval& b) { return apply(mpfi_add, b); }
+  Interval& operator-=(const Interval& b) { return apply(mpfi_sub, b); }
+  Interval& operator*=(const Interval& b) { return apply(mpfi_mul, b); }
+  // Division by an interval that holds 0 gives an unbounded interval (bounded() is false).
+  Interval& operator/=(const Interval& b) { return apply(mpfi_div, b); }
+  friend Interval operator+(Interval a, const Interval& b) { return a += b; }
+  friend Interval operator-(Interval a, const Interval& b) { return a -= b; }
+  friend Interval operator*(Interval a, const Interval& b) { return a *= b; }
+  friend Interval operator/(Interval a, const Interval& b) { return a /= b; }
+  friend Interval operator-(Interval a) {
+    mpfi_neg(a.v_, a.v_);
+    return a;
+  }
+  friend Interval operator*(Interval a, long k) {
+    mpfi_mul_si(a.v_, a.v_, k);
+    return a;
+  }
+
+  friend Interval sqr(Interval a) { return a.unary(mpfi_sqr); }
+  friend Interval abs(Interval a) { return a.unary(mpfi_abs); }
+  friend Interval sin(Interval a) { return a.unary(mpfi_sin); }
+  friend Interval cos(Interval a) { return a.unary(mpfi_cos); }
+  friend Interval exp(Interval a) { return a.unary(mpfi_exp); }
+  // sqrt and log of an interval reaching below their domain are an error, not a NaN end.
+  friend Interval sqrt(Interval a) {
+    if (mpfr_sgn(&a.v_->left) < 0) throw SolverError("interval sqrt of an interval reaching below 0");
+    return a.unary(mpfi_sqrt);
+  }
+  friend Interval log(Interval a) {
+    if (mpfr_sgn(&a.v_->left) <= 0) throw SolverError("interval log of an interval reaching 0 or below");
+    return a.unary(mpfi_log);
+  }
+  // The smallest interval holding both; their intersection, if not empty.
+  friend Interval hull(Interval a, const Interval& b) { return a.apply(mpfi_union, b); }
+  friend std::optional<Interval> intersection(Interval a, const Interval& b) {
+    mpfi_intersect(a.v_, a.v_, b.v_);
+    if (mpfi_is_empty(a.v_)) return std::nullopt;
+    return a;
+  }
+  // The two halves at the midpoint.
+  std::pair<Interval, Interval> bisect() const {
+    Interval left(precision()), right(precision());
+    mpfi_bisect(left.v_, right.v_, v_);
+    return {std::move(left), std::move(right)};
+  }
+
+  mpfi_srcptr data() const { return v_; }
+
+ private:
+  template <class F>
+  mpfr end(F f) const {
+    mpfr x;
+    x.precision(static_cast<unsigned>(digits10_of(precision())));
+    mpfr_set_prec(x.backend().data(), precision());
+    f(x.backend().data(), v_);
+    return x;
+  }
+  static long digits10_of(mpfr_prec_t bits) { return static_cast<long>(bits * 0.30103) + 2; }
+  template <class F>
+  Interval& apply(F f, const Interval& b) {
+    if (mpfi_get_prec(b.v_) > precision()) mpfi_round_prec(v_, mpfi_get_prec(b.v_));
+    f(v_, v_, b.v_);
+    return *this;
+  }
+  template <class F>
+  Interval unary(F f) {
+    f(v_, v_);
+    return std::move(*this);
+  }
+
+  mpfi_t v_;
+};
+
+// The certain sign of a − b, or undecided where they overlap.
+inline Sign compare(const Interval& a, const Interval& b) { return (a - b).sign(); }
+
+}  // namespace vibrofric

@@ -1,0 +1,216 @@
+// Interval (interval.hpp): every result encloses the exact one, checked against independent
+// values — exact rationals (GMP) for decimals and the four operations, MPFR's directed roundings
+// at four times the bits for the transcendental functions — and is tight (a point's enclosure is
+// at most two units of the last place wide). Signs and comparisons decide only when certain.
+#include <gmp.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "vibrofric/core/interval.hpp"
+
+namespace {
+
+using vibrofric::Interval;
+using vibrofric::Sign;
+using vibrofric::mpfr;
+
+constexpr mpfr_prec_t kBits = 64;
+
+// The exact rational value of a decimal "±d[.d][e±k]", built from its digits (not by MPFI or MPFR).
+class Rational {
+ public:
+  explicit Rational(const std::string& text) {
+    mpq_init(q_);
+    std::string digits;
+    long fraction_digits = 0;
+    bool point = false;
+    std::size_t i = 0;
+    bool negative = false;
+    if (text[i] == '-' || text[i] == '+') negative = text[i++] == '-';
+    for (; i < text.size() && text[i] != 'e' && text[i] != 'E'; ++i) {
+      if (text[i] == '.') {
+        point = true;
+        continue;
+      }
+      digits += text[i];
+      if (point) ++fraction_digits;
+    }
+    long power = -fraction_digits;
+    if (i < text.size()) power += std::stol(text.substr(i + 1));
+    mpz_t n, p;
+    mpz_init_set_str(n, digits.c_str(), 10);
+    mpz_init(p);
+    mpz_ui_pow_ui(p, 10, static_cast<unsigned long>(power < 0 ? -power : power));
+    if (power >= 0) {
+      mpz_mul(n, n, p);
+      mpq_set_z(q_, n);
+    } else {
+      mpq_set_num(q_, n);
+      mpq_set_den(q_, p);
+      mpq_canonicalize(q_);
+    }
+    if (negative) mpq_neg(q_, q_);
+    mpz_clear(n);
+    mpz_clear(p);
+  }
+  explicit Rational(double x) {
+    mpq_init(q_);
+    mpq_set_d(q_, x);  // exact
+  }
+  Rational(const Rational&) = delete;
+  Rational& operator=(const Rational&) = delete;
+  ~Rational() { mpq_clear(q_); }
+  mpq_srcptr get() const { return q_; }
+  mpq_ptr get() { return q_; }
+
+ private:
+  mpq_t q_;
+};
+
+bool encloses(const Interval& i, const Rational& exact) { return mpfi_is_inside_q(exact.get(), i.data()) > 0; }
+
+// Width in units of the last place of the lower end (its exponent at kBits).
+double width_in_ulps(const Interval& i) {
+  const mpfr lo = i.lower(), w = i.width();
+  if (mpfr_zero_p(w.backend().data())) return 0;
+  // w / 2^(exponent − bits), as a binary exponent shift (no underflow for subnormal-sized ends).
+  mpfr ratio = w;
+  mpfr_mul_2si(ratio.backend().data(), w.backend().data(), i.precision() - mpfr_get_exp(lo.backend().data()), MPFR_RNDU);
+  return mpfr_get_d(ratio.backend().data(), MPFR_RNDU);
+}
+
+TEST(Interval, DecimalsAreEnclosedTightly) {
+  for (const std::string text : {"0.1", "-0.3", "2.5", "1e-30", "-7e+40", "123456789.123456789", "0.33333333333333333333333",
+                                 "1", "-0", "4.9406564584124654e-324"}) {
+    const Interval i = Interval::decimal(text, kBits);
+    const Rational exact(text);
+    EXPECT_TRUE(encloses(i, exact)) << text;
+    EXPECT_LE(width_in_ulps(i), 1.0) << text;
+  }
+  // Exact binary fractions are points.
+  EXPECT_EQ(Interval::decimal("2.5", kBits).sign(), Sign::positive);
+  EXPECT_TRUE(mpfr_zero_p(Interval::decimal("2.5", kBits).width().backend().data()));
+  EXPECT_THROW(Interval::decimal("nan", kBits), vibrofric::InputError);
+  EXPECT_THROW(Interval::decimal("0.1x", kBits), vibrofric::InputError);
+}
+
+TEST(Interval, FourOperationsEncloseTheExactRationalResult) {
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> exponent(-60, 60);
+  for (int k = 0; k < 2000; ++k) {
+    const double a = std::ldexp(mantissa(rng), exponent(rng)), b = std::ldexp(mantissa(rng), exponent(rng));
+    if (b == 0) continue;
+    const Interval ia = Interval::exact(mpfr(a), kBits), ib = Interval::exact(mpfr(b), kBits);
+    const Rational qa(a), qb(b);
+    Rational sum(0.0), difference(0.0), product(0.0), quotient(0.0);
+    mpq_add(sum.get(), qa.get(), qb.get());
+    mpq_sub(difference.get(), qa.get(), qb.get());
+    mpq_mul(product.get(), qa.get(), qb.get());
+    mpq_div(quotient.get(), qa.get(), qb.get());
+    EXPECT_TRUE(encloses(ia + ib, sum)) << a << " + " << b;
+    EXPECT_TRUE(encloses(ia - ib, difference)) << a << " - " << b;
+    EXPECT_TRUE(encloses(ia * ib, product)) << a << " * " << b;
+    EXPECT_TRUE(encloses(ia / ib, quotient)) << a << " / " << b;
+    EXPECT_LE(width_in_ulps(ia * ib), 1.0);
+    EXPECT_LE(width_in_ulps(ia / ib), 1.0);
+  }
+}
+
+// MPFR's value rounded down and up at 4 × kBits: an enclosure of the exact value from another
+// library's correct rounding.
+template <class F>
+void expect_encloses_mpfr(const Interval& got, F f, double x, const char* name) {
+  mpfr_t v, down, up;
+  mpfr_inits2(4 * kBits, v, down, up, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_d(v, x, MPFR_RNDN);
+  f(down, v, MPFR_RNDD);
+  f(up, v, MPFR_RNDU);
+  EXPECT_TRUE(mpfi_is_inside_fr(down, got.data()) > 0 && mpfi_is_inside_fr(up, got.data()) > 0) << name << "(" << x << ")";
+  EXPECT_LE(width_in_ulps(got), 2.0) << name << "(" << x << ")";
+  mpfr_clears(v, down, up, static_cast<mpfr_ptr>(nullptr));
+}
+
+TEST(Interval, TranscendentalFunctionsEncloseMpfrsDirectedRoundings) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-30, 30);
+  for (int k = 0; k < 1000; ++k) {
+    const double x = u(rng);
+    const Interval i = Interval::exact(mpfr(x), kBits);
+    expect_encloses_mpfr(sin(i), mpfr_sin, x, "sin");
+    expect_encloses_mpfr(cos(i), mpfr_cos, x, "cos");
+    expect_encloses_mpfr(exp(i), mpfr_exp, x, "exp");
+    const double y = std::fabs(x) + 1e-3;
+    const Interval j = Interval::exact(mpfr(y), kBits);
+    expect_encloses_mpfr(log(j), mpfr_log, y, "log");
+    expect_encloses_mpfr(sqrt(j), mpfr_sqrt, y, "sqrt");
+  }
+}
+
+TEST(Interval, WideArgumentsHoldEveryPointsValue) {
+  // sin over [1, 2] reaches its maximum 1 at π/2 inside: the enclosure must hold 1 and sin(1), sin(2).
+  // MPFR's sin(x) rounded down and up at 4 × kBits lies inside for every sample x of [1, 2]
+  // (rounded down at more bits is never below rounded down at fewer).
+  const Interval s = sin(Interval::hull(mpfr(1), mpfr(2), kBits));
+  EXPECT_TRUE(s.contains(mpfr(1)));
+  mpfr_t v, down, up;
+  mpfr_inits2(4 * kBits, v, down, up, static_cast<mpfr_ptr>(nullptr));
+  for (double x = 1; x <= 2; x += 1.0 / 64) {
+    mpfr_set_d(v, x, MPFR_RNDN);
+    mpfr_sin(down, v, MPFR_RNDD);
+    mpfr_sin(up, v, MPFR_RNDU);
+    EXPECT_TRUE(mpfi_is_inside_fr(down, s.data()) > 0 && mpfi_is_inside_fr(up, s.data()) > 0) << x;
+  }
+  mpfr_clears(v, down, up, static_cast<mpfr_ptr>(nullptr));
+  // cos over a whole period is [−1, 1].
+  const Interval c = cos(Interval::hull(mpfr(0), mpfr(7), kBits));
+  EXPECT_TRUE(c.contains(mpfr(-1)) && c.contains(mpfr(1)));
+  // The dependency problem is there (x − x over [0, 1] is [−1, 1]), and is allowed: enclosures,
+  // not exact ranges.
+  const Interval x = Interval::hull(mpfr(0), mpfr(1), kBits);
+  EXPECT_EQ((x - x).sign(), Sign::undecided);
+}
+
+TEST(Interval, SignsAndComparisonsDecideOnlyWhenCertain) {
+  EXPECT_EQ(Interval::hull(mpfr(1), mpfr(2), kBits).sign(), Sign::positive);
+  EXPECT_EQ(Interval::hull(mpfr(-2), mpfr(-1), kBits).sign(), Sign::negative);
+  EXPECT_EQ(Interval(kBits).sign(), Sign::zero);
+  EXPECT_EQ(Interval::hull(mpfr(-1), mpfr(1), kBits).sign(), Sign::undecided);
+  EXPECT_EQ(Interval::hull(mpfr(0), mpfr(1), kBits).sign(), Sign::undecided);
+  // Two enclosures of the same decimal are not "equal": their difference holds 0 and more.
+  EXPECT_EQ(compare(Interval::decimal("0.1", kBits), Interval::decimal("0.1", kBits)), Sign::undecided);
+  EXPECT_EQ(compare(Interval::decimal("0.1", kBits), Interval::decimal("0.10000000000000000001", kBits)), Sign::negative);
+  // 1e-25 apart is below 64 bits' resolution at 0.1: undecided, and decided at 128 bits.
+  EXPECT_EQ(compare(Interval::decimal("0.1", kBits), Interval::decimal("0.1000000000000000000000001", kBits)),
+            Sign::undecided);
+  EXPECT_EQ(compare(Interval::decimal("0.1", 128), Interval::decimal("0.1000000000000000000000001", 128)), Sign::negative);
+}
+
+TEST(Interval, DomainErrorsAndUnboundedQuotients) {
+  EXPECT_THROW(sqrt(Interval::hull(mpfr(-1), mpfr(1), kBits)), vibrofric::SolverError);
+  EXPECT_THROW(log(Interval::hull(mpfr(0), mpfr(1), kBits)), vibrofric::SolverError);
+  const Interval q = Interval::integer(1, kBits) / Interval::hull(mpfr(-1), mpfr(1), kBits);
+  EXPECT_FALSE(q.bounded());
+  EXPECT_EQ(q.sign(), Sign::undecided);
+}
+
+TEST(Interval, BisectionHullAndIntersection) {
+  const Interval x = Interval::hull(mpfr(-3), mpfr(5), kBits);
+  const auto [left, right] = x.bisect();
+  EXPECT_EQ(mpfr_cmp_si(left.upper().backend().data(), 1), 0);
+  EXPECT_EQ(mpfr_cmp_si(right.lower().backend().data(), 1), 0);
+  EXPECT_TRUE(x.contains(hull(left, right)) && hull(left, right).contains(x));
+  EXPECT_FALSE(intersection(Interval::hull(mpfr(0), mpfr(1), kBits), Interval::hull(mpfr(2), mpfr(3), kBits)));
+  const auto both = intersection(Interval::hull(mpfr(0), mpfr(2), kBits), Interval::hull(mpfr(1), mpfr(3), kBits));
+  ASSERT_TRUE(both);
+  EXPECT_EQ(mpfr_cmp_si(both->lower().backend().data(), 1), 0);
+  EXPECT_EQ(mpfr_cmp_si(both->upper().backend().data(), 2), 0);
+  // Precision: the wider operand's wins.
+  EXPECT_EQ((Interval::integer(1, 64) + Interval::integer(1, 200)).precision(), 200);
+}
+
+}  // namespace
