@@ -16,9 +16,9 @@ inline constexpr int max_range_points = 1000000;    // sweep ranges FROM:TO:N
 inline constexpr int max_fit_harmonics = 10000;     // fit: K
 inline constexpr unsigned max_harmonic_index = 100000;  // fourier files: k
 inline constexpr unsigned max_threads = 1024;       // worker threads of a batch (0: every core)
-// A wave file holds at most this many lines, a profile at most this many samples: the readers
-// stop there (an endless input is an error, not a memory exhaustion), and arrays are held to the
-// same numbers.
+// A file holds at most this many lines (the table reader stops there: an endless input is an
+// error, not a memory exhaustion), a profile at most this many samples (refused past it); arrays
+// are held to the same numbers.
 inline constexpr std::size_t max_table_lines = 10'000'000;
 inline constexpr std::size_t max_profile_samples = 100'000;
 

@@ -10,6 +10,7 @@
 #pragma once
 #include <mpfi.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
