@@ -25,6 +25,7 @@
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/fit.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/api/suggest.hpp"
 #include "vibrofric/verification/claims.hpp"
 
 namespace py = pybind11;
@@ -144,7 +145,10 @@ Precision to_precision(const std::optional<int>& digits, const py::object& type)
     throw py::type_error("type = " + py_repr(type) + ": expected a string such as 'double' or 'mpfr'");
   const std::string t = type.is_none() ? (digits ? "mpfr" : "double") : type.cast<std::string>();
   const auto named = number_type_named(t);
-  if (!named) throw InputError("type = " + py_repr(type) + ": expected " + number_type_choices);
+  if (!named) {
+    const std::string hint = did_you_mean(t, number_type_names());
+    throw InputError("type = " + py_repr(type) + ": expected " + number_type_choices + (hint.empty() ? "" : "; " + hint));
+  }
   p.type = *named;
   if (digits) {
     if (p.type != NumberType::mpfr)

@@ -28,6 +28,7 @@
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/fit.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/api/suggest.hpp"
 #include "vibrofric/verification/claims.hpp"
 
 namespace {
@@ -166,11 +167,17 @@ bool switch_value(const std::string& text, const std::string& name) {
   throw InputError("--" + name + " = '" + detail::visible(text) + "': expected no value, or one of true, false, yes, no, 1, 0");
 }
 
+// "; did you mean 'X'?" after a refusal of a name near one of `known`, or "".
+std::string hint(const std::string& typed, const std::vector<std::string>& known) {
+  const std::string h = did_you_mean(typed, known);
+  return h.empty() ? h : "; " + detail::visible(h);
+}
+
 Format format_named(const std::string& text) {
   if (text == "text") return Format::text;
   if (text == "csv") return Format::csv;
   if (text == "json") return Format::json;
-  throw InputError("--format '" + detail::visible(text) + "': expected text, csv or json");
+  throw InputError("--format '" + detail::visible(text) + "': expected text, csv or json" + hint(text, {"text", "csv", "json"}));
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -233,7 +240,9 @@ const std::vector<FlagSpec> kPrecisionFlags{
     {"type", "T", "double | long-double | cpp_bin_float_50 | cpp_bin_float_100 | mpfr", "mpfr",
      [](Flags& f, const std::string& t) {
        f.type = number_type_named(t);
-       if (!f.type) throw InputError("--type '" + detail::visible(t) + "': expected " + number_type_choices);
+       if (!f.type)
+         throw InputError("--type '" + detail::visible(t) + "': expected " + number_type_choices +
+                          hint(t, number_type_names()));
        f.type_text = t;
      }},
     {"no-escalate", "", "fixed types: print the value computed in the type even where its rounding bound "
@@ -250,7 +259,7 @@ const std::vector<FlagSpec> kSolverFlags{
        else if (t == "quadrature")
          f.solver.area = AreaMethod::quadrature;
        else
-         throw InputError("--area '" + detail::visible(t) + "': expected auto, exact or quadrature");
+         throw InputError("--area '" + detail::visible(t) + "': expected auto, exact or quadrature" + hint(t, {"auto", "exact", "quadrature"}));
      }},
     {"max-iterations", "N", "root-finder budget per event, 1 to 100000", "200 + working bits",
      [](Flags& f, const std::string& t) {
@@ -337,7 +346,7 @@ const std::vector<CommandSpec>& commands() {
          }},
         {"quantity", "Q", "mu | psi", "mu",
          [](Flags& f, const std::string& t) {
-           if (t != "mu" && t != "psi") throw InputError("--quantity '" + detail::visible(t) + "': expected mu or psi");
+           if (t != "mu" && t != "psi") throw InputError("--quantity '" + detail::visible(t) + "': expected mu or psi" + hint(t, {"mu", "psi"}));
            f.quantity = t == "psi" ? Quantity::psi : Quantity::mu;
          }},
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
@@ -398,7 +407,7 @@ const std::vector<CommandSpec>& commands() {
         {"claim", "KEY", "one claim (e.g. eq24)", "all", [](Flags& f, const std::string& t) { f.claim = t; }},
         {"format", "F", "text | json (for the report generator)", "text",
          [](Flags& f, const std::string& t) {
-           if (t != "json" && t != "text") throw InputError("--format '" + detail::visible(t) + "': expected text or json");
+           if (t != "json" && t != "text") throw InputError("--format '" + detail::visible(t) + "': expected text or json" + hint(t, {"text", "json"}));
            f.format = format_named(t);
          }}},
        {},
@@ -433,7 +442,11 @@ const std::string& need(const Flags& f, const std::optional<std::string>& value,
 // - --help anywhere: CLI11 checks every value before it looks for --help.
 std::optional<int> run_command(int argc, char** argv) {
   std::string names;
-  for (const auto& c : commands()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  std::vector<std::string> command_names;
+  for (const auto& c : commands()) {
+    names += (names.empty() ? "" : ", ") + std::string(c.name);
+    command_names.emplace_back(c.name);
+  }
   if (argc < 2) throw InputError("missing command: expected one of " + names + " (see --help)");
   Flags flags;
   flags.command = argv[1];
@@ -443,7 +456,7 @@ std::optional<int> run_command(int argc, char** argv) {
   }
   const auto spec = std::find_if(commands().begin(), commands().end(), [&](const CommandSpec& c) { return flags.command == c.name; });
   if (spec == commands().end())
-    throw InputError("unknown command '" + detail::visible(flags.command) + "': expected one of " + names);
+    throw InputError("unknown command '" + detail::visible(flags.command) + "': expected one of " + names + hint(flags.command, command_names));
   CLI::App app("vibrofric");
   app.formatter(std::make_shared<HelpFormatter>());
   CLI::App* sub = app.add_subcommand(spec->name, spec->synopsis);
@@ -493,8 +506,12 @@ std::optional<int> run_command(int argc, char** argv) {
   int status = 0;
   sub->callback([&] {
     for (const std::string& extra : sub->remaining()) {
-      if (extra.rfind("--", 0) == 0)
-        throw InputError("unknown flag --" + detail::visible(extra.substr(2, extra.find('=') - 2)) + " for '" + flags.command + "'");
+      if (extra.rfind("--", 0) == 0) {
+        const std::string name = extra.substr(2, extra.find('=') - 2);
+        std::vector<std::string> known;
+        for (const auto& [k, o] : options) known.push_back("--" + k);
+        throw InputError("unknown flag --" + detail::visible(name) + " for '" + flags.command + "'" + hint("--" + name, known));
+      }
       throw InputError("unexpected argument '" + detail::visible(extra) + "': expected --flag value");
     }
     for (const auto& [name, o] : options)

@@ -270,6 +270,25 @@ def bad_input_tests():
     for w in ("foo", "sin", "SINE", "power", "tri ", "", "fourier:", "samples:", "sine:2"):
         bad("wave=%r" % w, ["mu", "--wave", w, "--beta", "1", "--gamma", "0.5"],
             [("'%s'" % w,)], ["wave"])
+    # A misspelt name: the nearest known one is suggested (api/suggest.hpp), none where nothing is near.
+    for name, args, typed, meant in (
+            ("wave", ["mu", "--wave", "sinus", "--beta", "1", "--gamma", "0.5"], "sinus", "sine"),
+            ("wave with an argument", ["mu", "--wave", "powr:2", "--beta", "1", "--gamma", "0.5"], "powr:2", "power:2"),
+            ("profile", mu_gamma("0.5") + ["--profile", "sphear"], "sphear", "sphere"),
+            ("type", mu_gamma("0.5") + ["--type", "dubble"], "dubble", "double"),
+            ("format", mu_gamma("0.5") + ["--format", "jsn"], "jsn", "json"),
+            ("area", mu_gamma("0.5") + ["--area", "exakt"], "exakt", "exact"),
+            ("command", ["mue", "--wave", "sine"], "mue", "mu"),
+            ("flag", mu + ["--beta", "1", "--gama", "0.5"], "--gama", "--gamma"),
+            ("physical shape", physical_args() + ["--shape", "sphre"], "sphre", "sphere")):
+        bad("misspelt %s: did you mean" % name, args, [typed], ["did you mean '%s'?" % meant])
+    for name, args in (("wave", ["mu", "--wave", "foo", "--beta", "1", "--gamma", "0.5"]),
+                       ("flag", mu_gamma("0.5") + ["--bogus", "3"])):
+        def nothing_near(args=args, name=name):
+            rc, out, err = run(args)
+            if rc != 2 or "did you mean" in err:
+                raise Fail("%s: exit %d, %r: expected exit 2 and no suggestion" % (cmd(args), rc, err))
+        case("%s far from every known name: no suggestion" % name, nothing_near)
     # commands, flags
     bad("unknown command", ["frobnicate", "--wave", "sine"], ["frobnicate"], ["command"])
     bad("unknown command MU", ["MU", "--wave", "sine", "--beta", "1", "--gamma", "0.5"], ["MU"])

@@ -4,6 +4,7 @@
 
 #include "vibrofric/api/detail/tables.hpp"
 #include "vibrofric/api/limits.hpp"
+#include "vibrofric/api/suggest.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -499,8 +500,11 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
     if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected samples:FILE");
     return detail::samples_from_table(detail::read_table_file(arg, text), detail::file_source(arg, text), options);
   }
+  const std::string hint = did_you_mean(text, {"sine", "triangle", "sawtooth-right", "sawtooth-left", "square", "power:P",
+                                                "fourier:FILE", "samples:FILE"});
   throw InputError("unknown wave " + quoted(visible(text)) +
-                   ": expected sine, triangle, sawtooth-right, sawtooth-left, square, power:P, fourier:FILE or samples:FILE");
+                   ": expected sine, triangle, sawtooth-right, sawtooth-left, square, power:P, fourier:FILE or samples:FILE" +
+                   (hint.empty() ? "" : "; " + visible(hint)));
 }
 
 std::vector<std::pair<std::string, std::string>> describe_normalisation(const WaveSpec& wave, int digits) {

@@ -9,6 +9,7 @@
 
 #include "vibrofric/api/detail/evaluate_impl.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/api/suggest.hpp"
 #include "vibrofric/core/curved.hpp"
 #include "vibrofric/core/physical.hpp"
 
@@ -46,8 +47,11 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
                                                                {"cone", {&r.half_angle}},
                                                                {"wearflat", {&r.R, &r.flat_radius}},
                                                                {"profile", {}}};
-  if (!geometry.count(kind))
-    throw InputError(r.shape.name + " '" + detail::visible(shape) + "': expected flat, sphere, cone, wearflat or profile:FILE");
+  if (!geometry.count(kind)) {
+    const std::string hint = did_you_mean(shape, {"flat", "sphere", "cone", "wearflat", "profile:FILE"});
+    throw InputError(r.shape.name + " '" + detail::visible(shape) + "': expected flat, sphere, cone, wearflat or profile:FILE" +
+                     (hint.empty() ? "" : "; " + detail::visible(hint)));
+  }
   for (const Input* g : {&r.radius, &r.R, &r.half_angle, &r.flat_radius})
     if (g->given() && !geometry.at(kind).count(g))
       throw InputError(g->name + " does not apply to " + r.shape.name + " " + detail::visible(shape));

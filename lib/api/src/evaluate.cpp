@@ -13,6 +13,13 @@ std::optional<NumberType> number_type_named(const std::string& text) {
   return std::nullopt;
 }
 
+std::vector<std::string> number_type_names() {
+  std::vector<std::string> names;
+  for (NumberType t : {NumberType::float64, NumberType::float80, NumberType::bin50, NumberType::bin100, NumberType::mpfr})
+    names.push_back(number_type_name(t));
+  return names;
+}
+
 std::string number_type_name(NumberType t) {
   switch (t) {
     case NumberType::float64: return "double";

@@ -7,6 +7,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/detail/tables.hpp"
+#include "vibrofric/api/suggest.hpp"
 
 namespace vibrofric {
 
@@ -64,8 +65,9 @@ ProfileSpec parse_profile(const std::string& text) {
     if (arg.empty()) throw InputError("profile " + as_typed(text) + ": expected profile:FILE");
     return parse_profile_file(arg, text);
   }
-  throw InputError("unknown profile " + as_typed(text) +
-                   ": expected flat, sphere, cone, power:N, wearflat:LAMBDA or profile:FILE");
+  const std::string hint = did_you_mean(text, {"flat", "sphere", "cone", "power:N", "wearflat:LAMBDA", "profile:FILE"});
+  throw InputError("unknown profile " + as_typed(text) + ": expected flat, sphere, cone, power:N, wearflat:LAMBDA or profile:FILE" +
+                   (hint.empty() ? "" : "; " + detail::visible(hint)));
 }
 
 ProfileSpec wear_flat_profile(const mpfr& lambda, const std::string& text) {

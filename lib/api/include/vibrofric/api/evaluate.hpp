@@ -27,6 +27,8 @@ enum class NumberType { float64, float80, bin50, bin100, mpfr };
 std::optional<NumberType> number_type_named(const std::string& text);
 inline constexpr const char* number_type_choices = "double, long-double, cpp_bin_float_50, cpp_bin_float_100 or mpfr";
 std::string number_type_name(NumberType t);
+// Every type's name, in the order of number_type_choices (a front end's "did you mean").
+std::vector<std::string> number_type_names();
 
 struct Precision {
   NumberType type = NumberType::mpfr;
