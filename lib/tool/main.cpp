@@ -578,6 +578,10 @@ WaveSpec read_wave(const Flags& f) {
   WaveReadOptions options = f.read;
   options.column_name = "--column";
   WaveSpec wave = parse_wave(need(f, f.wave, "wave"), options);
+  if (!wave.period_from_stamps.empty())  // a period the file did not state: always said
+    pending_diagnostics += "vibrofric: note: " + detail::visible(wave.name) + " has no end point; its " +
+                           std::to_string(wave.samples.size()) + " time stamps are uniform, so the samples sit at phi = j/N "
+                           "and the period is N dt = " + format_significant(mpfr(wave.period_from_stamps), 6) + "\n";
   if (f.diagnostics)
     for (const auto& [name, value] : describe_normalisation(wave, 17))
       pending_diagnostics += "normalisation: " + name + " = " + value + "\n";

@@ -76,7 +76,7 @@ def test_bad_arrays():
     raises_value_error(vibrofric.samples, [5.0], names=("sample",))
     raises_value_error(vibrofric.samples, [0.0, 1.0, 0.0, 1.0], names=("repeat",))
     raises_value_error(vibrofric.samples, [0.0, 1.0, 2.0], t=[0.0, 2.0, 1.0], names=("time", "increasing"))
-    raises_value_error(vibrofric.samples, [0.0, 1.0, 2.0], t=[0.0, 1.0, 2.0], names=("end point",))
+    raises_value_error(vibrofric.samples, [0.0, 1.0, 2.0], t=[0.0, 1.0, 3.0], names=("end point", "not uniform"))
     raises_value_error(vibrofric.samples, np.zeros((2, 3)), names=("dimension",))
     raises_value_error(vibrofric.fourier, [0.1, 0.2], [1.0], names=("a", "b"))  # ragged
     raises_value_error(vibrofric.fourier, [0.1, math.inf], [1.0, 0.0], names=("a[1]", "inf"))

@@ -43,6 +43,20 @@ def test_samples_with_time_equal_file(tmp_path):
     same_strings(vibrofric.samples(y, t=t), "samples:" + f)
 
 
+def test_samples_daq_stamps_without_end_point(tmp_path):
+    # A DAQ's record: t_j = j dt, no end point. Uniform stamps give phi = j/N and period N dt,
+    # the values of the same samples without a time column, as from the file.
+    rng = np.random.default_rng(11)
+    y = rng.normal(size=40)
+    t = np.arange(40) / 48000.0
+    same_strings(vibrofric.samples(y, t=t), vibrofric.samples(y))
+    f = write(tmp_path / "daq.csv", ["time [s],disp"] + [f"{float(a)!r},{float(b)!r}" for a, b in zip(t, y)])
+    same_strings(vibrofric.samples(y, t=t), vibrofric.wave("samples:" + f, column="disp"))
+    d = vibrofric.samples(y, t=t).normalisation()
+    assert d["end_point"] == "none (uniform stamps: period N dt)" and d["samples"] == 40
+    assert abs(float(d["period"]) - 40 / 48000.0) <= 1e-15 * 40 / 48000.0
+
+
 def test_samples_decimal_strings_equal_file(tmp_path):
     y = ["0.1", "0.35", "1.000000000000000000000000001", "-0.2", "-0.7"]
     f = write(tmp_path / "y.txt", y)
@@ -111,7 +125,7 @@ def file_message_as_array(message, path, label, header_lines):
     ("samples", dict(y=[0.0, 1.0, 0.0, 1.0]), ["0", "1", "0", "1"], 0),                     # two periods
     ("samples", dict(y=[0.0, 1.0, 2.0, 0.0]), ["0", "1", "2", "0"], 0),                     # end point repeated
     ("samples", dict(y=[0.0, 1.0, 2.0], t=[0.0, 2.0, 1.0]), ["time,value", "0,0", "2,1", "1,2"], 1),
-    ("samples", dict(y=[0.0, 1.0, 2.0], t=[0.0, 1.0, 2.0]), ["time,value", "0,0", "1,1", "2,2"], 1),
+    ("samples", dict(y=[0.0, 1.0, 2.0], t=[0.0, 1.0, 3.0]), ["time,value", "0,0", "1,1", "3,2"], 1),  # no end point, steps 1, 2
     ("fourier", dict(a=[0.0, 0.0], b=[0.0, 0.0]), ["1 0 0", "2 0 0"], 0),                  # no amplitude
     ("profile", dict(r=[0.0, 1.0, 2.0], f=[0.0, 1.0, 1.5]), ["0 0", "1 1", "2 1.5"], 0),    # concave corner
     ("profile", dict(r=[0.0, 1.0, 1.0], f=[0.0, 1.0, 2.0]), ["0 0", "1 1", "1 2"], 0),      # r not increasing

@@ -289,7 +289,7 @@ std::vector<BadFile> bad_files() {
       {"samples", "0 0\n1 1\n2 -1\n", "two columns without a time header"},
       {"samples", "0\n1\n0\n-1\n0\n", "the end point repeated"},
       {"samples", "0 1 -1 0 1 -1\n", "two periods"},
-      {"samples", "t,y\n0,0\n1,1\n2,-1\n", "time column without its end point"},
+      {"samples", "t,y\n0,0\n1,1\n3,-1\n", "time column without its end point, stamps not uniform"},
       {"samples", "1 2 three\n", "word"},
       {"samples", "\xff\xfe\x00\x01", "binary"},
   };

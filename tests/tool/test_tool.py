@@ -411,7 +411,8 @@ def bad_input_tests():
         ("samples", "end-point-one-line-spaced.txt", "1, 0, 1\n", [], ["repeats the first"]),
         ("samples", "three-periods.txt", "0\n1\n-1\n0\n1\n-1\n0\n1\n-1\n", [], ["3 identical periods"]),
         ("samples", "time-not-increasing.txt", "time,value\n0,0\n0.5,1\n0.5,-1\n1,0\n", [], ["increasing"]),
-        ("samples", "time-no-end-point.txt", "time,value\n0,0\n0.25,1\n0.5,0\n0.75,-1\n", [], ["end point"]),
+        # Without the end point the stamps must be uniform (t_j = t0 + j dt): 0, 1, 3, 4.5 are not.
+        ("samples", "time-no-end-point-not-uniform.txt", "time,value\n0,0\n1,1\n3,0\n4.5,-1\n", [], ["end point", "not uniform"]),
         ("samples", "nbsp.txt", "0\n1\xa0\n-1\n", [], ["\\xC2\\xA0"]),
         ("fourier", "fourier-two-columns-header.txt", "k,a\n1,0\n", [], ["three"]),
     ]
@@ -773,6 +774,28 @@ def format_tests():
                 raise Fail("samples layout %s gives %s, one column gives %s" % (name, v, got["column"]))
     case("samples files: every layout of one period gives the same mu (separators, CRLF, BOM, header, time column)",
          sample_layouts)
+
+    def daq_without_end_point():
+        # A DAQ writes t_j = j dt and no end point: with uniform stamps the period is N dt and the
+        # samples sit at phi = j/N, so the value is the one-column file's, digit for digit; a note
+        # on stderr says which period was used. Stamps exact (j) or printed rounded (%.9e of j/7 s).
+        y = ["0", "0.9", "0.2", "1", "-0.4", "-1", "-0.3"]
+        base = ["--beta", "1", "--gamma=-0.2", "--digits", "30"]
+        ref = ok_run(["mu", "--wave", "samples:" + write("daq-column.txt", "\n".join(y) + "\n")] + base)
+        for name, stamp, period in (("integer", lambda j: "%d" % j, "7"),
+                                    ("rounded", lambda j: "%.9e" % (j / 7.0), "1")):
+            path = write("daq-%s.csv" % name, "time [s], disp [um]\n" + "".join("%s, %s\n" % (stamp(j), v) for j, v in enumerate(y)))
+            rc, out, err = run(["mu", "--wave", "samples:" + path, "--column", "2"] + base)
+            if rc != 0 or out != ref:
+                raise Fail("DAQ file (%s stamps, no end point): exit %d, %r, expected the one-column %r; stderr %r" % (name, rc, out, ref, err))
+            if err.count("\n") != 1 or "no end point" not in err or "period is N dt = %s" % period not in err:
+                raise Fail("DAQ file (%s stamps): stderr %r, expected one note naming the period %s" % (name, err, period))
+            rc, out, err = run(["mu", "--wave", "samples:" + path, "--column", "2", "--diagnostics"] + base)
+            if "normalisation: end_point = none (uniform stamps: period N dt)" not in err or \
+                    "normalisation: time_column = time [s]" not in err:
+                raise Fail("DAQ file (%s stamps) --diagnostics: %r" % (name, err))
+    case("samples with uniform time stamps and no end point (a DAQ's file): period N dt, said on stderr",
+         daq_without_end_point)
 
     def profile_layouts():
         # A measured profile is read in the grammar of a wave file: every layout of the same three

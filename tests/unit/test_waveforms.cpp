@@ -5,6 +5,7 @@
 #include <fstream>
 #include <functional>
 #include <random>
+#include <tuple>
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/numbers.hpp"
@@ -240,9 +241,19 @@ TEST(Waveforms, SampleFileGrammar) {
   refused("g_end.txt", "0\n1\n0\n-1\n0\n", "repeats the first");
   refused("g_periods.txt", "0 1 -1 0 1 -1\n", "2 identical periods");
   refused("g_time_periods.csv", "t,y\n0,0\n1,1\n2,-1\n3,0\n4,1\n5,-1\n6,0\n", "2 identical periods");
-  refused("g_time_end.csv", "t,y\n0,0\n1,1\n2,-1\n", "end point");
+  refused("g_time_end.csv", "t,y\n0,0\n1,1\n3,-1\n", "not uniform");  // no end point, steps 1 and 2
   refused("g_ragged.txt", "0\n1\n2 3\n", "same number");
   refused("g_nul.txt", std::string("0\n1\0\n-1\n", 7), "NUL");
+  // No end point but uniform stamps (a DAQ's t_j = j dt, exact or printed rounded): the samples at
+  // phi = j/N, the period N dt.
+  for (const auto& [name, text, period] : {std::tuple<const char*, const char*, const char*>{"g_daq.csv", "t,y\n0,0\n1,1\n2,-1\n", "3"},
+                                           {"g_daq_rounded.csv", "t,y\n0,0\n3.333e-5,1\n6.667e-5,-1\n", "1.00005e-4"}}) {
+    const WaveSpec daq = parse_wave("samples:" + temp_file(name, text));
+    EXPECT_EQ(daq.samples, (std::vector<std::string>{"0", "1", "-1"})) << name;
+    EXPECT_TRUE(daq.times.empty()) << name;
+    PrecisionScope scope(60);
+    EXPECT_EQ(mpfr(daq.period_from_stamps), mpfr(period)) << name << ": " << daq.period_from_stamps;
+  }
   // Values repeating at a non-uniform time shift are not several periods.
   EXPECT_NO_THROW(parse_wave("samples:" + temp_file("g_time_ok.csv", "t,y\n0,0\n1,1\n2,-1\n3,0\n5,1\n6,-1\n7,0\n")));
 }

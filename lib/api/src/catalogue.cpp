@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -82,6 +83,40 @@ bool is_time_name(const std::string& name) {
 mpfr exact_value(const std::string& text) {
   PrecisionScope scope(60);
   return mpfr(text);
+}
+
+// The unit of the last written digit of a decimal: "2.50e-07" → 1e-9, "12" → 1, "0.5" → 0.1; 0
+// for a zero, which a DAQ's first stamp is exactly.
+mpfr last_place(const std::string& text) {
+  PrecisionScope scope(60);
+  if (exact_value(text) == 0) return mpfr(0);
+  const auto e = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, e);
+  const long exponent = e == std::string::npos ? 0 : std::stol(text.substr(e + 1));
+  const auto dot = mantissa.find('.');
+  const long fraction = dot == std::string::npos ? 0 : static_cast<long>(mantissa.size() - dot - 1);
+  return pow(mpfr(10), exponent - fraction);
+}
+
+// dt if the stamps t_0 … t_{N−1} are t_0 + j·dt, dt = (t_{N−1} − t_0)/(N − 1), else none. Each
+// stamp is that to a millionth of dt (exact decimals as 0, 0.1, 0.2; j·dt computed in binary
+// floating point, as numpy's, is within 1e-15 of it), or a DAQ's t_j printed rounded: within
+// u_j/2 of the true stamp (u_j its last written place), and the true step within
+// (u_0 + u_{N−1})/(2(N − 1)) of dt, so t_j − t_0 − j·dt is at most (u_j + 2u_0 + u_{N−1})/2;
+// and the printed digits resolve the step (u_j ≤ dt/10), else 0, 1, 3 would pass as 0, 1.5, 3
+// rounded.
+std::optional<mpfr> uniform_step(const std::vector<std::string>& t) {
+  PrecisionScope scope(60);
+  const std::size_t n = t.size();
+  const mpfr t0 = exact_value(t.front()), u0 = last_place(t.front()), un = last_place(t.back());
+  const mpfr dt = (exact_value(t.back()) - t0) / (n - 1);
+  for (std::size_t j = 1; j + 1 < n; ++j) {
+    const mpfr deviation = abs(mpfr(exact_value(t[j]) - t0 - dt * j));
+    if (deviation <= dt * mpfr("1e-6")) continue;
+    const mpfr uj = last_place(t[j]);
+    if (std::max({uj, u0, un}) > dt / 10 || deviation > (uj + 2 * u0 + un) / 2) return std::nullopt;
+  }
+  return dt;
 }
 
 // The smallest p dividing n with y_j = y_{j+p} for every j (n if none), and with a time column
@@ -438,12 +473,18 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
       if (exact_value(s.times[j]) - exact_value(s.times[j - 1]) < period * mpfr("1e-12"))
         throw InputError(source.name + ": time stamps " + quoted(visible(s.times[j - 1])) + " and " + quoted(visible(s.times[j])) +
                          " are closer than 1e-12 of the period: expected distinct phases");
-    if (exact_value(s.samples.back()) != exact_value(s.samples.front()))
+    if (exact_value(s.samples.back()) == exact_value(s.samples.front())) {
+      s.samples.pop_back();  // the end point: its time stays, as the period's end
+    } else if (const auto dt = uniform_step(s.times)) {
+      // No end point, the stamps of a DAQ (t_j = t_0 + j·dt): the samples at φ = j/N, period N·dt.
+      s.period_from_stamps = format_significant(mpfr(*dt * s.samples.size()), 40);
+      s.times.clear();
+    } else {
       throw InputError(source.name + ": the last value " + quoted(visible(s.samples.back())) + " differs from the first " +
                        quoted(visible(s.samples.front())) +
-                       ": with a time column the file holds one period and its end point; append the line at time t0 + "
-                       "period with the first value");
-    s.samples.pop_back();  // the end point: its time stays, as the period's end
+                       " and the time stamps are not uniform, so the period is unknown: append the line at time t0 + "
+                       "period with the first value (the end point), or give uniform stamps t_j = t0 + j dt (period N dt)");
+    }
   }
   const std::size_t period = smallest_period(s.samples, s.times);
   if (period == 1)
@@ -532,7 +573,9 @@ std::vector<std::pair<std::string, std::string>> describe_normalisation(const Wa
       wave.name, wave.samples.size(), [&](std::size_t j) { return detail::sample_value(wave, j); },
       detail::distinct_digits(wave), detail::sample_phase(wave), static_cast<int>(guarded));
   std::string period = "1 (uniform phases)";
-  if (!wave.times.empty()) {
+  if (!wave.period_from_stamps.empty()) {
+    period = text(mpfr(wave.period_from_stamps));
+  } else if (!wave.times.empty()) {
     // t_N − t_0 with the digits both stamps share cancelled: estimated at 60 digits first.
     int cancelled = 0;
     {
@@ -552,8 +595,10 @@ std::vector<std::pair<std::string, std::string>> describe_normalisation(const Wa
   const mpfr accuracy = pow(mpfr(10), -(static_cast<int>(nz.digits) - log_n - 2)) * std::max(abs(nz.lo), abs(nz.hi));
   const mpfr mean = abs(nz.mean) <= accuracy ? mpfr(0) : nz.mean;
   return {{"samples", std::to_string(wave.samples.size())},
-          {"end_point", wave.times.empty() ? "none" : "dropped"},
-          {"time_column", wave.times.empty() ? "none" : wave.time_column.empty() ? "unnamed" : wave.time_column},
+          {"end_point", !wave.period_from_stamps.empty() ? "none (uniform stamps: period N dt)" : wave.times.empty() ? "none" : "dropped"},
+          {"time_column", wave.times.empty() && wave.period_from_stamps.empty() ? "none"
+                          : wave.time_column.empty()                          ? "unnamed"
+                                                                              : wave.time_column},
           {"period", period},
           {"column", column},
           {"raw_mean", text(mean)},

@@ -36,6 +36,10 @@ struct WaveSpec {
   // b) from a file named "a#b". value_column/time_column: the header's names ("" without a header
   // or time column), for describe_normalisation.
   std::string column, value_column, time_column;
+  // samples with a time column but no end point, as a DAQ writes t_j = t_0 + j·dt (README, "File
+  // formats"): every stamp is that to its printed digits, so the N samples sit at φ = j/N (times
+  // is then empty) and this is the period N·dt as a decimal (40 digits). Empty otherwise.
+  std::string period_from_stamps;
 };
 
 // How to read a samples:FILE (README, "File formats"). column: the value column, a header name
