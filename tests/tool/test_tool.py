@@ -1476,6 +1476,16 @@ def cli_tests():
                 b = [F(r[rows[0].index("beta")]) for r in rows[1:]]
                 if abs(b[1] / b[0] - 2) > Fraction(1, 10 ** 18) or abs(b[2] / b[0] - 3) > Fraction(1, 10 ** 18):
                     raise Fail("physical --v0 sweep: beta not proportional to v0: %r" % b)
+        # A --v0 sweep at a given load solves gamma once (it depends on neither v0 nor beta): every
+        # row is still the single point's output, on the flat punch and on a sphere.
+        for shape in ({}, {"--radius": None, "--shape": "sphere", "--R": "0.003"}):
+            args = replace_flag(physical_args(**dict({"--digits": "20", "--v0": "1e-4:3e-4:3"}, **shape)),
+                                "--u-mean", "--F-N", "10")
+            rows = list(csvmod.reader(io.StringIO(ok_run(args))))
+            for r in rows[1:]:
+                pc = list(csvmod.reader(io.StringIO(ok_run(replace_flag(args, "--v0", "--v0", r[0]) + ["--format", "csv"]))))
+                if pc[1] != r[1:]:
+                    raise Fail("physical --v0 sweep at --F-N 10 %r: row %r differs from the single point %r" % (shape, r, pc))
         js = json.loads(ok_run(physical_args(**{"--A": "1e-6:2e-6:2", "--format": "json"})))
         if [d["A"] for d in js] != ["1e-06", "2e-06"]:
             raise Fail("physical --A sweep as json: %r" % js)

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <string>
 
 #include "vibrofric/api/detail/evaluate_impl.hpp"
 #include "vibrofric/api/profile_spec.hpp"
@@ -22,6 +24,19 @@ std::vector<std::pair<const char*, InputText*>> PhysicalRequest::inputs() {
           {"shape", &shape},   {"radius", &radius},  {"R", &R},     {"half_angle", &half_angle},
           {"flat_radius", &flat_radius}};
 }
+
+namespace {
+// Everything that defines a wave, for a key: its name and, for a user wave, its numbers as read.
+std::string wave_fingerprint(const WaveSpec& w) {
+  std::string out = std::to_string(static_cast<int>(w.kind)) + " " + w.name + " " + w.exponent + " " + w.column + " " +
+                    w.period_from_stamps;
+  for (const auto& h : w.harmonics) out += "\n" + std::to_string(h.k) + " " + h.a + " " + h.b;
+  for (const auto& y : w.samples) out += "\n" + y;
+  out += "\nt";
+  for (const auto& t : w.times) out += "\n" + t;
+  return out;
+}
+}  // namespace
 
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
                                const BatchOptions& base) {
@@ -107,13 +122,13 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
                       " gives no contact for wave " +
                       wave.name + ": expected u_mean > -A max w = " + format_significant(mpfr(-A * w->maximum()), 6) +
                       " m (gamma = u_mean/A > " + format_significant(mpfr(-w->maximum()), 6) + ")");
-  auto load = [&](const mpfr& gam, mpfr* edge_out) {
+  auto load = [&](const mpfr& gam, const mpfr& beta, mpfr* edge_out) {
     if (!(gam + w->maximum() > 0)) return mpfr(0);  // no contact, no load
     mpfr normal;
     if (kind == "flat") {
-      normal = solve(*w, g.beta, gam, options.solver).normal_area;
+      normal = solve(*w, beta, gam, options.solver).normal_area;
     } else {
-      const auto r = solve_curved(*w, *p, g.beta, gam, options.solver, mpfr(pow(mpfr(10), -digits - 5)));
+      const auto r = solve_curved(*w, *p, beta, gam, options.solver, mpfr(pow(mpfr(10), -digits - 5)));
       normal = r.normal_integral;
       if (edge_out) *edge_out = r.contact_radius;
     }
@@ -121,19 +136,49 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   };
   if (by_load) {
     const mpfr F_N = positive(r.F_N);
-    // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
-    mpfr lo = -w->maximum(), hi = lo + 1;
-    for (int k = 0; load(hi, nullptr) < F_N; ++k) {
-      if (k == 200) throw InputError(r.F_N.name + " = " + *r.F_N.text + ": expected a load the contact can carry");
-      lo = hi;
-      hi = lo + pow(mpfr(2), k + 1);
+    // ⟨F_N⟩ = 2 E* A L ∫N dx does not depend on β (N_w does not), so γ depends on neither v0 nor
+    // f nor mu0: the load is computed at β_c(γ') of the central spring, where nothing sticks
+    // (Eq. 6) and only ∫N is integrated, and a sweep of those inputs solves γ once (per thread).
+    // With an upward jump of n (β_c = ∞) the row's β is used, and γ is solved for every row.
+    bool free_of_beta = true;
+    auto beta_free_load = [&](const mpfr& gam) {
+      if (!(gam + w->maximum() > 0)) return mpfr(0);
+      const mpfr bc = make_contact(*w, gam, options.solver).beta_c();
+      using std::isfinite;
+      if (isfinite(bc) && bc > 0) return load(gam, bc, nullptr);
+      free_of_beta = false;
+      return load(gam, g.beta, nullptr);
+    };
+    std::string key = std::to_string(static_cast<int>(prec.type)) + " " + std::to_string(digits) + " " +
+                      std::to_string(static_cast<int>(options.solver.area)) + " " +
+                      std::to_string(options.solver.max_root_iterations) + " " +
+                      std::to_string(options.solver.max_quadrature_levels) + " " +
+                      std::to_string(options.solver.quadrature_tolerance) + "\n" + wave_fingerprint(wave);
+    for (const Input* in : {&r.E1, &r.nu1, &r.E2, &r.nu2, &r.G1, &r.G2, &r.A, &r.F_N, &r.shape, &r.radius, &r.R,
+                            &r.half_angle, &r.flat_radius})
+      key += "\n" + (in->given() ? *in->text : std::string("-"));
+    static thread_local std::map<std::string, mpfr> solved;  // γ of the load, by every input it depends on
+    if (const auto it = solved.find(key); it != solved.end()) {
+      g.gamma = it->second;
+    } else {
+      // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
+      mpfr lo = -w->maximum(), hi = lo + 1;
+      for (int k = 0; beta_free_load(hi) < F_N; ++k) {
+        if (k == 200) throw InputError(r.F_N.name + " = " + *r.F_N.text + ": expected a load the contact can carry");
+        lo = hi;
+        hi = lo + pow(mpfr(2), k + 1);
+      }
+      std::uintmax_t iterations = 400;
+      const auto bracket = boost::math::tools::toms748_solve(
+          [&](const mpfr& gam) { return mpfr(beta_free_load(gam) - F_N); }, lo, hi,
+          boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
+      if (iterations >= 400) throw SolverError(r.F_N.name + " = " + *r.F_N.text + ": the mean indentation did not converge");
+      g.gamma = (bracket.first + bracket.second) / 2;
+      if (free_of_beta) {
+        if (solved.size() >= 64) solved.clear();
+        solved.emplace(key, g.gamma);
+      }
     }
-    std::uintmax_t iterations = 400;
-    const auto bracket = boost::math::tools::toms748_solve(
-        [&](const mpfr& gam) { return mpfr(load(gam, nullptr) - F_N); }, lo, hi,
-        boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
-    if (iterations >= 400) throw SolverError(r.F_N.name + " = " + *r.F_N.text + ": the mean indentation did not converge");
-    g.gamma = (bracket.first + bracket.second) / 2;
   }
   // β and γ go to evaluate as values; the texts only name the point in its messages.
   Point point;
@@ -149,7 +194,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(ratio.value, digits) : ratio.text;
   const mpfr mu = ratio.value * in.mu0;
   mpfr edge;
-  const mpfr force = load(g.gamma, &edge);
+  const mpfr force = load(g.gamma, g.beta, &edge);
   // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,
   // the fractions of the period in contact and in stick.
   mpfr beta_c, contact_fraction, stick_fraction;
