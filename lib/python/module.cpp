@@ -48,6 +48,35 @@ struct PyProfile {
 
 std::string py_repr(const py::handle& x) { return py::repr(x).cast<std::string>(); }
 
+// Pickle states (Wave and Profile cross to other processes: multiprocessing, concurrent.futures,
+// Dask): every field as written, so a wave read from a file needs no file where it is unpickled,
+// and the wave unpickled is the same wave, value for value. The first item is the state's version.
+py::list text_list(const std::vector<std::string>& v) {
+  py::list out;
+  for (const auto& x : v) out.append(x);
+  return out;
+}
+std::vector<std::string> texts_of(const py::handle& l) { return l.cast<std::vector<std::string>>(); }
+py::list harmonic_list(const std::vector<WaveSpec::Harmonic>& hs) {
+  py::list out;
+  for (const auto& h : hs) out.append(py::make_tuple(h.k, h.a, h.b));
+  return out;
+}
+std::vector<WaveSpec::Harmonic> harmonics_of(const py::handle& l) {
+  std::vector<WaveSpec::Harmonic> out;
+  for (const auto& h : l.cast<py::list>()) {
+    const auto t = h.cast<py::tuple>();
+    out.push_back({t[0].cast<unsigned>(), t[1].cast<std::string>(), t[2].cast<std::string>()});
+  }
+  return out;
+}
+constexpr int pickle_version = 1;
+void check_state(const py::tuple& t, std::size_t size, const char* what) {
+  if (t.size() != size || t[0].cast<int>() != pickle_version)
+    throw InputError(std::string("unpickling a ") + what + ": a state of " + std::to_string(t.size()) +
+                     " items, expected version " + std::to_string(pickle_version) + " with " + std::to_string(size));
+}
+
 WaveSpec to_wave(const py::object& w) {
   if (py::isinstance<py::str>(w)) return parse_wave(w.cast<std::string>());
   if (py::isinstance<PyWave>(w)) return w.cast<const PyWave&>().spec;
@@ -761,10 +790,67 @@ samples, end_point, time_column, period, column, raw_mean, raw_min, raw_max, sca
 peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. Numbers as float
 (17 digits), or to `digits` significant digits as mpmath.mpf / strings; descriptions as str.
 )doc")
-      .def("__repr__", wave_repr);
+      .def("__repr__", wave_repr)
+      .def(py::pickle(
+          [](const PyWave& w) {
+            const WaveSpec& s = w.spec;
+            py::object fit = py::none();
+            if (w.fit)
+              fit = py::make_tuple(harmonic_list(w.fit->harmonics), w.fit->method, w.fit->rms_residual, w.fit->max_residual,
+                                   w.fit->samples);
+            return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.exponent, harmonic_list(s.harmonics),
+                                  text_list(s.samples), text_list(s.times), s.column, s.value_column, s.time_column,
+                                  s.period_from_stamps, fit, w.fitted);
+          },
+          [](const py::tuple& t) {
+            check_state(t, 13, "Wave");
+            PyWave w;
+            WaveSpec& s = w.spec;
+            s.kind = static_cast<WaveKind>(t[1].cast<int>());
+            s.name = t[2].cast<std::string>();
+            s.exponent = t[3].cast<std::string>();
+            s.harmonics = harmonics_of(t[4]);
+            s.samples = texts_of(t[5]);
+            s.times = texts_of(t[6]);
+            s.column = t[7].cast<std::string>();
+            s.value_column = t[8].cast<std::string>();
+            s.time_column = t[9].cast<std::string>();
+            s.period_from_stamps = t[10].cast<std::string>();
+            if (!t[11].is_none()) {
+              const auto f = t[11].cast<py::tuple>();
+              auto fit = std::make_shared<FourierFit>();
+              fit->harmonics = harmonics_of(f[0]);
+              fit->method = f[1].cast<std::string>();
+              fit->rms_residual = f[2].cast<std::string>();
+              fit->max_residual = f[3].cast<std::string>();
+              fit->samples = f[4].cast<std::size_t>();
+              w.fit = std::move(fit);
+            }
+            w.fitted = t[12].cast<std::string>();
+            return w;
+          }));
   py::class_<PyProfile>(m, "Profile", "A measured axisymmetric indenter profile built by vibrofric.profile.")
       .def_property_readonly("name", [](const PyProfile& p) { return p.spec.name; })
       .def("__len__", [](const PyProfile& p) { return p.spec.r.size(); })
+      .def(py::pickle(
+          [](const PyProfile& p) {
+            const ProfileSpec& s = p.spec;
+            // A computed parameter (physical's wear-flat lambda) never reaches a Profile object.
+            if (s.parameter_value) throw InputError("profile " + s.name + ": a computed parameter cannot be pickled");
+            return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.parameter, text_list(s.r),
+                                  text_list(s.f), s.height_unit);
+          },
+          [](const py::tuple& t) {
+            check_state(t, 7, "Profile");
+            PyProfile p;
+            p.spec.kind = static_cast<ProfileKind>(t[1].cast<int>());
+            p.spec.name = t[2].cast<std::string>();
+            p.spec.parameter = t[3].cast<std::string>();
+            p.spec.r = texts_of(t[4]);
+            p.spec.f = texts_of(t[5]);
+            p.spec.height_unit = t[6].cast<std::string>();
+            return p;
+          }))
       .def("__repr__", [](const PyProfile& p) {
         return "<vibrofric.Profile measured: " + std::to_string(p.spec.r.size()) + " samples>";
       });
@@ -782,7 +868,8 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
 A sampled periodic signal, linear between the samples, normalised to zero mean and
 max w - min w = 2 (model.md, "Waveform catalogue"). Without t: y_0 ... y_{N-1} at phi = j/N, one
 period without its end point (N >= 2). With t: time stamps t_0 ... t_N, strictly increasing, and
-y_N = y_0 (one period with its end point; t_N - t_0 is the period). Exactly as the same numbers in a
+y_N = y_0 (one period with its end point; t_N - t_0 is the period); or, as a DAQ records, no end
+point and uniform stamps t_j = t_0 + j dt (then phi = j/N and the period is N dt). Exactly as the same numbers in a
 samples:FILE (floats by their shortest decimal text; strings exact); ValueError for what such a
 file would be refused for (NaN, ragged t and y, a constant signal, repeated periods).
 )doc");

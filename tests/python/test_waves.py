@@ -144,3 +144,41 @@ def test_array_refusals_are_the_file_refusals(tmp_path, kind, arrays, lines, hea
         else:
             vibrofric.mu(kind + ":" + path, 1.0, 0.5)
     assert str(by_array.value) == file_message_as_array(str(by_file.value), path, kind, header_lines)
+
+
+def test_waves_and_profiles_pickle(tmp_path):
+    # Wave and Profile cross to other processes (multiprocessing, concurrent.futures, Dask): the
+    # unpickled object is the same wave, value for value, without the file it was read from.
+    import concurrent.futures
+    import os
+    import pickle
+    rng = np.random.default_rng(3)
+    y = rng.normal(size=30)
+    path = tmp_path / "rig.csv"
+    write(path, ["time,disp"] + ["%r,%r" % (j / 48000.0, float(v)) for j, v in enumerate(y)])
+    waves = [vibrofric.wave("sine"), vibrofric.wave("power:3"), vibrofric.samples(y),
+             vibrofric.samples(y, t=np.arange(30) / 48000.0), vibrofric.wave("samples:%s" % path, column="disp"),
+             vibrofric.fourier([0.3, 0.0], [1.0, 0.2], a0=2.5), vibrofric.fit(y, 3)]
+    copies = [pickle.loads(pickle.dumps(w)) for w in waves]
+    os.remove(path)
+    for w, c in zip(waves, copies):
+        assert type(c) is vibrofric.Wave and c.name == w.name and repr(c) == repr(w)
+        assert c.normalisation(digits=30, strings=True) == w.normalisation(digits=30, strings=True)
+        same_strings(c, w)
+    assert copies[-1].fourier_text() == waves[-1].fourier_text() and copies[-1].method == waves[-1].method
+    prof = vibrofric.profile([0, 1, 2, 3], [0, 0.25, 1.0, 2.25])
+    pc = pickle.loads(pickle.dumps(prof))
+    assert len(pc) == 4 and pc.name == prof.name
+    a = vibrofric.mu("sine", BETAS, 0.3, profile=prof, strings=True)
+    assert list(vibrofric.mu("sine", BETAS, 0.3, profile=pc, strings=True)) == list(a)
+    # Shipped to worker processes, as a pool or Dask does (spawned: no fork of a threaded process).
+    import multiprocessing
+    with concurrent.futures.ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("spawn")) as pool:
+        got = list(pool.map(_mu_strings, waves[2:4]))
+    assert got == [list(vibrofric.mu(w, BETAS, 0.3, strings=True)) for w in waves[2:4]]
+    with pytest.raises(ValueError, match="unpickling a Wave"):
+        vibrofric.Wave.__new__(vibrofric.Wave).__setstate__((99,))
+
+
+def _mu_strings(wave):
+    return list(vibrofric.mu(wave, BETAS, 0.3, strings=True))
