@@ -7,9 +7,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -649,7 +651,7 @@ std::string wave_repr(const PyWave& w) {
   return "<vibrofric.Wave " + s.name + ">";
 }
 
-constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False) -> dict
+constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
 
 The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
 (mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given
@@ -668,6 +670,12 @@ beta), contact_fraction and stick_fraction (flat). Values as float (type None/'d
 nearest double of the tool's --type double text), numpy.longdouble, or for digits=D mpmath.mpf /
 decimal strings equal to `vibrofric physical --digits D --format json`; strings=True gives the
 tool's strings for every type. ValueError with the library's message (naming the input by its keyword).
+
+Any numeric input may be an array: the inputs broadcast (numpy's rules) and every output but shape
+is an array of the broadcast shape (float64, longdouble, or object arrays of mpf / strings), each
+element the scalar call's value. An element that fails raises its error prefixed with its index
+('at index (2,): ...'), or with nan_on_error=True (scipy's convention) is NaN (None in object
+arrays) while the others answer.
 )doc";
 
 constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False) -> (phi, n, s)
@@ -932,31 +940,86 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
          const py::object& u_mean, const py::object& F_N, const py::object& G1, const py::object& G2,
          const py::object& shape, const py::object& radius, const py::object& R, const py::object& half_angle,
          const py::object& flat_radius, const py::object& digits, const py::object& type,
-         const py::object& max_iterations, bool escalate, bool strings) {
+         const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
         const WaveSpec w = to_wave(wave);
         const Precision precision = to_precision(optional_int(digits, "digits"), type);
         const BatchOptions options = solver_controls(max_iterations, escalate);
         if (!py::isinstance<py::str>(shape))
           throw py::type_error("shape = " + py_repr(shape) + ": expected 'flat', 'sphere', 'cone', 'wearflat' or 'profile:FILE'");
         // The keywords are the request's member names, which its messages use.
-        PhysicalRequest request;
-        request.shape.text = shape.cast<std::string>();
         const std::map<std::string, const py::object*> given{
             {"E1", &E1},   {"nu1", &nu1},       {"E2", &E2},   {"nu2", &nu2},   {"G1", &G1},
             {"G2", &G2},   {"v0", &v0},         {"f", &f},     {"A", &A},       {"u_mean", &u_mean},
             {"F_N", &F_N}, {"mu0", &mu0},       {"radius", &radius}, {"R", &R}, {"half_angle", &half_angle},
             {"flat_radius", &flat_radius}};
-        for (auto& [member, input] : request.inputs()) {
-          const auto it = given.find(member);
-          if (it != given.end() && !it->second->is_none()) input->text = scalar_text(*it->second, member);
+        auto request_of = [&](const std::map<std::string, py::object>& values) {
+          PhysicalRequest request;
+          request.shape.text = shape.cast<std::string>();
+          for (auto& [member, input] : request.inputs()) {
+            const auto it = values.find(member);
+            if (it != values.end()) input->text = scalar_text(it->second, member);
+          }
+          return request;
+        };
+        const py::module_ np = py::module_::import("numpy");
+        std::vector<std::string> names;
+        py::list arrays;
+        bool broadcast = false;
+        for (const auto& [name, value] : given)
+          if (!value->is_none()) {
+            names.push_back(name);
+            arrays.append(*value);
+            broadcast = broadcast || (!py::isinstance<py::str>(*value) && np.attr("ndim")(*value).cast<int>() > 0);
+          }
+        if (!broadcast) {
+          std::map<std::string, py::object> values;
+          for (std::size_t k = 0; k < names.size(); ++k) values[names[k]] = arrays[k];
+          return py::object(physical_dict(w, request_of(values), precision, options, strings));
         }
-        return physical_dict(w, request, precision, options, strings);
+        // Arrays broadcast against each other (numpy's rules) and the scalars: every output an
+        // array of the broadcast shape (shape stays one string). A failing element is NaN (None
+        // for strings) with nan_on_error, else its error names its index.
+        const py::list parts = np.attr("broadcast_arrays")(*arrays);
+        const py::tuple dims = parts[0].attr("shape");
+        const std::size_t count = parts[0].attr("size").cast<std::size_t>();
+        std::vector<std::optional<py::dict>> rows(count);
+        for (std::size_t i = 0; i < count; ++i) {
+          std::map<std::string, py::object> values;
+          for (std::size_t k = 0; k < names.size(); ++k) values[names[k]] = parts[k].attr("flat")[py::int_(i)].attr("item")();
+          const auto where = [&] { return "at index " + py::str(np.attr("unravel_index")(i, dims)).cast<std::string>() + ": "; };
+          try {
+            rows[i] = physical_dict(w, request_of(values), precision, options, strings);
+          } catch (const InputError& e) {
+            if (!nan_on_error) throw InputError(where() + e.what());
+          } catch (const SolverError& e) {
+            if (!nan_on_error) throw SolverError(where() + e.what());
+          }
+        }
+        const auto first = std::find_if(rows.begin(), rows.end(), [](const auto& r) { return r.has_value(); });
+        if (first == rows.end())
+          throw InputError("physical: every element failed (nan_on_error = True): expected at least one to answer");
+        py::dict out;
+        const bool objects = strings || result_form(precision, strings) == Form::mpf;
+        for (const auto& item : **first) {
+          const py::str name = py::reinterpret_borrow<py::str>(item.first);
+          if (name.cast<std::string>() == "shape") {
+            out[name] = item.second;
+            continue;
+          }
+          py::list column;
+          for (const auto& r : rows)
+            column.append(r ? py::object((*r)[name])
+                            : objects ? py::object(py::none()) : py::object(py::float_(std::numeric_limits<double>::quiet_NaN())));
+          const char* dtype = objects ? "object" : precision.type == NumberType::float80 ? "longdouble" : "float64";
+          out[name] = np.attr("array")(column, "dtype"_a = dtype).attr("reshape")(dims);
+        }
+        return py::object(out);
       },
       "wave"_a, py::kw_only(), "E1"_a, "nu1"_a, "E2"_a, "nu2"_a, "v0"_a, "f"_a, "A"_a, "mu0"_a,
       "u_mean"_a = py::none(), "F_N"_a = py::none(), "G1"_a = py::none(), "G2"_a = py::none(), "shape"_a = "flat",
       "radius"_a = py::none(), "R"_a = py::none(), "half_angle"_a = py::none(), "flat_radius"_a = py::none(),
       "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
-      "strings"_a = false, physical_doc);
+      "strings"_a = false, "nan_on_error"_a = false, physical_doc);
 
   m.def(
       "trace",

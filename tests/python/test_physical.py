@@ -200,3 +200,41 @@ def test_wearflat_forces_and_contact_radius_against_mdr(b):
         for k, v in want.items():
             assert abs(floats[k] - v) <= 1e-14 * v, (k, floats[k], v)  # measured: 1e-16
             assert abs(mpmath.mpf(fine[k]) - v) <= mpmath.mpf("1e-28") * v, (k, fine[k], v)  # measured: 1e-30
+
+
+def test_arrays_broadcast_like_mu():
+    # Every element of a broadcast call is the scalar call's value (the same function per element),
+    # in every form; shape stays one string.
+    import numpy as np
+    v0 = np.array([1e-5, 5e-5, 2e-4])
+    A = np.array([[1e-6], [2e-6]])
+    for kw in (dict(), dict(digits=25, strings=True), dict(type="long-double")):
+        got = vibrofric.physical("sine", **dict(CASES["flat"], v0=v0, A=A), **kw)
+        assert got["shape"] == "flat"
+        for name, arr in got.items():
+            if name == "shape":
+                continue
+            assert arr.shape == (2, 3), name
+            for i in range(2):
+                for j in range(3):
+                    one = vibrofric.physical("sine", **dict(CASES["flat"], v0=v0[j], A=A[i, 0]), **kw)
+                    assert arr[i, j] == one[name], (name, i, j, kw)
+    # A list broadcasts like an array; a sweep of v0 at a given load (gamma solved once) on a sphere.
+    got = vibrofric.physical("sine", **dict(CASES["sphere_load"], v0=[1e-5, 1e-4]))
+    for j, v in enumerate([1e-5, 1e-4]):
+        assert got["mu"][j] == vibrofric.physical("sine", **dict(CASES["sphere_load"], v0=v))["mu"]
+
+
+def test_arrays_name_the_failing_index_or_give_nan():
+    import numpy as np
+    u = np.array([0.3e-6, -2e-6, 0.1e-6])  # u_mean = -2 um < -A max w: no contact at index 1
+    with pytest.raises(ValueError, match=r"at index \(1,\): .*u_mean"):
+        vibrofric.physical("sine", **dict(BASE, radius=1e-3, u_mean=u))
+    got = vibrofric.physical("sine", **dict(BASE, radius=1e-3, u_mean=u), nan_on_error=True)
+    assert np.isnan(got["mu"][1]) and np.isnan(got["gamma"][1])
+    for j in (0, 2):
+        assert got["mu"][j] == vibrofric.physical("sine", **dict(BASE, radius=1e-3, u_mean=u[j]))["mu"]
+    s = vibrofric.physical("sine", **dict(BASE, radius=1e-3, u_mean=u), nan_on_error=True, strings=True)
+    assert s["mu"][1] is None and isinstance(s["mu"][0], str)
+    with pytest.raises(ValueError, match="every element failed"):
+        vibrofric.physical("sine", **dict(BASE, radius=1e-3, u_mean=[-2e-6, -3e-6]), nan_on_error=True)
