@@ -560,10 +560,14 @@ bool is_decimal(const std::string& s) {
 py::dict physical_dict(const WaveSpec& wave, const PhysicalRequest& request, const Precision& precision,
                        const BatchOptions& options, bool strings) {
   PhysicalOutputs record;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release release;
-    record = physical_point(wave, request, precision, options);
+    record = physical_point(wave, request, precision, options, &warnings);
   }
+  // Implausible inputs (a modulus in GPa read as Pa, ...): a UserWarning each, the values still computed.
+  for (const auto& w : warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();  // warnings as errors
   const Converter convert(result_form(precision, strings), precision);
   py::dict d;
   for (const auto& [name, value] : record)

@@ -20,6 +20,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -726,7 +727,13 @@ PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, std:
     input->name = "--" + flag;
     if (const auto it = texts.find(flag); it != texts.end()) input->text = it->second;
   }
-  return physical_point(wave, request, precision_of(f), batch_options(f));
+  std::vector<std::string> warnings;
+  PhysicalOutputs out = physical_point(wave, request, precision_of(f), batch_options(f), &warnings);
+  // Each warning once (a sweep repeats them), on stderr after the output, as the diagnostics.
+  static std::set<std::string> said;
+  for (const auto& w : warnings)
+    if (said.insert(w).second) pending_diagnostics += "vibrofric: warning: " + w + "\n";
+  return out;
 }
 
 // Names and values of output records, for CSV and JSON.

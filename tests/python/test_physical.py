@@ -238,3 +238,14 @@ def test_arrays_name_the_failing_index_or_give_nan():
     assert s["mu"][1] is None and isinstance(s["mu"][0], str)
     with pytest.raises(ValueError, match="every element failed"):
         vibrofric.physical("sine", **dict(BASE, radius=1e-3, u_mean=[-2e-6, -3e-6]), nan_on_error=True)
+
+
+def test_implausible_inputs_warn():
+    # GPa written as Pa: a UserWarning naming the keyword, the value still the model's.
+    with pytest.warns(UserWarning, match="E1 = 210 is outside"):
+        got = vibrofric.physical("sine", **dict(CASES["flat"], E1=210))
+    assert got["mu"] > 0
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        vibrofric.physical("sine", **CASES["flat"])  # plausible: no warning

@@ -1491,6 +1491,26 @@ def cli_tests():
             raise Fail("physical --A sweep as json: %r" % js)
     case("physical: one input swept (--v0, --F-N, --A), each row the single-point output", physical_sweep)
 
+    def physical_plausibility():
+        # Inputs outside any physical range, and a contact radius not small against R, are computed
+        # as the model defines them, with one warning each on stderr after the output (a sweep
+        # says each once); plausible inputs (every other physical test) give none.
+        sphere = {"--radius": None, "--shape": "sphere", "--R": "0.003"}
+        for change, words in (({"--E1": "210"}, ["--E1 = 210", "1e5 to 1.2e12 Pa"]),
+                              ({"--A": "2", "--u-mean": "1"}, ["--A = 2", "1e-10 to 1e-3"]),
+                              ({"--mu0": "30"}, ["--mu0 = 30", "above 2"]),
+                              (dict(sphere, **{"--R": "1e-6"}), ["contact radius", "--R = 1e-6", "parabola"])):
+            args = physical_args(**change)
+            rc, out, err = run(args)
+            if rc != 0 or "mu = " not in out or err.count("\n") != 1 or not err.startswith("vibrofric: warning: ") or \
+                    not all(w in err for w in words):
+                raise Fail("%s: exit %d, stderr %r: expected the output and one warning naming %r" % (cmd(args), rc, err, words))
+        rc, out, err = run(physical_args(**{"--E1": "210", "--v0": "1e-4:3e-4:3"}))
+        if rc != 0 or err.count("warning") != 1:
+            raise Fail("physical sweep with --E1 210: exit %d, stderr %r: expected one warning" % (rc, err))
+    case("physical: implausible inputs warn on stderr (GPa as Pa, um as m, mu0 > 2, a not small against R)",
+         physical_plausibility)
+
     def fit_sine():
         # 64 uniform samples of 3 + 2 sin(2 pi phi) - 0.5 cos(4 pi phi): the DFT gives these coefficients
         # to rounding (bound: 64 terms of size <= 3, 1e-14); a fit of the pure sine's samples is the sine

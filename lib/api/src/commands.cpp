@@ -39,7 +39,7 @@ std::string wave_fingerprint(const WaveSpec& w) {
 }  // namespace
 
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
-                               const BatchOptions& base) {
+                               const BatchOptions& base, std::vector<std::string>* warnings) {
   using Input = InputText;
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
@@ -207,6 +207,27 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
     for (const auto& st : r.stick_phases) stick_fraction += st.end - st.begin;
   } else {
     beta_c = make_contact(*w, g.gamma, options.solver).beta_c();
+  }
+  if (warnings) {
+    // Plausible ranges, wide enough for every engineering solid and rig: moduli from soft rubber
+    // (1e5 Pa) to diamond (1.2e12 Pa); an amplitude from 0.1 nm to 1 mm; mu0 up to 2.
+    const auto outside = [&](const Input& in, const mpfr& v, const char* lo, const char* hi, const std::string& what) {
+      if (in.given() && (v < mpfr(lo) || v > mpfr(hi)))
+        warnings->push_back(in.name + " = " + *in.text + " is outside " + lo + " to " + hi + " " + what);
+    };
+    outside(r.E1, in.E1, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
+    outside(r.E2, in.E2, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
+    outside(r.A, A, "1e-10", "1e-3", "m, the amplitudes of a vibrated contact (um written as m?)");
+    if (in.mu0 > 2) warnings->push_back(r.mu0.name + " = " + *r.mu0.text + " is above 2, no coefficient of friction of solids");
+    // Hertz and the MDR take the sphere as the parabola r²/2R: at a = 0.3 R its height is 2.3 % off.
+    const Input* radius_of_curvature = kind == "sphere" || kind == "wearflat" ? &r.R : nullptr;
+    if (radius_of_curvature) {
+      const mpfr a = length * edge, ratio = a / get(*radius_of_curvature);
+      if (ratio > mpfr("0.3"))
+        warnings->push_back("the contact radius " + format_significant(a, 3) + " m is " + format_significant(ratio, 2) + " of " +
+                            radius_of_curvature->name + " = " + *radius_of_curvature->text +
+                            ": Hertz and the MDR take the sphere as a parabola, which needs it small against R");
+    }
   }
   PhysicalOutputs rec;
   auto field = [&](const char* name, const std::string& v) { rec.emplace_back(name, v); };

@@ -43,9 +43,12 @@ struct PhysicalRequest {
 };
 
 // `physical` at one point (Eqs. 1, 5, 14; MDR for the curved shapes). `options` gives the solver
-// controls and escalation (its profile is set from the shape).
+// controls and escalation (its profile is set from the shape). Where `warnings` is given, it
+// receives one line per input outside any physical range (a modulus in GPa read as Pa, an
+// amplitude in µm read as m, mu0 above 2) and where the contact radius exceeds 0.3 R (Hertz and
+// the MDR take the sphere as a parabola, a ≪ R): the value is still computed, as the model defines it.
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& request, const Precision& precision,
-                               const BatchOptions& options = {});
+                               const BatchOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
 // The inputs of `trace`, each named in its caller's terms as in PhysicalRequest.
 struct TraceRequest {
