@@ -249,3 +249,13 @@ def test_implausible_inputs_warn():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         vibrofric.physical("sine", **CASES["flat"])  # plausible: no warning
+
+
+def test_f_agrees_with_the_time_stamps():
+    # Samples with time stamps (no unit: seconds) have their own period; f must agree within 1 %.
+    import numpy as np
+    y = np.sin(2 * np.pi * np.arange(8) / 8)
+    w = vibrofric.samples(y, t=np.arange(8) / 800.0)  # 8 samples, dt 1.25 ms: period 10 ms, 100 Hz
+    assert vibrofric.physical(w, **CASES["flat"])["mu"] > 0  # f = 100
+    with pytest.raises(ValueError, match=r"f = 50 Hz, but the time column .* 0\.0100000 s"):
+        vibrofric.physical(w, **dict(CASES["flat"], f=50))

@@ -1511,6 +1511,21 @@ def cli_tests():
     case("physical: implausible inputs warn on stderr (GPa as Pa, um as m, mu0 > 2, a not small against R)",
          physical_plausibility)
 
+    def physical_f_against_stamps():
+        # A samples wave's time column has its own period: --f must agree with it within 1 %, in
+        # the unit the header names (none: seconds). rig.csv and daq.csv: 100 Hz, stamps in s.
+        daq = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "daq.csv")
+        ms = write("rig-ms.csv", "t (ms), disp\n0, 0\n2.5, 1\n5, 0\n7.5, -1\n10, 0\n")
+        for wave, column, f in (("samples:" + daq, "3", "100"), ("samples:" + daq, "3", "100.5"), ("samples:" + ms, "2", "100")):
+            rc, out, err = run(physical_args(**{"--wave": wave, "--column": column, "--f": f}))
+            if rc != 0 or "mu = " not in out:
+                raise Fail("physical --wave %s --f %s: exit %d, %r" % (wave, f, rc, err))
+        bad("physical --f against a time column in s", physical_args(**{"--wave": "samples:" + daq, "--column": "3", "--f": "50"}),
+            ["50"], ["--f", "0.0100000 s", "100.000 Hz", "1 %"])
+        bad("physical --f against a time column in ms", physical_args(**{"--wave": "samples:" + ms, "--column": "2", "--f": "0.1"}),
+            ["0.1"], ["--f", "0.0100000 s"])
+    case("physical: --f agrees with a samples wave's time column (its unit from the header)", physical_f_against_stamps)
+
     def fit_sine():
         # 64 uniform samples of 3 + 2 sin(2 pi phi) - 0.5 cos(4 pi phi): the DFT gives these coefficients
         # to rounding (bound: 64 terms of size <= 3, 1e-14); a fit of the pure sine's samples is the sine

@@ -12,8 +12,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <map>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -499,6 +500,28 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
                      ": the file holds " + std::to_string(s.samples.size() / period) +
                      " identical periods; expected one period (the frequency f is that of one period)");
   return s;
+}
+
+std::optional<StampedPeriod> stamped_period(const WaveSpec& wave) {
+  if (wave.kind != WaveKind::samples || (wave.times.empty() && wave.period_from_stamps.empty())) return std::nullopt;
+  static const std::regex unit_re(R"(.*?(?:[\[(]\s*(\S+?)\s*[\])]|[_/]\s*(\w+)|\s+in\s+(\S+))\s*)", std::regex::icase);
+  std::smatch m;
+  std::string unit;
+  if (std::regex_match(wave.time_column, m, unit_re))
+    for (int g = 1; g <= 3; ++g)
+      if (m[g].matched) unit = m[g].str();
+  static const std::map<std::string, const char*> seconds{{"s", "1"},     {"sec", "1"},   {"ms", "1e-3"}, {"us", "1e-6"},
+                                                          {"\xC2\xB5s", "1e-6"}, {"\xCE\xBCs", "1e-6"}, {"ns", "1e-9"},
+                                                          {"min", "60"}};
+  StampedPeriod p;
+  p.assumed = unit.empty();
+  p.unit = p.assumed ? "s" : unit;
+  const auto it = seconds.find(p.unit);
+  if (it == seconds.end()) return std::nullopt;
+  const mpfr span = !wave.period_from_stamps.empty() ? mpfr(wave.period_from_stamps)
+                                                     : mpfr(mpfr(wave.times.back()) - mpfr(wave.times.front()));
+  p.seconds = span * mpfr(it->second);
+  return p;
 }
 
 WaveSpec parse_wave(const std::string& text) { return parse_wave(text, WaveReadOptions{}); }

@@ -89,6 +89,17 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
                          by_load ? mpfr(0) : get(r.u_mean), positive(r.mu0)};
   for (const Input* G : {&r.G1, &r.G2})
     if (G->given() && !(opt(*G) > 0)) throw InputError(G->name + " = " + *G->text + ": expected a value > 0");
+  // A samples wave with time stamps has its own period: --f must be its frequency (a record in ms
+  // read as s, or of two periods, would otherwise be taken for one period at f).
+  if (const auto T = stamped_period(wave)) {
+    const mpfr ratio = in.f * T->seconds;
+    if (abs(mpfr(ratio - 1)) > mpfr("0.01"))
+      throw InputError(r.f.name + " = " + *r.f.text + " Hz, but the time column '" + detail::visible(wave.time_column) + "' of " +
+                       detail::visible(wave.name) + " spans a period of " + format_significant(T->seconds, 6) + " s (" +
+                       format_significant(mpfr(1 / T->seconds), 6) + " Hz" +
+                       (T->assumed ? ", its header naming no unit: taken as seconds" : "") +
+                       "): expected them to agree within 1 %");
+  }
   auto g = physical_groups(in);
   BatchOptions options = base;
   options.profile = ProfileSpec{};

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +58,17 @@ struct WaveReadOptions {
 // without, the name is unchanged.
 WaveSpec parse_wave(const std::string& text);
 WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options);
+
+// A samples wave's period in seconds, from its time column (the stamps' span, or N·dt without an
+// end point) and the unit its header names: "time [s]", "t (ms)", "time_us", "t/ns", "time in µs"
+// (s, ms, us, µs, ns, min); a header without a unit is taken as seconds (`assumed` set). None for
+// a wave without a time column or with a unit not in that list.
+struct StampedPeriod {
+  mpfr seconds;
+  std::string unit;  // as the header writes it ("s" where assumed)
+  bool assumed = false;
+};
+std::optional<StampedPeriod> stamped_period(const WaveSpec& wave);
 
 // The normalisation a user wave gets (model.md, "Waveform catalogue": "the normalisation used is
 // reported"), as name/value pairs with values to `digits` significant digits, computed by the code
