@@ -164,7 +164,9 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
                       std::to_string(static_cast<int>(options.solver.area)) + " " +
                       std::to_string(options.solver.max_root_iterations) + " " +
                       std::to_string(options.solver.max_quadrature_levels) + " " +
-                      std::to_string(options.solver.quadrature_tolerance) + "\n" + wave_fingerprint(wave);
+                      format_significant(mpfr(options.solver.quadrature_tolerance), 17) + "\n" + wave_fingerprint(wave) +
+                      "\nprofile " + options.profile.name + " " + options.profile.height_unit;
+    for (std::size_t i = 0; i < options.profile.r.size(); ++i) key += "\n" + options.profile.r[i] + " " + options.profile.f[i];
     for (const Input* in : {&r.E1, &r.nu1, &r.E2, &r.nu2, &r.G1, &r.G2, &r.A, &r.F_N, &r.shape, &r.radius, &r.R,
                             &r.half_angle, &r.flat_radius})
       key += "\n" + (in->given() ? *in->text : std::string("-"));
