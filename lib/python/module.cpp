@@ -3,6 +3,7 @@
 // a scipy.special function; each batch is one call of the library's batch API, with the GIL
 // released and the library's worker threads. Bad input is ValueError with the library's one-line
 // message, a solver failure vibrofric.SolverError (an ArithmeticError); never NaN for a failure.
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -475,6 +476,15 @@ std::optional<int> optional_int(const py::object& x, const char* what) {
   return static_cast<int>(v);
 }
 
+// periods= of wave() and samples(): None is 0 (one period, checked), else 1 to max_record_periods.
+int record_periods(const py::object& periods) {
+  const auto k = optional_int(periods, "periods");
+  if (!k) return 0;
+  if (*k < 1) throw InputError("periods = " + std::to_string(*k) + ": expected an integer from 1 to " +
+                               std::to_string(max_record_periods));
+  return *k;
+}
+
 unsigned to_threads(const py::object& x) {
   const auto t = optional_int(x, "threads");
   if (!t) return 0;
@@ -655,22 +665,26 @@ std::string wave_repr(const PyWave& w) {
   return "<vibrofric.Wave " + s.name + ">";
 }
 
-constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
+constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
 
 The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
 (mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given
-mean normal load -- then mu/mu0 (Eq. 15), mu, the mean forces, beta_c (Eq. 6) and, for the flat
-punch, the fractions of the period in contact and in stick. Curved indenters by MDR (model.md).
+mean normal load -- then mu/mu0 (Eq. 15), mu, the mean forces, the peak load and contact
+pressures, beta_c (Eq. 6) and the fractions of the period in contact and (flat punch) in stick.
+Curved indenters by MDR (model.md).
 
 E1, E2 Pa > 0; nu1, nu2 in (-1, 0.5]; G1, G2 Pa (default E/(2(1 + nu))); v0 m/s; f Hz; A m
-(zero-to-peak); mu0 > 0; exactly one of u_mean (m, mean indentation) and F_N (N, mean load).
+(zero-to-peak), or for a samples wave unit ('m', 'mm', 'um', 'nm': its values' unit; A is then
+half their peak-to-peak, returned as A_m); mu0 > 0; exactly one of u_mean (m, mean indentation) and F_N (N, mean load).
 shape 'flat' (radius m), 'sphere' (R m), 'cone' (half_angle degrees), 'wearflat' (R, flat_radius m)
 or 'profile:FILE' (heights in m). Numbers as for mu() (floats by their shortest decimal text).
 
-Returns a dict with exactly the tool's output names, in its order: shape, E_star_Pa, G_star_Pa,
-k_z_N_per_m and k_x_N_per_m (flat) or contact_radius_max_m (curved), lambda (wearflat), beta,
-gamma, u_mean_m (given F_N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, beta_c (inf: stick at every
-beta), contact_fraction and stick_fraction (flat). Values as float (type None/'double': the
+Returns a dict with exactly the tool's output names, in its order: shape, A_m (given unit),
+E_star_Pa, G_star_Pa, k_z_N_per_m and k_x_N_per_m (flat) or contact_radius_max_m (curved), lambda
+(wearflat), beta, gamma, u_mean_m (given F_N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, at the
+deepest instant F_N_peak_N, p_mean_peak_Pa and p_max_peak_Pa (Hertz on the sphere; inf where the
+elastic pressure is unbounded: the punch's rim, the cone's tip, a profile's kink), beta_c (inf:
+stick at every beta), contact_fraction and stick_fraction (flat). Values as float (type None/'double': the
 nearest double of the tool's --type double text), numpy.longdouble, or for digits=D mpmath.mpf /
 decimal strings equal to `vibrofric physical --digits D --format json`; strings=True gives the
 tool's strings for every type. ValueError with the library's message (naming the input by its keyword).
@@ -812,10 +826,10 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
                                    w.fit->samples);
             return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.exponent, harmonic_list(s.harmonics),
                                   text_list(s.samples), text_list(s.times), s.column, s.value_column, s.time_column,
-                                  s.period_from_stamps, fit, w.fitted);
+                                  s.period_from_stamps, fit, w.fitted, s.periods_averaged);
           },
           [](const py::tuple& t) {
-            check_state(t, 13, "Wave");
+            check_state(t, 14, "Wave");
             PyWave w;
             WaveSpec& s = w.spec;
             s.kind = static_cast<WaveKind>(t[1].cast<int>());
@@ -839,6 +853,7 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
               w.fit = std::move(fit);
             }
             w.fitted = t[12].cast<std::string>();
+            s.periods_averaged = t[13].cast<unsigned>();
             return w;
           }));
   py::class_<PyProfile>(m, "Profile", "A measured axisymmetric indenter profile built by vibrofric.profile.")
@@ -869,13 +884,13 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
 
   m.def(
       "samples",
-      [](const py::object& y, const py::object& t) {
+      [](const py::object& y, const py::object& t, const py::object& periods) {
         const auto ys = array_texts(y, "y");
         const auto ts = t.is_none() ? std::vector<std::string>() : array_texts(t, "t");
-        return PyWave{samples_wave(ys, ts, "samples"), nullptr, ""};
+        return PyWave{samples_wave(ys, ts, "samples", record_periods(periods)), nullptr, ""};
       },
-      "y"_a, "t"_a = py::none(),
-      R"doc(samples(y, t=None) -> Wave
+      "y"_a, "t"_a = py::none(), py::kw_only(), "periods"_a = py::none(),
+      R"doc(samples(y, t=None, *, periods=None) -> Wave
 
 A sampled periodic signal, linear between the samples, normalised to zero mean and
 max w - min w = 2 (model.md, "Waveform catalogue"). Without t: y_0 ... y_{N-1} at phi = j/N, one
@@ -883,7 +898,10 @@ period without its end point (N >= 2). With t: time stamps t_0 ... t_N, strictly
 y_N = y_0 (one period with its end point; t_N - t_0 is the period); or, as a DAQ records, no end
 point and uniform stamps t_j = t_0 + j dt (then phi = j/N and the period is N dt). Exactly as the same numbers in a
 samples:FILE (floats by their shortest decimal text; strings exact); ValueError for what such a
-file would be refused for (NaN, ragged t and y, a constant signal, repeated periods).
+file would be refused for (NaN, ragged t and y, a constant signal, repeated periods). periods (the
+tool's --periods): a record of K periods, averaged sample by sample (uniform phases, N a multiple
+of K); None: one period, and a record that looks like several noisy periods is a ValueError saying
+so; 1: one period, not checked.
 )doc");
   m.def(
       "fourier",
@@ -916,10 +934,11 @@ profile:FILE of lines 'r f'.
 
   m.def(
       "wave",
-      [](const py::object& text, const py::object& column) {
+      [](const py::object& text, const py::object& column, const py::object& periods) {
         if (!py::isinstance<py::str>(text))
           throw py::type_error("wave = " + py_repr(text) + ": expected a name such as 'sine' or 'samples:FILE'");
         WaveReadOptions options;
+        options.periods = record_periods(periods);
         if (!column.is_none()) {
           if (py::isinstance<py::str>(column))
             options.column = column.cast<std::string>();
@@ -928,13 +947,14 @@ profile:FILE of lines 'r f'.
         }
         return PyWave{parse_wave(text.cast<std::string>(), options), nullptr, ""};
       },
-      "text"_a, py::kw_only(), "column"_a = py::none(),
-      R"doc(wave(text, *, column=None) -> Wave
+      "text"_a, py::kw_only(), "column"_a = py::none(), "periods"_a = py::none(),
+      R"doc(wave(text, *, column=None, periods=None) -> Wave
 
 A wave by name, as the tool's --wave: 'sine', 'triangle', 'sawtooth-right', 'sawtooth-left',
 'square', 'power:P', 'fourier:FILE' or 'samples:FILE'. column (the tool's --column): the value
 column of a samples file with a header, by its name or 1-based index (a column named 'time' or 't'
-still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file is read once, here.
+still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (the tool's
+--periods): the periods a samples record holds, as in samples(). The file is read once, here.
 )doc");
 
   m.def(
@@ -943,9 +963,11 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
          const py::object& nu2, const py::object& v0, const py::object& f, const py::object& A, const py::object& mu0,
          const py::object& u_mean, const py::object& F_N, const py::object& G1, const py::object& G2,
          const py::object& shape, const py::object& radius, const py::object& R, const py::object& half_angle,
-         const py::object& flat_radius, const py::object& digits, const py::object& type,
+         const py::object& flat_radius, const py::object& unit, const py::object& digits, const py::object& type,
          const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
         const WaveSpec w = to_wave(wave);
+        if (!unit.is_none() && !py::isinstance<py::str>(unit))
+          throw py::type_error("unit = " + py_repr(unit) + ": expected 'm', 'mm', 'um' or 'nm'");
         const Precision precision = to_precision(optional_int(digits, "digits"), type);
         const BatchOptions options = solver_controls(max_iterations, escalate);
         if (!py::isinstance<py::str>(shape))
@@ -959,6 +981,7 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
         auto request_of = [&](const std::map<std::string, py::object>& values) {
           PhysicalRequest request;
           request.shape.text = shape.cast<std::string>();
+          if (!unit.is_none()) request.unit.text = unit.cast<std::string>();
           for (auto& [member, input] : request.inputs()) {
             const auto it = values.find(member);
             if (it != values.end()) input->text = scalar_text(it->second, member);
@@ -1019,10 +1042,10 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. The file i
         }
         return py::object(out);
       },
-      "wave"_a, py::kw_only(), "E1"_a, "nu1"_a, "E2"_a, "nu2"_a, "v0"_a, "f"_a, "A"_a, "mu0"_a,
+      "wave"_a, py::kw_only(), "E1"_a, "nu1"_a, "E2"_a, "nu2"_a, "v0"_a, "f"_a, "A"_a = py::none(), "mu0"_a,
       "u_mean"_a = py::none(), "F_N"_a = py::none(), "G1"_a = py::none(), "G2"_a = py::none(), "shape"_a = "flat",
       "radius"_a = py::none(), "R"_a = py::none(), "half_angle"_a = py::none(), "flat_radius"_a = py::none(),
-      "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
+      "unit"_a = py::none(), "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
       "strings"_a = false, "nan_on_error"_a = false, physical_doc);
 
   m.def(
@@ -1140,6 +1163,49 @@ statement), measured (list of dicts: name, value as printed, and fields, its par
 and digits. claim: one key ('eq17', 'eq24', ...);
 None runs every claim (minutes). ValueError for an unknown key.
 )doc");
+
+  // A call that fits no signature (a misspelt or missing keyword, an extra argument) is one line
+  // naming what is wrong, as the tool's flags, not pybind11's listing of the overloads: each
+  // function is wrapped, and its parameters are read from its docstring's first line.
+  m.def("_did_you_mean", [](const std::string& typed, const std::vector<std::string>& known) { return did_you_mean(typed, known); });
+  py::exec(R"py(
+import functools as _functools
+import re as _re
+
+
+def _one_line_calls(name):
+    f = globals()[name]
+    head = _re.match(r"\w+\((.*?)\)", f.__doc__ or "")
+    params = [p.strip().lstrip("*").split("=")[0] for p in head.group(1).split(",")] if head else []
+    params = [p for p in params if p]
+    required = [p.strip() for p in head.group(1).split(",") if "=" not in p and p.strip() not in ("*", "")] if head else []
+
+    @_functools.wraps(f)
+    def call(*args, **kwargs):
+        try:
+            return f(*args, **kwargs)
+        except TypeError as e:
+            if "incompatible function arguments" not in str(e):
+                raise
+            for k in kwargs:
+                if k not in params:
+                    hint = _did_you_mean(k, params)
+                    raise TypeError("%s() got an unexpected keyword argument '%s': expected %s%s"
+                                    % (name, k, ", ".join(params), "; " + hint if hint else "")) from None
+            given = set(required[:len(args)]) | set(kwargs)
+            missing = [p for p in required if p not in given]
+            if missing:
+                raise TypeError("%s() missing %s: %s" % (name, "argument" if len(missing) == 1 else "arguments",
+                                                         ", ".join(missing))) from None
+            raise TypeError("%s() takes %s (%d positional given)" % (name, head.group(1) if head else "other arguments",
+                                                                     len(args))) from None
+    globals()[name] = call
+
+
+for _name in ("samples", "fourier", "profile", "wave", "physical", "trace", "fit", "mu", "psi", "verify"):
+    _one_line_calls(_name)
+del _name
+)py", m.attr("__dict__"));
 
   m.attr("catalogue") = py::cast(catalogue_names());
   py::list keys;

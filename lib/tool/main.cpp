@@ -87,10 +87,13 @@ const char* const kPhysicalAbout =
     "(<F_N> rises strictly with gamma) and u_mean_m is printed after gamma.\n"
     "Sweep: one of --v0, --A, --f, --F-N, --u-mean given as FROM:TO:N or log:FROM:TO:N writes one\n"
     "row per value (CSV, or --format json).\n"
+    "A samples wave's values may give A: --unit um takes A as half their peak-to-peak (A_m printed).\n"
     "Printed: shape, E*, G*, k_z and k_x (flat) or the largest contact radius (curved), lambda\n"
     "(wearflat), beta, gamma, mu/mu0, mu, the mean normal and friction forces <F_N>, <F_x> in\n"
-    "newtons, beta_c (Eq. 6, of the clipped n; curved: the central spring's) and, for the flat\n"
-    "punch, the fractions of the period in contact and in stick.\n"
+    "newtons, at the deepest instant the normal force, the mean contact pressure and the largest\n"
+    "(Hertz on the sphere; inf at the punch's rim, the cone's tip, a profile's kink), beta_c (Eq. 6,\n"
+    "of the clipped n; curved: the central spring's), the fraction of the period in contact and, for\n"
+    "the flat punch, in stick.\n"
     "shapes S and their GEOMETRY (metres, degrees):\n"
     "  flat (default) --radius a          flat-ended cylinder: k_z = 2 E* a, k_x = 2 G* a (Eq. 1)\n"
     "  sphere --R R                       MDR (model.md), sigma = x^2/(R A)\n"
@@ -232,6 +235,9 @@ const std::vector<FlagSpec> kWaveFlags{
      [](Flags& f, const std::string& t) { f.wave = t; }},
     {"column", "C", "samples FILE: the value column, by header name or 1-based index", "the one value column",
      [](Flags& f, const std::string& t) { f.read.column = t; }},
+    {"periods", "K", "samples FILE: the periods the record holds, averaged sample by sample (1: one, unchecked)",
+     "one; a record that looks like several is refused",
+     [](Flags& f, const std::string& t) { f.read.periods = integer(t, "--periods", 1, max_record_periods); }},
     {"diagnostics", "", "print on stderr the normalisation of a user wave: raw mean, min, max, scale, period, end point", "",
      [](Flags& f, const std::string& t) { f.diagnostics = switch_value(t, "diagnostics"); }},
 };
@@ -358,7 +364,7 @@ const std::vector<CommandSpec>& commands() {
        std::string(kWaves) + kProfiles,
        run_sweep},
       {"physical", "physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA] --v0 M/S --f HZ\n"
-                   "                          --A M (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",
+                   "                          (--A M | --unit U) (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",
        {{"E1", "PA", "Young's modulus of body 1, > 0 (required)", "", nullptr},
         {"nu1", "NU", "Poisson's ratio of body 1, -1 < nu <= 0.5 (required)", "", nullptr},
         {"E2", "PA", "Young's modulus of body 2, > 0 (required)", "", nullptr},
@@ -367,7 +373,9 @@ const std::vector<CommandSpec>& commands() {
         {"G2", "PA", "shear modulus of body 2", "E2/(2(1 + nu2))", nullptr},
         {"v0", "M/S", "sliding velocity, > 0 (required; or a range)", "", nullptr},
         {"f", "HZ", "oscillation frequency, > 0 (required; or a range)", "", nullptr},
-        {"A", "M", "zero-to-peak amplitude of the normal oscillation, > 0 (required; or a range)", "", nullptr},
+        {"A", "M", "zero-to-peak amplitude of the normal oscillation, > 0 (required, or --unit; or a range)", "", nullptr},
+        {"unit", "U", "samples wave: its values' unit (m, mm, um, nm); A is then half their peak-to-peak, printed as A_m",
+         "", nullptr},
         {"u-mean", "M", "mean indentation (or a range); or give --F-N", "", nullptr},
         {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", "", nullptr},
         {"mu0", "MU", "local coefficient of friction, > 0 (required)", "", nullptr},
@@ -578,11 +586,14 @@ std::string pending_diagnostics;
 WaveSpec read_wave(const Flags& f) {
   WaveReadOptions options = f.read;
   options.column_name = "--column";
+  options.periods_name = "--periods";
   WaveSpec wave = parse_wave(need(f, f.wave, "wave"), options);
+  const unsigned k = wave.periods_averaged;
   if (!wave.period_from_stamps.empty())  // a period the file did not state: always said
     pending_diagnostics += "vibrofric: note: " + detail::visible(wave.name) + " has no end point; its " +
-                           std::to_string(wave.samples.size()) + " time stamps are uniform, so the samples sit at phi = j/N "
-                           "and the period is N dt = " + format_significant(mpfr(wave.period_from_stamps), 6) + "\n";
+                           std::to_string(wave.samples.size() * k) + " time stamps are uniform, so the samples sit at phi = j/N "
+                           "and the period is N dt" + (k > 1 ? "/" + std::to_string(k) : std::string()) + " = " +
+                           format_significant(mpfr(wave.period_from_stamps), 6) + "\n";
   if (f.diagnostics)
     for (const auto& [name, value] : describe_normalisation(wave, 17))
       pending_diagnostics += "normalisation: " + name + " = " + value + "\n";

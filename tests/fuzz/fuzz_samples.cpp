@@ -1,5 +1,5 @@
 // Fuzz target: the samples:FILE reader (the table grammar of README "File formats", with and
-// without a chosen column) and what is built from it: the wave, its normalisation report and its
+// without a chosen column, averaged as two periods) and what is built from it: the wave, its normalisation report and its
 // Fourier fit. The input is the file's contents; malformed and huge files, NaNs, a single sample,
 // constant signals must end in a clean InputError naming the file, and an accepted file must
 // evaluate cleanly and consistently (fuzz_waves.hpp). Cost bound: evaluation and fit for at most
@@ -28,6 +28,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (parsed != fuzz::Outcome::value)
     parsed = fuzz::clean(input, "parse_wave(samples:FILE, column value)",
                          [&] { spec = parse_wave("samples:" + file.path(), WaveReadOptions{"value"}); });
+  // A record of two periods, averaged (exact decimal sums of every written form): a clean
+  // refusal or a wave that evaluates like any other.
+  WaveReadOptions two;
+  two.periods = 2;
+  WaveSpec averaged;
+  if (fuzz::clean(input, "parse_wave(samples:FILE, periods 2)", [&] { averaged = parse_wave("samples:" + file.path(), two); }) ==
+          fuzz::Outcome::value &&
+      averaged.samples.size() <= 2000)
+    fuzz::check_user_wave(averaged, input, 1.0);
   if (parsed != fuzz::Outcome::value) return 0;
   if (spec.kind != WaveKind::samples || spec.samples.size() < 2) fuzz::finding("accepted samples file with fewer than 2 samples", input);
   if (spec.samples.size() > 2000) return 0;

@@ -101,3 +101,22 @@ def test_solver_failure_is_solver_error():
 
 def test_unknown_claim():
     raises_value_error(vibrofric.verify, "eq99", digits=10, names=("eq99",))
+
+
+def test_a_call_that_fits_no_signature_is_one_line():
+    # A misspelt keyword names itself, the parameters and the nearest one (as the tool's flags);
+    # a missing argument is named; never pybind11's listing of the signatures.
+    for call, words in ((lambda: vibrofric.mu("sine", 1, 0.2, digts=30), ["'digts'", "did you mean 'digits'?"]),
+                        (lambda: vibrofric.physical("sine", E1=1, nu1=0.3, E2=1, nu2=0.3, v0=1, f=1, A=1, mu0=1,
+                                                    u_mea=0), ["'u_mea'", "did you mean 'u_mean'?"]),
+                        (lambda: vibrofric.samples([0, 1, 0, -1], period=2), ["'period'", "did you mean 'periods'?"]),
+                        (lambda: vibrofric.mu("sine", 1), ["missing argument: gamma"]),
+                        (lambda: vibrofric.physical("sine", nu1=0.3, E2=1, nu2=0.3, v0=1, f=1, A=1, mu0=1),
+                         ["missing argument: E1"])):
+        with pytest.raises(TypeError) as e:
+            call()
+        text = str(e.value)
+        assert "\n" not in text and "incompatible" not in text, text
+        for w in words:
+            assert w in text, text
+    assert vibrofric.mu.__doc__.startswith("mu(wave, beta, gamma")

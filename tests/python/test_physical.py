@@ -259,3 +259,35 @@ def test_f_agrees_with_the_time_stamps():
     assert vibrofric.physical(w, **CASES["flat"])["mu"] > 0  # f = 100
     with pytest.raises(ValueError, match=r"f = 50 Hz, but the time column .* 0\.0100000 s"):
         vibrofric.physical(w, **dict(CASES["flat"], f=50))
+
+
+def test_amplitude_from_the_record():
+    # unit='um': A is half the samples' peak-to-peak (here 0.5 um), returned as A_m; every other
+    # output that of A = 5e-7. A and unit together, or unit for a catalogue wave, are refused.
+    import numpy as np
+    w = vibrofric.samples(np.array([0.0, 0.5, 0.0, -0.5]))
+    inputs = {k: v for k, v in CASES["flat"].items() if k != "A"}
+    got = vibrofric.physical(w, unit="um", digits=30, strings=True, **inputs)
+    ref = vibrofric.physical(w, A="5e-7", digits=30, strings=True, **inputs)
+    assert Fraction(got.pop("A_m")) == Fraction("5e-7")
+    assert got == ref
+    with pytest.raises(ValueError, match="A and unit both given"):
+        vibrofric.physical(w, unit="um", **CASES["flat"])
+    with pytest.raises(ValueError, match="samples"):
+        vibrofric.physical("sine", unit="um", **inputs)
+    with pytest.raises(TypeError, match="unit = 3"):
+        vibrofric.physical(w, unit=3, **inputs)
+
+
+def test_peak_load_and_pressure():
+    # The deepest instant (sine: n = gamma + 1): the punch carries k_z A (gamma + 1) with an
+    # unbounded rim pressure; the sphere Hertz's load, a = sqrt(R d), p0 = 3/2 of the mean.
+    flat = vibrofric.physical("sine", **CASES["flat"], digits=30, strings=True)
+    kz, A, g = Fraction(flat["k_z_N_per_m"]), Fraction("1e-6"), Fraction(flat["gamma"])
+    assert abs(Fraction(flat["F_N_peak_N"]) / (kz * A * (g + 1)) - 1) < Fraction(1, 10 ** 28)
+    assert flat["p_max_peak_Pa"] == "inf"
+    s = vibrofric.physical("sine", **CASES["sphere"], digits=30)
+    d = 1e-6 * (float(s["gamma"]) + 1)
+    assert s["F_N_peak_N"] == pytest.approx(4 / 3 * float(s["E_star_Pa"]) * 0.01 ** 0.5 * d ** 1.5, rel=1e-14)
+    assert s["contact_radius_max_m"] == pytest.approx((0.01 * d) ** 0.5, rel=1e-14)
+    assert s["p_max_peak_Pa"] == pytest.approx(1.5 * s["p_mean_peak_Pa"], rel=1e-14)

@@ -182,3 +182,28 @@ def test_waves_and_profiles_pickle(tmp_path):
 
 def _mu_strings(wave):
     return list(vibrofric.mu(wave, BETAS, 0.3, strings=True))
+
+
+def test_several_periods_refused_or_averaged(tmp_path):
+    # Two noisy periods of a sine (uniform phases): refused with what to give; periods=2 is the
+    # wave of the two periods' means (exact decimal means, written here), also after pickling;
+    # periods=1 takes the record as one period; a file read with periods= is the same wave.
+    rng = np.random.default_rng(26)
+    y = np.round(np.sin(4 * np.pi * np.arange(400) / 400) + rng.normal(0, 0.01, 400), 6)
+    with pytest.raises(ValueError, match="look like 2 periods.*give periods 2"):
+        vibrofric.samples(y)
+    import pickle
+    from decimal import Decimal
+    means = [str((Decimal(repr(float(a))) + Decimal(repr(float(b)))) / 2) for a, b in zip(y[:200], y[200:])]
+    averaged = vibrofric.samples(y, periods=2)
+    same_strings(averaged, vibrofric.samples(np.array(means)))
+    same_strings(pickle.loads(pickle.dumps(averaged)), averaged)
+    assert averaged.normalisation()["periods"] == "2 (averaged sample by sample)"
+    assert len(averaged) == 200
+    assert len(vibrofric.samples(y, periods=1)) == 400
+    f = write(tmp_path / "two.txt", [repr(float(v)) for v in y])
+    same_strings(vibrofric.wave("samples:" + f, periods=2), averaged)
+    with pytest.raises(ValueError, match="periods = 3 .*whole number"):
+        vibrofric.samples(y, periods=3)
+    with pytest.raises(ValueError, match="periods = 0"):
+        vibrofric.samples(y, periods=0)

@@ -104,6 +104,10 @@ def half_ulp_sig(x, digits):
     return Fraction(1, 2) * Fraction(10) ** (Decimal(dec(abs(x), digits + 5)).adjusted() - digits + 1)
 
 
+PI_DEC = Decimal("3.1415926535897932384626433832795028841971693993751058209749445923078164062862")
+PI = Fraction(PI_DEC)
+
+
 def expect_digits(s, exact, digits, what):
     """s has exactly `digits` significant digits and is `exact` correctly rounded to them."""
     n = sig_digits(s)
@@ -1081,11 +1085,20 @@ def physical_tests():
             d[m.group(1)] = m.group(2)
         return d
 
-    def check_groups(a, got, exact, digits):
+    def check_groups(a, got, exact, digits, peak=None):
+        """peak = (A, radius, max w): at the deepest instant the punch carries k_z A (gamma + max w)
+        over its circle; its rim pressure is unbounded (Boussinesq), printed inf."""
         keys = ["shape", "E_star_Pa", "G_star_Pa", "k_z_N_per_m", "k_x_N_per_m", "beta", "gamma",
-                "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "beta_c", "contact_fraction", "stick_fraction"]
+                "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "F_N_peak_N", "p_mean_peak_Pa", "p_max_peak_Pa",
+                "beta_c", "contact_fraction", "stick_fraction"]
         if "F_N_mean_N" in exact:   # <F_x> = mu <F_N>
             exact["F_x_mean_N"] = exact["F_N_mean_N"] * exact["mu"]
+        if peak:
+            A, radius, wmax = F(peak[0]), F(peak[1]), Fraction(peak[2])
+            exact["F_N_peak_N"] = exact["k_z_N_per_m"] * A * (exact["gamma"] + wmax)
+            exact["p_mean_peak_Pa"] = exact["F_N_peak_N"] / (PI * radius ** 2)
+        if got.get("p_max_peak_Pa") != "inf":
+            raise Fail("%s: p_max_peak_Pa = %s, expected inf (the punch's rim)" % (cmd(a), got.get("p_max_peak_Pa")))
         if list(got) != keys:
             raise Fail("%s printed the fields %s, expected %s" % (cmd(a), list(got), keys))
         if got["shape"] != "flat":
@@ -1101,7 +1114,7 @@ def physical_tests():
         a = physical_args()
         got = parse(ok_run(a))
         exact, mu0 = groups(**steel)
-        check_groups(a, got, exact, 50)
+        check_groups(a, got, exact, 50, peak=(steel["A"], steel["radius"], 1))
         if not (0 < F(got["mu_over_mu0"]) < 1):
             raise Fail("mu_over_mu0 %s, expected a value in (0, 1) below beta_c" % got["mu_over_mu0"])
         # mu_over_mu0 against mu at the same beta and gamma (beta given to 70 digits)
@@ -1156,7 +1169,7 @@ def physical_tests():
         exact["beta_c"] = Fraction(4)
         exact["contact_fraction"] = (1 + exact["gamma"]) / 2
         exact["stick_fraction"] = 2 * (1 + exact["gamma"]) / (4 + b)
-        check_groups(a, got, exact, 40)
+        check_groups(a, got, exact, 40, peak=(alu["A"], alu["radius"], 1))
     case("physical steel on aluminium, explicit G1 G2 (triangle, closed form), --digits 40", alu_fn)
 
     # 2a. two stick phases a period: samples -1, 1, -1, 0 at j/4 (normalised: w = y + 1/4), two
@@ -1180,7 +1193,7 @@ def physical_tests():
         exact["beta_c"] = Fraction(8)
         exact["contact_fraction"] = sum(2 * h / k for h, k in teeth)
         exact["stick_fraction"] = sum(2 * h / (k + b) for h, k in teeth)  # both phases
-        check_groups(a, got, exact, 40)
+        check_groups(a, got, exact, 40, peak=(alu["A"], alu["radius"], Fraction(5, 4)))
     case("physical, two stick phases a period (two triangular teeth, closed form), --digits 40", two_teeth_fn)
 
     # 2b. rubber (nu = 0.5, incompressible) on steel: Eq. 1 as for any nu
@@ -1224,7 +1237,7 @@ def physical_tests():
         exact["mu_over_mu0"] = Fraction(1)
         exact["mu"] = mu0
         exact["F_N_mean_N"] = exact["k_z_N_per_m"] * F(ex["A"]) * exact["gamma"]  # N = gamma, no jumping
-        check_groups(a, got, exact, 50)
+        check_groups(a, got, exact, 50, peak=(ex["A"], ex["radius"], 1))
     case("physical steel on steel above beta_c: mu = mu0 exactly", fast_fn)
 
     # 4. --type double
@@ -1245,7 +1258,7 @@ def physical_tests():
     decimal.getcontext().prec = 60
     tri = [("--wave", "triangle")] + STEEL[1:]
 
-    def curved_fn(shape_args, load):
+    def curved_fn(shape_args, load, peak):
         def fn():
             a = physical_args(tri, **{"--digits": "30", "--radius": None}) + shape_args
             got = parse(ok_run(a))
@@ -1253,7 +1266,8 @@ def physical_tests():
             b = exact["beta"]
             g = Decimal(exact["gamma"].numerator) / Decimal(exact["gamma"].denominator)
             want = ["shape", "E_star_Pa", "G_star_Pa", "contact_radius_max_m", "beta", "gamma",
-                    "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "beta_c"]
+                    "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "F_N_peak_N", "p_mean_peak_Pa",
+                    "p_max_peak_Pa", "beta_c", "contact_fraction"]
             if list(got) != want:
                 raise Fail("%s printed %s, expected %s" % (cmd(a), list(got), want))
             for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma"):
@@ -1264,6 +1278,18 @@ def physical_tests():
             fn_exact = load(E, Decimal(steel["A"]), g)
             expect_digits(got["F_N_mean_N"], Fraction(fn_exact), 30, "%s: <F_N>" % cmd(a))
             expect_digits(got["F_x_mean_N"], Fraction(fn_exact) * mu0 * m, 30, "%s: <F_x> = mu <F_N>" % cmd(a))
+            # The deepest instant, d = A (1 + gamma): the textbook load, contact radius and pressures.
+            d = Decimal(steel["A"]) * (1 + g)
+            force, radius, p_max = peak(E, d)
+            expect_digits(got["F_N_peak_N"], Fraction(force), 30, "%s: peak F_N" % cmd(a))
+            expect_digits(got["contact_radius_max_m"], Fraction(radius), 30, "%s: contact radius" % cmd(a))
+            expect_digits(got["p_mean_peak_Pa"], Fraction(force / (PI_DEC * radius ** 2)), 30, "%s: mean pressure" % cmd(a))
+            if p_max is None:
+                if got["p_max_peak_Pa"] != "inf":
+                    raise Fail("%s: p_max_peak_Pa = %s, expected inf (the tip)" % (cmd(a), got["p_max_peak_Pa"]))
+            else:
+                expect_digits(got["p_max_peak_Pa"], Fraction(p_max), 30, "%s: Hertz p0" % cmd(a))
+            expect_digits(got["contact_fraction"], (1 + exact["gamma"]) / 2, 30, "%s: contact fraction" % cmd(a))
         return fn
 
     def hertz(E, A, g):
@@ -1273,10 +1299,16 @@ def physical_tests():
         tan = Decimal(1)                   # half-angle 45 degrees
         pi = Decimal("3.14159265358979323846264338327950288419716939937510582097494459")
         return 2 * E * tan / pi * A ** 2 * (1 + g) ** 3 / 6
-    case("physical --shape sphere (triangle): Eq. 19 and the Hertz mean load",
-         curved_fn(["--shape", "sphere", "--R", "0.01"], hertz))
-    case("physical --shape cone (triangle): Eq. 19 and the Sneddon mean load",
-         curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon))
+    def hertz_peak(E, d):       # F = (4/3) E* R^(1/2) d^(3/2), a = (R d)^(1/2), p0 = (2/pi) E* (d/R)^(1/2)
+        R = Decimal("0.01")
+        return Decimal(4) / 3 * E * R.sqrt() * d * d.sqrt(), (R * d).sqrt(), 2 * E * (d / R).sqrt() / PI_DEC
+
+    def sneddon_peak(E, d):     # 45 degrees: F = 2 E* d^2/pi, a = 2 d/pi; the tip's pressure is unbounded
+        return 2 * E * d * d / PI_DEC, 2 * d / PI_DEC, None
+    case("physical --shape sphere (triangle): Eq. 19, the Hertz mean load, peak load and pressure",
+         curved_fn(["--shape", "sphere", "--R", "0.01"], hertz, hertz_peak))
+    case("physical --shape cone (triangle): Eq. 19, the Sneddon mean load, peak load and mean pressure",
+         curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon, sneddon_peak))
 
 
 # --------------------------------------------------------------------------------------------
@@ -1366,7 +1398,7 @@ def failure_tests():
 
 # Every flag of every command, as the README documents them; --help must list each one, with its
 # default where it has one (CLI11 prints 'PLACEHOLDER=default').
-WAVE = ["--wave", "--column", "--diagnostics"]
+WAVE = ["--wave", "--column", "--periods", "--diagnostics"]
 PRECISION = ["--digits", "--type", "--no-escalate"]
 SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
 HELP_FLAGS = {
@@ -1377,7 +1409,7 @@ HELP_FLAGS = {
     "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format"] + WAVE + PRECISION + SOLVER,
               {"--quantity": "mu", "--threads": "0", "--format": "csv"}),
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
-                  "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--format"]
+                  "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--format"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
     "trace": (["--beta", "--gamma", "--points", "--digits"] + WAVE, {"--points": "1000", "--digits": "17"}),
     "fit": (["--harmonics", "--output"] + WAVE, {}),
@@ -1525,6 +1557,100 @@ def cli_tests():
         bad("physical --f against a time column in ms", physical_args(**{"--wave": "samples:" + ms, "--column": "2", "--f": "0.1"}),
             ["0.1"], ["--f", "0.0100000 s"])
     case("physical: --f agrees with a samples wave's time column (its unit from the header)", physical_f_against_stamps)
+
+    def several_periods():
+        # A record of K noisy periods (README, "File formats"): refused with K named; --periods K is the
+        # file of the K periods' means (written here with exact decimal means) digit for digit, in
+        # every type, and so are its normalisation, its fit and physical's period against --f.
+        data = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
+        two = os.path.join(data, "daq-2periods.csv")
+        rows = [line.split(",") for line in open(two) if line[0].isdigit()]
+        assert len(rows) == 400
+        mean = [(Fraction(rows[j][2]) + Fraction(rows[j + 200][2])) / 2 for j in range(200)]
+        averaged = write("daq-mean.csv", "time [s], displacement [um]\n" + "".join(
+            "%s, %s\n" % (rows[j][0].strip(), dec(mean[j], 30) if mean[j] else "0") for j in range(200)))
+        base = ["--beta", "2", "--gamma=-0.2"]
+
+        def answer(args):   # stdout of a run that succeeds (its stderr: the note on the stamps)
+            rc, out, err = run(args)
+            if rc != 0:
+                raise Fail("%s: exit %d, %r" % (cmd(args), rc, err))
+            return out
+        for prec in (["--type", "double"], ["--type", "long-double"], ["--digits", "30"]):
+            ref = answer(["mu", "--wave", "samples:" + averaged, "--column", "2"] + base + prec)
+            got = answer(["mu", "--wave", "samples:" + two, "--column", "3", "--periods", "2"] + base + prec)
+            if got != ref:
+                raise Fail("--periods 2 %s: %s, the file of the means: %s" % (prec, got, ref))
+        rc, out, err = run(["mu", "--wave", "samples:" + two, "--column", "3", "--periods", "2", "--diagnostics"] + base)
+        diag = dict(re.findall(r"normalisation: (\w+) = (.*)", err))
+        lo, hi = min(mean), max(mean)
+        if rc != 0 or diag.get("periods", "").split()[0] != "2" or diag.get("period") != "0.0050000000000000000" and \
+                Fraction(diag.get("period", "0")) != Fraction(1, 100):
+            raise Fail("--periods 2 --diagnostics: exit %d, %r" % (rc, err))
+        for key, exact in (("raw_min", lo), ("raw_max", hi), ("scale", (hi - lo) / 2)):
+            expect_digits(diag[key], exact, 17, "--periods 2 --diagnostics " + key)
+        fit_ref = answer(["fit", "--wave", "samples:" + averaged, "--column", "2", "--harmonics", "3"]).splitlines()
+        fit_got = answer(["fit", "--wave", "samples:" + two, "--column", "3", "--periods", "2", "--harmonics", "3"]).splitlines()
+        if [l for l in fit_got if not l.startswith("#")] != [l for l in fit_ref if not l.startswith("#")]:
+            raise Fail("fit --periods 2 differs from the fit of the means: %r, %r" % (fit_got, fit_ref))
+        # One period by the caller's word: taken as given.
+        answer(["mu", "--wave", "samples:" + two, "--column", "3", "--periods", "1"] + base)
+        # physical: the averaged period is 10 ms, so --f 100 agrees and --f 50 does not.
+        answer(physical_args(**{"--wave": "samples:" + two, "--column": "3", "--periods": "2", "--f": "100"}))
+        rc, out, err = run(physical_args(**{"--wave": "samples:" + two, "--column": "3", "--periods": "2", "--f": "50"}))
+        if rc != 2 or "0.0100000 s" not in err:
+            raise Fail("physical --periods 2 --f 50: exit %d, %r: expected the 10 ms period refused" % (rc, err))
+        # Three noisy periods of a sine with a third harmonic, 301 samples (N/K not whole): recognised.
+        import random
+        rnd = random.Random(3)
+        ys = ["%.5f" % (math.sin(6 * math.pi * j / 301) + 0.2 * math.sin(18 * math.pi * j / 301) + rnd.gauss(0, 0.01))
+              for j in range(301)]
+        three = write("three-periods.txt", "\n".join(ys) + "\n")
+        rc, out, err = run(["mu", "--wave", "samples:" + three, "--beta", "1", "--gamma", "0"])
+        if rc != 2 or "look like 3 periods" not in err or "--periods 3" not in err or "whole number" not in err:
+            raise Fail("three periods in 301 samples: exit %d, %r" % (rc, err))
+        # One noisy period of every shape is not taken for several: a sine, a square-ish clipped
+        # sine, a random walk.
+        for name, f in (("sine", lambda j: math.sin(2 * math.pi * j / 500)),
+                        ("clipped", lambda j: max(-0.5, min(0.5, math.sin(2 * math.pi * j / 500)))),
+                        ("walk", lambda j, r=random.Random(5): r.gauss(0, 1))):
+            one = write("one-%s.txt" % name, "\n".join("%.6f" % (f(j) + rnd.gauss(0, 0.02)) for j in range(500)) + "\n")
+            answer(["mu", "--wave", "samples:" + one, "--beta", "1", "--gamma", "0", "--type", "double"])
+    case("samples: a record of several noisy periods refused, averaged by --periods K as the file of the means",
+         several_periods)
+    bad("--periods for a catalogue wave", ["mu", "--wave", "sine", "--periods", "2", "--beta", "1", "--gamma", "0"],
+        ["sine"], ["--periods", "samples"])
+    bad("--periods not dividing the samples",
+        ["mu", "--wave", "samples:" + write("p5.txt", "0\n1\n2\n1\n0\n"), "--periods", "2", "--beta", "1", "--gamma", "0"],
+        ["2"], ["--periods", "5 samples", "whole number"])
+    bad("--periods 0", ["mu", "--wave", "sine", "--periods", "0", "--beta", "1", "--gamma", "0"], ["0"], ["--periods"])
+
+    def amplitude_from_record():
+        # physical --unit: A is half the record's peak-to-peak (rig.csv: -4.7180 to 4.7275 um, so
+        # A = 4.72275 um), printed as A_m; every other output is that of --A A_m.
+        rig = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "rig.csv")
+        common = {"--wave": "samples:" + rig, "--column": "displacement [um]", "--f": "100", "--digits": "25"}
+        got = ok_run(physical_args(**dict(common, **{"--A": None, "--unit": "um"}))).splitlines()
+        ref = ok_run(physical_args(**dict(common, **{"--A": "4.72275e-6"}))).splitlines()
+        if not got[1].startswith("A_m = ") or Fraction(got[1].split(" = ")[1]) != Fraction("4.72275e-6"):
+            raise Fail("physical --unit um: %r, expected A_m = 4.72275e-6" % got[1])
+        if got[:1] + got[2:] != ref:
+            raise Fail("physical --unit um: %r, with --A 4.72275e-6: %r" % (got, ref))
+        for unit, scale in (("mm", "1e-3"), ("nm", "1e-9"), ("m", "1")):
+            rc, out, err = run(physical_args(**dict(common, **{"--A": None, "--unit": unit, "--digits": "10"})))
+            if rc != 0 and rc != 2:
+                raise Fail("--unit %s: exit %d %r" % (unit, rc, err))
+            if unit != "um" and (rc != 2 or "displacement [um]" not in err or "agree" not in err):
+                raise Fail("--unit %s against the header's um: exit %d, %r: expected a refusal" % (unit, rc, err))
+        plain = write("plain-nm.txt", "0\n500\n0\n-500\n")
+        out = ok_run(physical_args(**{"--wave": "samples:" + plain, "--A": None, "--unit": "nm", "--digits": "10"}))
+        if out.splitlines()[1] != "A_m = 5.000000000e-07":
+            raise Fail("--unit nm on 0, 500, 0, -500: %r, expected A_m = 5.000000000e-07" % out)
+    case("physical --unit: the amplitude from the record, half its peak-to-peak", amplitude_from_record)
+    bad("--unit and --A", physical_args(**{"--unit": "um"}), ["--unit"], ["--A"])
+    bad("--unit for a catalogue wave", physical_args(**{"--A": None, "--unit": "um"}), ["sine"], ["samples"])
+    bad("--unit unknown", physical_args(**{"--wave": "samples:" + write("u.txt", "0\n1\n0\n-1\n"), "--A": None,
+                                           "--unit": "inch"}), ["inch"], ["--unit", "um"])
 
     def fit_sine():
         # 64 uniform samples of 3 + 2 sin(2 pi phi) - 0.5 cos(4 pi phi): the DFT gives these coefficients

@@ -23,7 +23,8 @@ std::string decimal_text(double x) {
   return std::string(buffer, r.ptr);
 }
 
-WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::string>& t, const std::string& label) {
+WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::string>& t, const std::string& label,
+                      int periods) {
   if (!t.empty() && t.size() != y.size())
     throw InputError(label + ": t has " + std::to_string(t.size()) + " values and y " + std::to_string(y.size()) +
                      ": expected one time stamp per value (one period with its end point)");
@@ -38,7 +39,9 @@ WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::
   for (std::size_t j = 0; j < y.size(); ++j)
     table.rows.emplace_back(static_cast<int>(j) + (t.empty() ? 1 : 2),
                             t.empty() ? std::vector<std::string>{y[j]} : std::vector<std::string>{t[j], y[j]});
-  WaveSpec spec = detail::samples_from_table(table, detail::array_source(label, t.empty() ? 0 : 1), WaveReadOptions{});
+  WaveReadOptions options;
+  options.periods = periods;
+  WaveSpec spec = detail::samples_from_table(table, detail::array_source(label, t.empty() ? 0 : 1), options);
   spec.name = label;
   return spec;
 }

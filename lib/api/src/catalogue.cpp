@@ -1,5 +1,6 @@
 #include "vibrofric/api/catalogue.hpp"
 
+#include <boost/multiprecision/cpp_int.hpp>
 #include <csv.h>
 
 #include "vibrofric/api/detail/tables.hpp"
@@ -143,6 +144,78 @@ std::size_t smallest_period(const std::vector<std::string>& y, const std::vector
     if (same) return p;
   }
   return n;
+}
+
+// Σ texts exactly, as a decimal "Me-E" (Boost's cpp_int holds every digit): the K periods of a
+// record summed sample by sample, which the normalisation makes the wave of their mean.
+std::string decimal_sum(const std::vector<const std::string*>& texts) {
+  using boost::multiprecision::cpp_int;
+  std::vector<std::pair<cpp_int, long>> parts;  // value = m·10^e
+  long low = 0;
+  for (const std::string* t : texts) {
+    const auto e = t->find_first_of("eE");
+    std::string mantissa = t->substr(0, e);
+    long exponent = e == std::string::npos ? 0 : std::stol(t->substr(e + 1));
+    if (const auto dot = mantissa.find('.'); dot != std::string::npos) {
+      exponent -= static_cast<long>(mantissa.size() - dot - 1);
+      mantissa.erase(dot, 1);
+    }
+    const bool negative = !mantissa.empty() && mantissa[0] == '-';
+    if (!mantissa.empty() && (mantissa[0] == '+' || negative)) mantissa.erase(0, 1);
+    // cpp_int reads a leading 0 as octal: the digits without it.
+    const auto first = mantissa.find_first_not_of('0');
+    const cpp_int m = first == std::string::npos ? cpp_int(0) : cpp_int(mantissa.substr(first));
+    parts.emplace_back(negative ? cpp_int(-m) : m, exponent);
+    low = parts.size() == 1 ? exponent : std::min(low, exponent);
+  }
+  cpp_int sum = 0;
+  for (const auto& [m, e] : parts) sum += m * boost::multiprecision::pow(cpp_int(10), static_cast<unsigned>(e - low));
+  return sum.str() + "e" + std::to_string(low);
+}
+
+// A record of K ≥ 2 noisy periods of one signal (uniform phases, N samples, linear between):
+// shifted by N/K samples it differs from itself only by its noise, while shifted by less than
+// N/K (eighths of it) it differs by about its whole variation. One period of a smooth signal,
+// shifted by a small N/K, differs little, but no less than by the shorter shifts: the test is
+// d(N/K) < 1 % and < 5 % of max_j d(j N/(8K)), d(L) = Σ (y(x) − y(x + L))² / (2 Σ (y − ȳ)²) over up
+// to 20,000 equally spaced x (every sample of a shorter record). The largest K up to min(64, N/8)
+// that passes, with d(N/K); none where no K does.
+std::optional<std::pair<std::size_t, double>> repeated_periods(const std::vector<std::string>& y) {
+  const std::size_t n = y.size();
+  if (n < 16) return std::nullopt;
+  std::vector<double> v;
+  v.reserve(n);
+  for (const auto& x : y) v.push_back(std::strtod(x.c_str(), nullptr));
+  const std::size_t m = std::min<std::size_t>(n, 20000);
+  const double step = static_cast<double>(n) / static_cast<double>(m);
+  const auto at = [&](double x) {  // the periodic piecewise-linear record at index x ≥ 0
+    x = std::fmod(x, static_cast<double>(n));
+    const auto j = std::min(static_cast<std::size_t>(x), n - 1);
+    const double t = x - static_cast<double>(j);
+    return (1 - t) * v[j] + t * v[(j + 1) % n];
+  };
+  double mean = 0;
+  for (std::size_t i = 0; i < m; ++i) mean += at(static_cast<double>(i) * step) / static_cast<double>(m);
+  double variance = 0;
+  for (std::size_t i = 0; i < m; ++i) variance += (at(static_cast<double>(i) * step) - mean) * (at(static_cast<double>(i) * step) - mean);
+  if (!(variance > 0)) return std::nullopt;
+  const auto d = [&](double lag) {
+    double sum = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      const double x = static_cast<double>(i) * step, e = at(x) - at(x + lag);
+      sum += e * e;
+    }
+    return sum / (2 * variance);
+  };
+  std::optional<std::pair<std::size_t, double>> found;
+  for (std::size_t k = 2; k <= std::min<std::size_t>(n / 8, 64); ++k) {
+    const double period = static_cast<double>(n) / static_cast<double>(k), repeat = d(period);
+    if (!(repeat < 0.01)) continue;
+    double within = 0;
+    for (int j = 1; j < 8; ++j) within = std::max(within, d(period * j / 8));
+    if (repeat < 0.05 * within) found = std::make_pair(k, repeat);
+  }
+  return found;
 }
 
 // The 0-based value column chosen by `column` (README, "File formats"): a 1-based index (header
@@ -487,6 +560,44 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
                        "period with the first value (the end point), or give uniform stamps t_j = t0 + j dt (period N dt)");
     }
   }
+  // Several periods in one record (uniform phases): averaged where the caller says how many,
+  // refused where they are recognised and the caller has not said.
+  const bool uniform_phases = s.times.empty() || uniform_step(std::vector<std::string>(s.times.begin(), s.times.end())).has_value();
+  const std::size_t n = s.samples.size();
+  if (options.periods < 0 || options.periods > max_record_periods)
+    throw InputError(options.periods_name + " = " + std::to_string(options.periods) + ": expected an integer from 1 to " +
+                     std::to_string(max_record_periods));
+  if (options.periods > 1) {
+    const std::size_t k = static_cast<std::size_t>(options.periods);
+    if (!uniform_phases || n % k != 0 || n / k < 2)
+      throw InputError(options.periods_name + " = " + std::to_string(k) + " for " + quoted(visible(source.name)) + " (" +
+                       std::to_string(n) + " samples" + (uniform_phases ? "" : ", time stamps not uniform") +
+                       "): expected uniformly spaced samples, a whole number of them (at least 2) in each period");
+    std::vector<std::string> folded;
+    for (std::size_t j = 0; j < n / k; ++j) {
+      std::vector<const std::string*> same_phase;
+      for (std::size_t i = 0; i < k; ++i) same_phase.push_back(&s.samples[j + i * (n / k)]);
+      folded.push_back(decimal_sum(same_phase));
+    }
+    s.samples = std::move(folded);
+    if (!s.times.empty()) s.times.resize(n / k + 1);  // t_0 … t_{N/K}: uniform, the first period
+    if (!s.period_from_stamps.empty()) {
+      PrecisionScope scope(60);
+      s.period_from_stamps = format_significant(mpfr(mpfr(s.period_from_stamps) / static_cast<long>(k)), 40);
+    }
+    s.periods_averaged = static_cast<unsigned>(k);
+  } else if (options.periods == 0 && uniform_phases) {
+    if (const auto repeated = repeated_periods(s.samples)) {
+      const auto [k, relative] = *repeated;
+      char share[32];
+      std::snprintf(share, sizeof share, "%.2g", 100 * relative);
+      throw InputError(source.name + ": the " + std::to_string(n) + " samples look like " + std::to_string(k) +
+                       " periods (shifted by N/" + std::to_string(k) + " they differ from themselves by " + share +
+                       " % of their variation): expected one period; give " + options.periods_name + " " +
+                       std::to_string(k) + " to average them" + (n % k ? " (after cutting the record to a whole number of periods)" : "") +
+                       ", or " + options.periods_name + " 1 if the record is one period");
+    }
+  }
   const std::size_t period = smallest_period(s.samples, s.times);
   if (period == 1)
     throw InputError("sampled waveform " + quoted(visible(source.wave)) + " is constant: expected a signal with non-zero amplitude");
@@ -502,14 +613,19 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
   return s;
 }
 
-std::optional<StampedPeriod> stamped_period(const WaveSpec& wave) {
-  if (wave.kind != WaveKind::samples || (wave.times.empty() && wave.period_from_stamps.empty())) return std::nullopt;
+std::string column_unit(const std::string& header) {
   static const std::regex unit_re(R"(.*?(?:[\[(]\s*(\S+?)\s*[\])]|[_/]\s*(\w+)|\s+in\s+(\S+))\s*)", std::regex::icase);
   std::smatch m;
   std::string unit;
-  if (std::regex_match(wave.time_column, m, unit_re))
+  if (std::regex_match(header, m, unit_re))
     for (int g = 1; g <= 3; ++g)
       if (m[g].matched) unit = m[g].str();
+  return unit;
+}
+
+std::optional<StampedPeriod> stamped_period(const WaveSpec& wave) {
+  if (wave.kind != WaveKind::samples || (wave.times.empty() && wave.period_from_stamps.empty())) return std::nullopt;
+  const std::string unit = column_unit(wave.time_column);
   static const std::map<std::string, const char*> seconds{{"s", "1"},     {"sec", "1"},   {"ms", "1e-3"}, {"us", "1e-6"},
                                                           {"\xC2\xB5s", "1e-6"}, {"\xCE\xBCs", "1e-6"}, {"ns", "1e-9"},
                                                           {"min", "60"}};
@@ -540,6 +656,9 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
       throw InputError("column " + quoted(visible(options.column)) + " given for wave " + quoted(visible(text)) +
                        ": a column applies to samples:FILE waves only, expected no column");
   }
+  if (options.periods != 0 && text.rfind("samples:", 0) != 0)
+    throw InputError(options.periods_name + " " + std::to_string(options.periods) + " given for wave " + quoted(visible(text)) +
+                     ": the periods of a record apply to samples:FILE waves only");
   if (text == "sine" || text == "harmonic") { s.kind = WaveKind::sine; s.name = "sine"; return s; }
   if (text == "triangle" || text == "tri") { s.kind = WaveKind::triangle; s.name = "triangle"; return s; }
   if (text == "sawtooth-right" || text == "str") { s.kind = WaveKind::sawtooth_right; s.name = "sawtooth-right"; return s; }
@@ -617,18 +736,24 @@ std::vector<std::pair<std::string, std::string>> describe_normalisation(const Wa
   const int log_n = static_cast<int>(std::ceil(std::log10(static_cast<double>(wave.samples.size()))));
   const mpfr accuracy = pow(mpfr(10), -(static_cast<int>(nz.digits) - log_n - 2)) * std::max(abs(nz.lo), abs(nz.hi));
   const mpfr mean = abs(nz.mean) <= accuracy ? mpfr(0) : nz.mean;
-  return {{"samples", std::to_string(wave.samples.size())},
+  // Averaged periods: the samples are sums of K values, the raw values their means.
+  const long k = static_cast<long>(wave.periods_averaged);
+  std::vector<std::pair<std::string, std::string>> rows{{"samples", std::to_string(wave.samples.size())}};
+  if (k > 1) rows.emplace_back("periods", std::to_string(k) + " (averaged sample by sample)");
+  for (auto& row : std::vector<std::pair<std::string, std::string>>{
           {"end_point", !wave.period_from_stamps.empty() ? "none (uniform stamps: period N dt)" : wave.times.empty() ? "none" : "dropped"},
           {"time_column", wave.times.empty() && wave.period_from_stamps.empty() ? "none"
                           : wave.time_column.empty()                          ? "unnamed"
                                                                               : wave.time_column},
           {"period", period},
           {"column", column},
-          {"raw_mean", text(mean)},
-          {"raw_min", text(nz.lo)},
-          {"raw_max", text(nz.hi)},
-          {"scale", text(nz.scale)},
-          {"factor", text(mpfr(1 / nz.scale))}};
+          {"raw_mean", text(mpfr(mean / k))},
+          {"raw_min", text(mpfr(nz.lo / k))},
+          {"raw_max", text(mpfr(nz.hi / k))},
+          {"scale", text(mpfr(nz.scale / k))},
+          {"factor", text(mpfr(k / nz.scale))}})
+    rows.push_back(std::move(row));
+  return rows;
 }
 
 }  // namespace vibrofric

@@ -22,7 +22,7 @@ std::vector<std::pair<const char*, InputText*>> PhysicalRequest::inputs() {
           {"G1", &G1},         {"G2", &G2},          {"v0", &v0},   {"f", &f},
           {"A", &A},           {"u_mean", &u_mean},  {"F_N", &F_N}, {"mu0", &mu0},
           {"shape", &shape},   {"radius", &radius},  {"R", &R},     {"half_angle", &half_angle},
-          {"flat_radius", &flat_radius}};
+          {"flat_radius", &flat_radius}, {"unit", &unit}};
 }
 
 namespace {
@@ -38,8 +38,64 @@ std::string wave_fingerprint(const WaveSpec& w) {
 }
 }  // namespace
 
+namespace {
+PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
+                            std::vector<std::string>* warnings);
+
+// A length unit of a value column, in metres.
+const std::map<std::string, const char*>& length_units() {
+  static const std::map<std::string, const char*> units{{"m", "1"},     {"mm", "1e-3"},          {"um", "1e-6"},
+                                                        {"\xC2\xB5m", "1e-6"}, {"\xCE\xBCm", "1e-6"}, {"nm", "1e-9"}};
+  return units;
+}
+}  // namespace
+
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
                                const BatchOptions& base, std::vector<std::string>* warnings) {
+  if (!r.unit.given()) return physical_at(wave, r, prec, base, warnings);
+  // The amplitude from the record (model.md: A is zero-to-peak, the wave normalised to
+  // max − min = 2): half the samples' peak-to-peak, in the unit of the value column.
+  const std::string& unit = *r.unit.text;
+  if (wave.kind != WaveKind::samples)
+    throw InputError(r.unit.name + " " + detail::visible(unit) + " given for wave " + detail::visible(wave.name) +
+                     ": the amplitude is taken from a samples:FILE record only (give " + r.A.name + ")");
+  if (r.A.given())
+    throw InputError(r.A.name + " and " + r.unit.name + " both given: expected one (" + r.unit.name +
+                     " takes the amplitude from the record)");
+  const auto it = length_units().find(unit);
+  if (it == length_units().end()) {
+    const std::string hint = did_you_mean(unit, {"m", "mm", "um", "nm"});
+    throw InputError(r.unit.name + " '" + detail::visible(unit) + "': expected m, mm, um (or µm) or nm" +
+                     (hint.empty() ? "" : "; " + detail::visible(hint)));
+  }
+  // The value column's header, where it names a length unit, must name this one.
+  if (const std::string said = column_unit(wave.value_column); length_units().count(said) && said != unit &&
+                                                                  length_units().at(said) != std::string(it->second))
+    throw InputError(r.unit.name + " " + detail::visible(unit) + ", but the value column '" + detail::visible(wave.value_column) +
+                     "' of " + detail::visible(wave.name) + " is in " + detail::visible(said) + ": expected them to agree");
+  std::string amplitude;
+  {
+    const int digits = output_digits(prec) + 25;
+    const SampleNormalisation nz = normalise_samples(
+        wave.name, wave.samples.size(), [&](std::size_t j) { return detail::sample_value(wave, j); },
+        detail::distinct_digits(wave), detail::sample_phase(wave), digits);
+    PrecisionScope scope(nz.digits);
+    amplitude = format_significant(mpfr(nz.scale / static_cast<long>(wave.periods_averaged) * mpfr(it->second)), digits);
+  }
+  PhysicalRequest request = r;
+  request.A.text = amplitude;
+  request.A.name = r.A.name + " (half the peak-to-peak of " + detail::visible(wave.name) + " in " + detail::visible(unit) + ")";
+  request.unit.text.reset();
+  PhysicalOutputs out = physical_at(wave, request, prec, base, warnings);
+  const int digits = output_digits(prec);
+  PrecisionScope scope(static_cast<unsigned>(digits + 20));
+  out.insert(out.begin() + 1, {"A_m", format_significant(mpfr(amplitude), digits)});
+  return out;
+}
+
+namespace {
+PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
+                            std::vector<std::string>* warnings) {
   using Input = InputText;
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
@@ -219,8 +275,27 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
       if (seg.contact) contact_fraction += seg.v - seg.u;
     for (const auto& st : r.stick_phases) stick_fraction += st.end - st.begin;
   } else {
-    beta_c = make_contact(*w, g.gamma, options.solver).beta_c();
+    const Contact<mpfr> c = make_contact(*w, g.gamma, options.solver);
+    beta_c = c.beta_c();
+    for (const auto& seg : c.segments())
+      if (seg.contact) contact_fraction += seg.v - seg.u;  // the body touches while the central spring does
   }
+  // The deepest instant of the period, every spring at n_max = γ + max w: the load (punch: k_z A
+  // n_max; curved: 2 E* A L (n_max X − ∫₀^X σ dx), σ(X) = n_max) and the mean pressure over the
+  // contact circle. The largest local pressure is Hertz's 3/2 of the mean on the sphere; on the
+  // punch's rim (Boussinesq), the cone's tip (Sneddon) and a profile's kinks (the wear flat's rim,
+  // a measured profile's samples) the elastic pressure is unbounded.
+  const mpfr n_max = g.gamma + w->maximum();
+  mpfr peak_force, peak_radius;
+  if (kind == "flat") {
+    peak_force = g.k_z * A * n_max;
+    peak_radius = in.radius;
+  } else {
+    const mpfr X = p->x_at_sigma(n_max);
+    peak_force = 2 * g.E_star * A * length * (n_max * X - p->sigma_integral(X));
+    peak_radius = length * X;
+  }
+  const mpfr peak_mean_pressure = peak_force / (boost::math::constants::pi<mpfr>() * peak_radius * peak_radius);
   if (warnings) {
     // Plausible ranges, wide enough for every engineering solid and rig: moduli from soft rubber
     // (1e5 Pa) to diamond (1.2e12 Pa); an amplitude from 0.1 nm to 1 mm; mu0 up to 2.
@@ -262,17 +337,22 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   line("mu", mu);
   line("F_N_mean_N", force);
   line("F_x_mean_N", mpfr(mu * force));
+  line("F_N_peak_N", peak_force);
+  line("p_mean_peak_Pa", peak_mean_pressure);
+  if (kind == "sphere")
+    line("p_max_peak_Pa", mpfr(3 * peak_mean_pressure / 2));
+  else
+    field("p_max_peak_Pa", "inf");
   using std::isfinite;
   if (isfinite(beta_c))
     line("beta_c", beta_c);
   else
     field("beta_c", "inf");  // an upward jump of n: stick at every beta
-  if (kind == "flat") {
-    line("contact_fraction", contact_fraction);
-    line("stick_fraction", stick_fraction);
-  }
+  line("contact_fraction", contact_fraction);
+  if (kind == "flat") line("stick_fraction", stick_fraction);
   return rec;
 }
+}  // namespace
 
 
 std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request) {

@@ -92,7 +92,8 @@ FourierFit fit_fourier(const WaveSpec& wave, unsigned harmonics) {
   const unsigned digits = working_digits(wave, m);
   PrecisionScope scope(digits);
   std::vector<mpfr> y(n), phi;
-  for (std::size_t j = 0; j < n; ++j) y[j] = mpfr(wave.samples[j]);
+  // Averaged periods: a sample is the sum of K values, the fit is of their mean.
+  for (std::size_t j = 0; j < n; ++j) y[j] = mpfr(mpfr(wave.samples[j]) / static_cast<long>(wave.periods_averaged));
 
   std::vector<mpfr> a(k_count + 1, mpfr(0)), b(k_count + 1, mpfr(0));
   std::ostringstream method;

@@ -47,6 +47,7 @@ class MomentProfile final : public Profile<Real> {
   MomentProfile() : Profile<Real>("moment", ProfileKind::power) {}
   Real sigma_at_x(const Real& x) const override { return x > 0 ? Real(sqrt(2 * x)) : Real(0); }
   Real x_at_sigma(const Real& s) const override { return s > 0 ? Real(s * s / 2) : Real(0); }
+  Real sigma_integral(const Real& x) const override { return x > 0 ? Real(2 * x * sqrt(2 * x) / 3) : Real(0); }
   Real t_at_sigma(const Real& s) const override { return s; }
   Real sigma_at_t(const Real& t) const override { return t; }
   Real dx_dt(const Real& t) const override { return t; }

@@ -24,8 +24,9 @@ std::string decimal_text(double x);
 // WaveSpec is parse_wave's for a file holding those lines, with `label` as its name; messages
 // name `label` and the 0-based index (label[j]) instead of the file and its line. InputError for
 // ragged arrays (t and y of different lengths) and for everything a file reader refuses.
+// periods: as WaveReadOptions::periods (0: one period, a record of several refused).
 WaveSpec samples_wave(const std::vector<std::string>& y, const std::vector<std::string>& t,
-                      const std::string& label = "samples");
+                      const std::string& label = "samples", int periods = 0);
 
 // A Fourier wave w = a_0 + Σ_{k=1..K} a_k cos 2πkφ + b_k sin 2πkφ from a = (a_1 … a_K),
 // b = (b_1 … b_K) and an optional a_0 ("" for none; it is the mean and removed): parse_wave's

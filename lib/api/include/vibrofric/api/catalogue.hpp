@@ -41,15 +41,25 @@ struct WaveSpec {
   // formats"): every stamp is that to its printed digits, so the N samples sit at φ = j/N (times
   // is then empty) and this is the period N·dt as a decimal (40 digits). Empty otherwise.
   std::string period_from_stamps;
+  // samples averaged from a record of this many periods (WaveReadOptions::periods): each y_j is
+  // then the exact sum of the K values at its phase, whose normalised wave is their mean's; raw
+  // values (describe_normalisation, fit) divide by it.
+  unsigned periods_averaged = 1;
 };
 
 // How to read a samples:FILE (README, "File formats"). column: the value column, a header name
 // (exact, as in the header line) or a 1-based index; it lets a file have more than two columns
 // (the time column, if the header names one 'time' or 't', still gives the phases). Empty: the
 // one- and two-column layouts only, as without options.
+// periods: how many periods the record holds (README, "File formats"). 0: one, and a record that
+// looks like K ≥ 2 noisy periods is refused with what to give; 1: one, not checked; K ≥ 2: the
+// K periods are averaged sample by sample (uniform phases, N a multiple of K).
+constexpr int max_record_periods = 100000;
 struct WaveReadOptions {
   std::string column;
   std::string column_name = "column";  // what the caller calls the choice, for messages ("--column")
+  int periods = 0;
+  std::string periods_name = "periods";  // ("--periods")
 };
 
 // Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,
@@ -69,6 +79,9 @@ struct StampedPeriod {
   bool assumed = false;
 };
 std::optional<StampedPeriod> stamped_period(const WaveSpec& wave);
+// The unit a column's header names, as written: "time [s]", "t (ms)", "disp_um", "t/ns",
+// "height in µm" give s, ms, um, ns, µm; "" where it names none.
+std::string column_unit(const std::string& header);
 
 // The normalisation a user wave gets (model.md, "Waveform catalogue": "the normalisation used is
 // reported"), as name/value pairs with values to `digits` significant digits, computed by the code

@@ -15,8 +15,10 @@ namespace vibrofric {
 
 // Outputs as (name, decimal text), in the tool's order: shape, E_star_Pa, G_star_Pa, k_z_N_per_m
 // and k_x_N_per_m (flat) or contact_radius_max_m (curved), lambda (wearflat), beta, gamma,
-// u_mean_m (given F-N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, beta_c, and for the flat punch
-// contact_fraction and stick_fraction.
+// u_mean_m (given F-N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, at the deepest instant
+// F_N_peak_N, p_mean_peak_Pa and p_max_peak_Pa (Hertz on the sphere; "inf" where the elastic
+// pressure is unbounded: the punch's rim, the cone's tip, a profile's kink), beta_c,
+// contact_fraction, and for the flat punch stick_fraction.
 using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
 
 // One input: its value as decimal text, as typed (none: not given), and the name the caller knows
@@ -37,6 +39,9 @@ struct PhysicalRequest {
   InputText v0{{}, "v0"}, f{{}, "f"}, A{{}, "A"}, u_mean{{}, "u_mean"}, F_N{{}, "F_N"}, mu0{{}, "mu0"};
   InputText shape{{}, "shape"}, radius{{}, "radius"}, R{{}, "R"}, half_angle{{}, "half_angle"};
   InputText flat_radius{{}, "flat_radius"};
+  // Instead of A, for a samples wave: the unit of its value column (m, mm, um, µm, nm); A is then
+  // half the record's peak-to-peak, printed as A_m after the shape.
+  InputText unit{{}, "unit"};
 
   // Every input with its member's name, in this order, for a front end that fills them by name.
   std::vector<std::pair<const char*, InputText*>> inputs();
