@@ -173,16 +173,7 @@ class MeasuredProfile final : public Profile<Real> {
   // Term by term, ∫_{r}^{x} t acos(r/t) dt = (x²/2) acos(r/x) − (r/2) √(x² − r²).
   Real sigma_integral(const Real& x) const override {
     using std::atan2;
-    using std::sqrt;
-    if (!(x > 0)) return Real(0);
-    Real sum = 0;
-    for (std::size_t j = 0; j < m_.size() && r_[j] < x; ++j) {
-      const Real dm = j == 0 ? m_[0] : Real(m_[j] - m_[j - 1]);
-      if (dm == 0) continue;
-      const Real root = sqrt(Real((x - r_[j]) * (x + r_[j])));
-      sum += dm * (x * x * atan2(root, r_[j]) - r_[j] * root) / 2;
-    }
-    return sum;
+    return over_kinks(x, [&](const Real& r, const Real& root) { return Real((x * x * atan2(root, r) - r * root) / 2); });
   }
   Real sigma_limit() const override { return limit_; }
   Real flat_length() const override { return r_[flat_]; }
@@ -200,15 +191,20 @@ class MeasuredProfile final : public Profile<Real> {
   // acos(r/x) = atan2(√((x − r)(x + r)), r) keeps its relative accuracy as x → r_j.
   Real g(const Real& x) const {
     using std::atan2;
+    return x * over_kinks(x, [](const Real& r, const Real& root) { return Real(atan2(root, r)); });
+  }
+  // Σ_{r_j < x} (m_j − m_{j−1}) term(r_j, √((x − r_j)(x + r_j))), m_{−1} = 0: 0 for x ≤ 0.
+  template <class Term>
+  Real over_kinks(const Real& x, Term term) const {
     using std::sqrt;
     if (!(x > 0)) return Real(0);
     Real sum = 0;
     for (std::size_t j = 0; j < m_.size() && r_[j] < x; ++j) {
       const Real dm = j == 0 ? m_[0] : Real(m_[j] - m_[j - 1]);
       if (dm == 0) continue;
-      sum += dm * atan2(sqrt(Real((x - r_[j]) * (x + r_[j]))), r_[j]);
+      sum += dm * term(r_[j], Real(sqrt(Real((x - r_[j]) * (x + r_[j])))));
     }
-    return x * sum;
+    return sum;
   }
   std::vector<Real> r_, f_, m_;
   std::size_t flat_ = 0;
