@@ -169,6 +169,7 @@ struct Evaluation {
   std::optional<long long> max_iterations;
   bool escalate = true;
   bool strings = false;
+  bool nan_on_error = false;
 };
 
 Precision to_precision(const std::optional<int>& digits, const py::object& type) {
@@ -353,7 +354,10 @@ class BroadcastIndex {
 // gathered a few hundred at a time and stored under the GIL. Nothing holds all the values' texts.
 class Output {
  public:
-  Output(const Converter& convert, std::size_t n) : convert_(convert) {
+  // dims: the result's shape (a failing element's error names its index in it); nan_on_error:
+  // a failing element is NaN (None in object arrays) instead.
+  Output(const Converter& convert, std::size_t n, std::vector<std::size_t> dims, bool nan_on_error)
+      : convert_(convert), dims_(std::move(dims)), nan_on_error_(nan_on_error) {
     switch (convert.form()) {
       case Form::float64: {
         py::array_t<double> a(static_cast<py::ssize_t>(n));
@@ -377,6 +381,12 @@ class Output {
   // Without the GIL. float64 and long double store the number the stream delivers (the value its
   // text prints, held exactly); the other forms are made from the text.
   void put(std::size_t i, const StreamValue& value) {
+    if (value.error) {
+      if (!nan_on_error_) rethrow_at(i, value.error);
+      if (doubles_) doubles_[i] = std::numeric_limits<double>::quiet_NaN();
+      if (long_doubles_) long_doubles_[i] = std::numeric_limits<long double>::quiet_NaN();
+      return;  // an object array's element stays None
+    }
     if (doubles_) {
       doubles_[i] = static_cast<double>(value.number.value());
     } else if (long_doubles_) {
@@ -400,8 +410,35 @@ class Output {
   const py::array& array() const { return array_; }
 
  private:
+  // The element's error, its message led by its index as numpy.unravel_index writes it ("at index
+  // (2,): ", "(1, 0)"); a scalar call's as it is.
+  [[noreturn]] void rethrow_at(std::size_t i, const std::exception_ptr& error) const {
+    std::string where;
+    if (!dims_.empty()) {
+      std::vector<std::size_t> at(dims_.size());
+      for (std::size_t k = dims_.size(); k-- > 0;) {
+        at[k] = i % dims_[k];
+        i /= dims_[k];
+      }
+      for (std::size_t k = 0; k < at.size(); ++k) where += (k ? ", " : "(") + std::to_string(at[k]);
+      where = "at index " + where + (at.size() == 1 ? ",): " : "): ");
+    }
+    try {
+      std::rethrow_exception(error);
+    } catch (const DomainError& e) {
+      throw DomainError(where + e.what());
+    } catch (const InputError& e) {
+      throw InputError(where + e.what());
+    } catch (const PrecisionError& e) {
+      throw PrecisionError(where + e.what());
+    } catch (const SolverError& e) {
+      throw SolverError(where + e.what());
+    }
+  }
   static constexpr std::size_t batch = 512;
   const Converter& convert_;
+  std::vector<std::size_t> dims_;
+  bool nan_on_error_ = false;
   py::array array_;
   double* doubles_ = nullptr;
   long double* long_doubles_ = nullptr;
@@ -442,8 +479,9 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   const Column gammas(g, "gamma");  // psi: 0.0, never read
   const BroadcastIndex index(dims, betas.shape(), gammas.shape());
 
+  options.deliver_errors = true;
   const Converter convert(result_form(precision, e.strings), precision);
-  Output out(convert, n);
+  Output out(convert, n, dims, e.nan_on_error);
   {
     py::gil_scoped_release release;
     evaluate_stream(
@@ -493,7 +531,7 @@ unsigned to_threads(const py::object& x) {
   return static_cast<unsigned>(*t);
 }
 
-constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False)
+constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False)
 
 The macroscopic coefficient of friction mu/mu0 = int s dphi / int n dphi (Eq. 15; Eqs. 9, 13 of
 the paper) for sliding velocity beta (Eq. 5) and mean indentation gamma = u/A (Eq. 14), in the
@@ -520,10 +558,13 @@ escalate  double and fixed types: recompute in mpfr where the type's rounding is
 strings   return the library's decimal strings for every type.
 
 Scalar arguments give a scalar. Raises ValueError (bad input, gamma without contact, beta <= 0)
-and vibrofric.SolverError (the solver did not converge); never returns NaN for a failure.
+and vibrofric.SolverError (the solver did not converge), for an array the first failing
+element's with its index ('at index (2,): ...'); never returns NaN for a failure, unless
+nan_on_error=True (scipy's convention): then a failing element is NaN (None in object arrays)
+and the others answer.
 )doc";
 
-constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False)
+constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False)
 
 The reduction function Psi_w(beta) = int (n - s) dphi without jumping (Eq. 12), which does not
 depend on gamma, so that mu/mu0 = 1 - Psi_w(beta)/gamma for gamma >= 1 (Eq. 13). For the
@@ -1073,9 +1114,10 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       "mu",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& profile,
          const py::object& digits, const py::object& type, const py::object& threads, const py::object& max_iterations,
-         bool escalate, bool strings) {
+         bool escalate, bool strings, bool nan_on_error) {
         Evaluation e;
         e.quantity = Quantity::mu;
+        e.nan_on_error = nan_on_error;
         e.digits = optional_int(digits, "digits");
         e.type = type;
         e.profile = to_profile(profile);
@@ -1087,14 +1129,15 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "profile"_a = "flat", "digits"_a = py::none(),
       "type"_a = py::none(), "threads"_a = 0, "max_iterations"_a = py::none(), "escalate"_a = true,
-      "strings"_a = false, mu_doc);
+      "strings"_a = false, "nan_on_error"_a = false, mu_doc);
 
   m.def(
       "psi",
       [](const py::object& wave, const py::object& beta, const py::object& digits, const py::object& type,
-         const py::object& threads, const py::object& max_iterations, bool escalate, bool strings) {
+         const py::object& threads, const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
         Evaluation e;
         e.quantity = Quantity::psi;
+        e.nan_on_error = nan_on_error;
         e.digits = optional_int(digits, "digits");
         e.type = type;
         e.threads = to_threads(threads);
@@ -1104,7 +1147,7 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
         return evaluate_broadcast(wave, beta, py::none(), e);
       },
       "wave"_a, "beta"_a, py::kw_only(), "digits"_a = py::none(), "type"_a = py::none(), "threads"_a = 0,
-      "max_iterations"_a = py::none(), "escalate"_a = true, "strings"_a = false, psi_doc);
+      "max_iterations"_a = py::none(), "escalate"_a = true, "strings"_a = false, "nan_on_error"_a = false, psi_doc);
 
   m.def(
       "verify",

@@ -120,3 +120,25 @@ def test_a_call_that_fits_no_signature_is_one_line():
         for w in words:
             assert w in text, text
     assert vibrofric.mu.__doc__.startswith("mu(wave, beta, gamma")
+
+
+@pytest.mark.parametrize("kw", [{}, {"digits": 20}, {"type": "long-double"}, {"strings": True}, {"threads": 2}])
+def test_batches_name_the_failing_index_or_give_nan(kw):
+    # mu and psi over arrays: the first failing element's error with its index (as numpy writes
+    # it), or with nan_on_error=True NaN (None in object arrays) there and every other element the
+    # scalar call's value.
+    betas, gammas = np.array([1.0, 2.0, 0.5]), np.array([[0.2], [-3.0]])
+    with pytest.raises(ValueError, match=r"^at index \(1, 0\): gamma = -3 gives no contact"):
+        vibrofric.mu("sine", betas, gammas, **kw)
+    with pytest.raises(ValueError, match=r"^at index \(1,\): beta = -1"):
+        vibrofric.psi("sine", [1.0, -1.0, 2.0], **kw)
+    got = vibrofric.mu("sine", betas, gammas, nan_on_error=True, **kw)
+    assert got.shape == (2, 3)
+    for j, b in enumerate(betas):
+        assert got[0, j] == vibrofric.mu("sine", b, 0.2, **kw)
+        assert got[1, j] is None if got.dtype == object else math.isnan(got[1, j])
+    psi = vibrofric.psi("sine", [1.0, -1.0, 2.0], nan_on_error=True, **kw)
+    assert psi[0] == vibrofric.psi("sine", 1.0, **kw) and psi[2] == vibrofric.psi("sine", 2.0, **kw)
+    assert psi[1] is None if psi.dtype == object else math.isnan(psi[1])
+    with pytest.raises(ValueError, match=r"^gamma = -3 gives no contact"):  # a scalar call: no index
+        vibrofric.mu("sine", 1.0, -3.0, **kw)

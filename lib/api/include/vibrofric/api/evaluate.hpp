@@ -7,6 +7,7 @@
 #pragma once
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <string>
@@ -70,6 +71,9 @@ struct BatchOptions {
   unsigned threads = 1;                               // 0: all cores
   LadderCounts* ladder = nullptr;                     // counted where non-null (fixed types)
   std::function<void(std::size_t done)> progress;     // called from worker threads, may be empty
+  // evaluate_stream: a point's error (bad input, no contact, the solver's) goes to the sink in
+  // StreamValue::error, and the points after it are computed, instead of ending the stream.
+  bool deliver_errors = false;
 };
 
 // Formatted values, in the order of `points`. Throws the error of the first failing point
@@ -86,6 +90,7 @@ std::vector<std::string> evaluate(const WaveSpec& wave, Quantity q, const std::v
 struct StreamValue {
   std::string text;
   std::optional<long double> number;  // double and long double only
+  std::exception_ptr error;           // with BatchOptions::deliver_errors: the point's error (no text)
 };
 
 // The values of points 0 … count − 1, each passed to the sink as soon as it and every point before
@@ -97,7 +102,8 @@ struct StreamValue {
 //    ahead of the oldest undelivered one wait for it), plus each worker's waveform caches, which
 //    live for the whole stream.
 //  - Texts are identical, string for string, to evaluate()'s for the same point and options.
-//  - Errors: the error of the first failing point by index (as evaluate(); an exception thrown by
+//  - Errors (without options.deliver_errors, which hands each point's to the sink instead): the
+//    error of the first failing point by index (as evaluate(); an exception thrown by
 //    point(i) or by options.progress after point i counts as point i's) is thrown after the rows
 //    before it were delivered, and no row after it is. An exception thrown by the sink stops the
 //    stream and propagates. Either way the workers are joined before evaluate_stream returns.

@@ -423,7 +423,7 @@ class PointEvaluator {
   }
   StreamValue operator()(const Point& p) {
     const Real v = value(p);
-    StreamValue out{format_significant(v, digits_), std::nullopt};
+    StreamValue out{format_significant(v, digits_), std::nullopt, nullptr};
     if constexpr (std::is_same_v<Real, double> || std::is_same_v<Real, long double>) out.number = v;
     return out;
   }
@@ -479,7 +479,12 @@ void evaluate_stream_typed(const WaveSpec& spec, Quantity q, std::size_t count,
     try {
       value = evaluator(point(i));
     } catch (...) {
-      error = std::current_exception();
+      if (options.deliver_errors) {
+        value = StreamValue{};
+        value.error = std::current_exception();
+      } else {
+        error = std::current_exception();
+      }
     }
     const std::size_t d = ++done;
     try {
