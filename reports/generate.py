@@ -184,7 +184,14 @@ def fig4_harmonic(r):
         marks.append("'fig4_eq23.dat' index %d using 1:2 with points pt %d ps 1.3 lc rgb '%s' title 'Eq. 23, γ = %s'" %
                      (i, filled, GAMMA_COLOURS[GAMMAS_FIG.index(g)], g))
         marks.append("'' index %d using 1:2 with points pt %d ps 1.3 lw 1 lc rgb 'black' notitle" % (i, outline))
+    # The curves of γ = 0.2 … 1 lie within a line's width of each other: an inset draws their
+    # distance from γ = 1, μ̄(β, γ) − μ̄(β, 1), on the same grid.
+    close = ["0.8", "0.6", "0.4", "0.2"]
+    ones = dict(rows["1"])
+    r.write_data("fig4_close.dat", [("gamma = " + g, [(b, "%.6e" % (float(m) - float(ones[b]))) for b, m in rows[g]])
+                                    for g in close], "beta mu/mu0(beta, gamma) - mu/mu0(beta, 1) (sine)")
     return r.gnuplot("fig4_harmonic", """
+set multiplot
 set title 'Harmonic wave, 11 values of γ (Fig. 4); markers: Eq. 23 relative to γ_0 = −0.3'
 set xlabel 'β = k_x v_0 / (μ_0 k_z A f)'
 set ylabel 'μ̄ / μ_0'
@@ -193,7 +200,21 @@ set xrange [0:7]
 set yrange [0:1.02]
 plot %s, \\
      %s
-""" % (palette_plot("fig4_harmonic.dat", GAMMAS_FIG), ", \\\n     ".join(marks)))
+set origin 0.36, 0.13
+set size 0.33, 0.42
+set title 'inset: μ̄(β, γ) − μ̄(β, 1), γ = 0.2 … 0.8' font ',12'
+set xlabel 'β' font ',12'
+set ylabel ''
+set xtics 2 font ',11'
+set ytics font ',11'
+set format y '%%.0e'
+set xrange [0:7]
+set yrange [*:*]
+unset key
+set object 1 rectangle from graph 0, graph 0 to graph 1, graph 1 behind fillcolor rgb 'white' fillstyle solid noborder
+plot %s
+unset multiplot
+""" % (palette_plot("fig4_harmonic.dat", GAMMAS_FIG), ", \\\n     ".join(marks), palette_plot("fig4_close.dat", close)))
 
 
 def fig_power_collapse(r):
@@ -594,7 +615,9 @@ def main():
                                    "wave, β = 2, without and with jumping."),
                          ("fig3", "Fig. 3 — square wave, Eq. 22, for the paper's 11 values of γ."),
                          ("fig4", "Fig. 4 — harmonic wave for the paper's 11 values of γ, with Eq. 23 relative to "
-                                  "γ0 = −0.3 as markers: one shape per γ, filled in its curve's colour (see the key)."),
+                                  "γ0 = −0.3 as markers: one shape per γ, filled in its curve's colour (see the key). The "
+                                  "curves of γ = 0.2 to 1 lie within a line's width: the inset draws their distance "
+                                  "from γ = 1."),
                          ("power", "Power-law family p = 3: the curves for five γ collapse onto one under "
                                    "β(1+γ)^−(p−1)/p (the remapping that holds) and not under Eq. 24 as printed."),
                          ("ulp", "Error in ulps over β of the fixed-precision paths of `vibrofric mu`.")):
