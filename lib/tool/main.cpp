@@ -374,7 +374,7 @@ const std::vector<CommandSpec>& commands() {
         {"v0", "M/S", "sliding velocity, > 0 (required; or a range)", "", nullptr},
         {"f", "HZ", "oscillation frequency, > 0 (required; or a range)", "", nullptr},
         {"A", "M", "zero-to-peak amplitude of the normal oscillation, > 0 (required, or --unit; or a range)", "", nullptr},
-        {"unit", "U", "samples wave: its values' unit (m, mm, um, nm); A is then half their peak-to-peak, printed as A_m",
+        {"unit", "U", "samples wave: its values' unit (m, mm, um or µm, nm); A is then half their peak-to-peak, printed as A_m",
          "", nullptr},
         {"u-mean", "M", "mean indentation (or a range); or give --F-N", "", nullptr},
         {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", "", nullptr},

@@ -1330,9 +1330,12 @@ def physical_tests():
 # --------------------------------------------------------------------------------------------
 
 def double_accuracy_tests():
+    # Under the sanitizers (VIBROFRIC_SANITIZED) a corner subset, 36 of the 210 cases: there the
+    # paths matter, not the accuracy over the grid, which the release selection checks.
+    sanitized = os.environ.get("VIBROFRIC_SANITIZED") == "1"
     for w in ("sine", "triangle", "sawtooth-right", "sawtooth-left", "square", "power:2"):
-        for b in ("1e-6", "1e-3", "0.1", "1", "3"):
-            for g in ("-0.999", "-0.9", "-0.5", "0", "0.5", "1", "10"):
+        for b in ("1e-6", "1") if sanitized else ("1e-6", "1e-3", "0.1", "1", "3"):
+            for g in ("-0.999", "0", "10") if sanitized else ("-0.999", "-0.9", "-0.5", "0", "0.5", "1", "10"):
                 def fn(w=w, b=b, g=g):
                     a = ["mu", "--wave", w, "--beta", b, "--gamma", g]
                     d = one_line(a + ["--type", "double"])
@@ -1607,6 +1610,10 @@ def cli_tests():
         fit_got = answer(["fit", "--wave", "samples:" + two, "--column", "3", "--periods", "2", "--harmonics", "3"]).splitlines()
         if [l for l in fit_got if not l.startswith("#")] != [l for l in fit_ref if not l.startswith("#")]:
             raise Fail("fit --periods 2 differs from the fit of the means: %r, %r" % (fit_got, fit_ref))
+        # A wrong K: the pieces are not periods (shifted by a quarter of the record, half a period).
+        rc, out, err = run(["mu", "--wave", "samples:" + two, "--column", "3", "--periods", "4"] + base)
+        if rc != 2 or "4 pieces" not in err or "looks like 2" not in err:
+            raise Fail("--periods 4 on two periods: exit %d, %r: expected the pieces refused" % (rc, err))
         # One period by the caller's word: taken as given.
         answer(["mu", "--wave", "samples:" + two, "--column", "3", "--periods", "1"] + base)
         # physical: the averaged period is 10 ms, so --f 100 agrees and --f 50 does not.
@@ -1656,6 +1663,16 @@ def cli_tests():
                 raise Fail("--unit %s: exit %d %r" % (unit, rc, err))
             if unit != "um" and (rc != 2 or "displacement [um]" not in err or "agree" not in err):
                 raise Fail("--unit %s against the header's um: exit %d, %r: expected a refusal" % (unit, rc, err))
+        # A column in another quantity, or in a length unit written after '_' in UTF-8, is refused.
+        for column, unit, words in (("force [N]", "um", ["force [N]", "displacement"]),):
+            rc, out, err = run(physical_args(**dict(common, **{"--A": None, "--unit": unit, "--column": column})))
+            if rc != 2 or not all(w in err for w in words):
+                raise Fail("--unit %s on column %s: exit %d, %r: expected a refusal" % (unit, column, rc, err))
+        micro = write("micro.csv", "t,x_\u00b5m\n0,0\n1,500\n2,0\n3,-500\n4,0\n")
+        rc, out, err = run(physical_args(**{"--wave": "samples:" + micro, "--column": "2", "--A": None, "--unit": "nm",
+                                            "--f": "0.25"}))
+        if rc != 2 or "agree" not in err:
+            raise Fail("--unit nm on a column x_\u00b5m: exit %d, %r: expected a refusal" % (rc, err))
         plain = write("plain-nm.txt", "0\n500\n0\n-500\n")
         out = ok_run(physical_args(**{"--wave": "samples:" + plain, "--A": None, "--unit": "nm", "--digits": "10"}))
         if out.splitlines()[1] != "A_m = 5.000000000e-07":

@@ -173,47 +173,60 @@ std::string decimal_sum(const std::vector<const std::string*>& texts) {
   return sum.str() + "e" + std::to_string(low);
 }
 
-// A record of K ≥ 2 noisy periods of one signal (uniform phases, N samples, linear between):
-// shifted by N/K samples it differs from itself only by its noise, while shifted by less than
-// N/K (eighths of it) it differs by about its whole variation. One period of a smooth signal,
-// shifted by a small N/K, differs little, but no less than by the shorter shifts: the test is
-// d(N/K) < 1 % and < 5 % of max_j d(j N/(8K)), d(L) = Σ (y(x) − y(x + L))² / (2 Σ (y − ȳ)²) over up
-// to 20,000 equally spaced x (every sample of a shorter record). The largest K up to min(64, N/8)
-// that passes, with d(N/K); none where no K does.
+// How far a record of N samples (uniform phases, linear between) is from repeating after `lag`
+// samples: r(L) = rms(y(x) − y(x + L)) / rms(y − ȳ) over up to 20,000 equally spaced x (every
+// sample of a shorter record), y periodic over the record. A record of K noisy periods has
+// r(N/K) at its noise level; one period of a signal, shifted by a fraction of itself, about √2
+// (a sine by N/2: 2).
+class Repetition {
+ public:
+  explicit Repetition(const std::vector<std::string>& y) : n_(y.size()), m_(std::min<std::size_t>(n_, 20000)) {
+    v_.reserve(n_);
+    for (const auto& x : y) v_.push_back(std::strtod(x.c_str(), nullptr));
+    step_ = static_cast<double>(n_) / static_cast<double>(m_);
+    double mean = 0;
+    for (std::size_t i = 0; i < m_; ++i) mean += at(static_cast<double>(i) * step_) / static_cast<double>(m_);
+    for (std::size_t i = 0; i < m_; ++i) variance_ += (at(static_cast<double>(i) * step_) - mean) * (at(static_cast<double>(i) * step_) - mean);
+  }
+  bool varies() const { return variance_ > 0; }
+  double r(double lag) const {
+    double sum = 0;
+    for (std::size_t i = 0; i < m_; ++i) {
+      const double x = static_cast<double>(i) * step_, e = at(x) - at(x + lag);
+      sum += e * e;
+    }
+    return std::sqrt(sum / variance_);
+  }
+
+ private:
+  double at(double x) const {  // the periodic piecewise-linear record at index x ≥ 0
+    x = std::fmod(x, static_cast<double>(n_));
+    const auto j = std::min(static_cast<std::size_t>(x), n_ - 1);
+    const double t = x - static_cast<double>(j);
+    return (1 - t) * v_[j] + t * v_[(j + 1) % n_];
+  }
+  std::size_t n_, m_;
+  std::vector<double> v_;
+  double step_ = 1, variance_ = 0;
+};
+
+// A record of K ≥ 2 noisy periods of one signal: r(N/K) < 0.14 (the periods differ by less than
+// 14 % rms of the signal), and below a fifth of the largest r of the shorter shifts j N/(8K),
+// j = 1 … 7, about √2 for any signal: one period of a smooth signal, shifted by a small N/K,
+// differs little, but no less than by those. The largest K up to min(64, N/8) that passes, with
+// its r; none where no K does (or N < 16).
 std::optional<std::pair<std::size_t, double>> repeated_periods(const std::vector<std::string>& y) {
   const std::size_t n = y.size();
   if (n < 16) return std::nullopt;
-  std::vector<double> v;
-  v.reserve(n);
-  for (const auto& x : y) v.push_back(std::strtod(x.c_str(), nullptr));
-  const std::size_t m = std::min<std::size_t>(n, 20000);
-  const double step = static_cast<double>(n) / static_cast<double>(m);
-  const auto at = [&](double x) {  // the periodic piecewise-linear record at index x ≥ 0
-    x = std::fmod(x, static_cast<double>(n));
-    const auto j = std::min(static_cast<std::size_t>(x), n - 1);
-    const double t = x - static_cast<double>(j);
-    return (1 - t) * v[j] + t * v[(j + 1) % n];
-  };
-  double mean = 0;
-  for (std::size_t i = 0; i < m; ++i) mean += at(static_cast<double>(i) * step) / static_cast<double>(m);
-  double variance = 0;
-  for (std::size_t i = 0; i < m; ++i) variance += (at(static_cast<double>(i) * step) - mean) * (at(static_cast<double>(i) * step) - mean);
-  if (!(variance > 0)) return std::nullopt;
-  const auto d = [&](double lag) {
-    double sum = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-      const double x = static_cast<double>(i) * step, e = at(x) - at(x + lag);
-      sum += e * e;
-    }
-    return sum / (2 * variance);
-  };
+  const Repetition rep(y);
+  if (!rep.varies()) return std::nullopt;
   std::optional<std::pair<std::size_t, double>> found;
   for (std::size_t k = 2; k <= std::min<std::size_t>(n / 8, 64); ++k) {
-    const double period = static_cast<double>(n) / static_cast<double>(k), repeat = d(period);
-    if (!(repeat < 0.01)) continue;
+    const double period = static_cast<double>(n) / static_cast<double>(k), repeat = rep.r(period);
+    if (!(repeat < 0.14)) continue;
     double within = 0;
-    for (int j = 1; j < 8; ++j) within = std::max(within, d(period * j / 8));
-    if (repeat < 0.05 * within) found = std::make_pair(k, repeat);
+    for (int j = 1; j < 8; ++j) within = std::max(within, rep.r(period * j / 8));
+    if (repeat < 0.2 * within) found = std::make_pair(k, repeat);
   }
   return found;
 }
@@ -573,6 +586,20 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
       throw InputError(options.periods_name + " = " + std::to_string(k) + " for " + quoted(visible(source.name)) + " (" +
                        std::to_string(n) + " samples" + (uniform_phases ? "" : ", time stamps not uniform") +
                        "): expected uniformly spaced samples, a whole number of them (at least 2) in each period");
+    // The K pieces must be periods of one signal: shifted by N/K the record repeats within half
+    // its rms (a K that is not the record's: about √2, its pieces shifted by a fraction of a period).
+    if (const Repetition rep(s.samples); rep.varies()) {
+      const double r = rep.r(static_cast<double>(n / k));
+      if (!(r < 0.5)) {
+        const auto seen = repeated_periods(s.samples);
+        char share[32];
+        std::snprintf(share, sizeof share, "%.2g", 100 * r);
+        throw InputError(options.periods_name + " = " + std::to_string(k) + " for " + quoted(visible(source.name)) + ": its " +
+                         std::to_string(k) + " pieces of " + std::to_string(n / k) + " samples differ by " + share +
+                         " % rms of the signal: expected " + std::to_string(k) + " periods of one signal" +
+                         (seen ? " (the record looks like " + std::to_string(seen->first) + ")" : ""));
+      }
+    }
     std::vector<std::string> folded;
     for (std::size_t j = 0; j < n / k; ++j) {
       std::vector<const std::string*> same_phase;
@@ -593,7 +620,7 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
       std::snprintf(share, sizeof share, "%.2g", 100 * relative);
       throw InputError(source.name + ": the " + std::to_string(n) + " samples look like " + std::to_string(k) +
                        " periods (shifted by N/" + std::to_string(k) + " they differ from themselves by " + share +
-                       " % of their variation): expected one period; give " + options.periods_name + " " +
+                       " % rms of the signal): expected one period; give " + options.periods_name + " " +
                        std::to_string(k) + " to average them" + (n % k ? " (after cutting the record to a whole number of periods)" : "") +
                        ", or " + options.periods_name + " 1 if the record is one period");
     }
@@ -614,7 +641,8 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
 }
 
 std::string column_unit(const std::string& header) {
-  static const std::regex unit_re(R"(.*?(?:[\[(]\s*(\S+?)\s*[\])]|[_/]\s*(\w+)|\s+in\s+(\S+))\s*)", std::regex::icase);
+  // After '_' or '/' the unit is a run of anything but spaces, '_' and '/' ("x_µm": \w is ASCII).
+  static const std::regex unit_re(R"(.*?(?:[\[(]\s*(\S+?)\s*[\])]|[_/]\s*([^\s_/]+)|\s+in\s+(\S+))\s*)", std::regex::icase);
   std::smatch m;
   std::string unit;
   if (std::regex_match(header, m, unit_re))
@@ -741,7 +769,10 @@ std::vector<std::pair<std::string, std::string>> describe_normalisation(const Wa
   std::vector<std::pair<std::string, std::string>> rows{{"samples", std::to_string(wave.samples.size())}};
   if (k > 1) rows.emplace_back("periods", std::to_string(k) + " (averaged sample by sample)");
   for (auto& row : std::vector<std::pair<std::string, std::string>>{
-          {"end_point", !wave.period_from_stamps.empty() ? "none (uniform stamps: period N dt)" : wave.times.empty() ? "none" : "dropped"},
+          {"end_point", !wave.period_from_stamps.empty()
+                            ? "none (uniform stamps: period N dt" + (k > 1 ? "/" + std::to_string(k) : std::string()) + ")"
+                        : wave.times.empty() ? "none"
+                                             : "dropped"},
           {"time_column", wave.times.empty() && wave.period_from_stamps.empty() ? "none"
                           : wave.time_column.empty()                          ? "unnamed"
                                                                               : wave.time_column},

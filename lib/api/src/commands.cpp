@@ -68,11 +68,13 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
     throw InputError(r.unit.name + " '" + detail::visible(unit) + "': expected m, mm, um (or µm) or nm" +
                      (hint.empty() ? "" : "; " + detail::visible(hint)));
   }
-  // The value column's header, where it names a length unit, must name this one.
-  if (const std::string said = column_unit(wave.value_column); length_units().count(said) && said != unit &&
-                                                                  length_units().at(said) != std::string(it->second))
+  // The value column's header, where it names a unit, must name this one (a force in N, a
+  // velocity in mm/s is no displacement).
+  if (const std::string said = column_unit(wave.value_column);
+      !said.empty() && !(length_units().count(said) && length_units().at(said) == std::string(it->second)))
     throw InputError(r.unit.name + " " + detail::visible(unit) + ", but the value column '" + detail::visible(wave.value_column) +
-                     "' of " + detail::visible(wave.name) + " is in " + detail::visible(said) + ": expected them to agree");
+                     "' of " + detail::visible(wave.name) + " is in " + detail::visible(said) +
+                     (length_units().count(said) ? ": expected them to agree" : ": expected a displacement (m, mm, um, nm)"));
   std::string amplitude;
   {
     const int digits = output_digits(prec) + 25;
