@@ -521,7 +521,14 @@ def main():
         clean = [m for m in c["measured"] if m["name"].startswith(("smallest counterexample", "counterexample"))]
         clean.sort(key=lambda m: not m["name"].startswith("smallest"))
         for m in clean[:1]:
-            w("- **Counterexample:** %s: %s" % (m["name"], m["value"]))
+            # The check's name for it, without the word the heading already says.
+            name = m["name"]
+            for word in ("smallest counterexample", "counterexample"):
+                if name.startswith(word):
+                    name = name[len(word):].lstrip(" :")
+                    break
+            w("- **Counterexample%s:** %s" % (" (the smallest)" if m["name"].startswith("smallest") else "",
+                                             (name + ": " if name else "") + m["value"]))
         w("- **%s** (deviation %s, %s): %s" % ("Largest deviation on the grid" if clean else "Counterexample",
                                               c["deviation"], c["deviation_unit"], c["worst"]))
         if c["scope"]:
