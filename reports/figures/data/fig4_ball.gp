@@ -3,7 +3,7 @@ set key box opaque
 set grid
 
 set multiplot layout 1,2 title 'Harmonic wave, 11 values of γ: flat punch (left, Fig. 4) and sphere (right, MDR)'
-set xlabel 'β = k_x v_0 / (μ_0 k_z A f)'
+set xlabel 'β = G^* v_0 / (μ_0 E^* A f)   (on the punch k_x/k_z = G^*/E^*)'
 set ylabel 'μ̄ / μ_0'
 set xrange [0:7]
 set yrange [0:1.02]
