@@ -1323,6 +1323,31 @@ def physical_tests():
          curved_fn(["--shape", "sphere", "--R", "0.01"], hertz, hertz_peak))
     case("physical --shape cone (triangle): Eq. 19, the Sneddon mean load, peak load and mean pressure",
          curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon, sneddon_peak))
+    # A measured profile of two samples in metres, f = r: the cone of 45 degrees (Sneddon).
+    cone_file = write("cone45.txt", "0 0\n0.001 0.001\n")
+    case("physical --shape profile:FILE (two samples, a 45-degree cone): Sneddon's mean load, peak load and pressure",
+         curved_fn(["--shape", "profile:" + cone_file], sneddon, sneddon_peak))
+
+    def wearflat_peak():
+        # Wear flat of radius b on a sphere of radius R (MDR, g = (x/R) sqrt(x^2 - b^2) beyond b):
+        # at depth d the contact radius is a^2 = (b^2 + sqrt(b^4 + 4 R^2 d^2))/2 and the load
+        # F = (2 E*/(3 R)) sqrt(a^2 - b^2) (2 a^2 + b^2); the rim of the flat is a kink: p_max inf.
+        a_args = physical_args(tri, **{"--digits": "30", "--radius": None}) + ["--shape", "wearflat", "--R", "0.01",
+                                                                                "--flat-radius", "0.0001"]
+        got = parse(ok_run(a_args))
+        exact, _ = groups(**steel)   # E* exact (Eq. 1), not its printed rounding
+        E = Decimal(exact["E_star_Pa"].numerator) / Decimal(exact["E_star_Pa"].denominator)
+        R, b = Decimal("0.01"), Decimal("0.0001")
+        d = Decimal(steel["A"]) * (1 + Decimal(steel["umean"]) / Decimal(steel["A"]))
+        a2 = (b * b + (b ** 4 + 4 * R * R * d * d).sqrt()) / 2
+        force = 2 * E / (3 * R) * (a2 - b * b).sqrt() * (2 * a2 + b * b)
+        expect_digits(got["contact_radius_max_m"], Fraction(a2.sqrt()), 30, "%s: contact radius" % cmd(a_args))
+        expect_digits(got["F_N_peak_N"], Fraction(force), 30, "%s: peak F_N" % cmd(a_args))
+        expect_digits(got["p_mean_peak_Pa"], Fraction(force / (PI_DEC * a2)), 30, "%s: mean pressure" % cmd(a_args))
+        if got["p_max_peak_Pa"] != "inf":
+            raise Fail("%s: p_max_peak_Pa = %s, expected inf (the flat's rim)" % (cmd(a_args), got["p_max_peak_Pa"]))
+    case("physical --shape wearflat (triangle): the peak load, contact radius and mean pressure of the MDR closed form",
+         wearflat_peak)
 
 
 # --------------------------------------------------------------------------------------------
