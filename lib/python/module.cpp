@@ -24,6 +24,7 @@
 
 #include "vibrofric/api/arrays.hpp"
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/fit.hpp"
@@ -160,6 +161,32 @@ std::vector<std::string> array_texts(const py::object& x, const std::string& wha
   return column_texts(a, what);
 }
 
+// The element's error, its message led by its index as numpy.unravel_index writes it ("at index
+// (2,): ", "(1, 0)"); a scalar call's (dims empty) as it is.
+[[noreturn]] void rethrow_at_index(const std::vector<std::size_t>& dims, std::size_t i, const std::exception_ptr& error) {
+  std::string where;
+  if (!dims.empty()) {
+    std::vector<std::size_t> at(dims.size());
+    for (std::size_t k = dims.size(); k-- > 0;) {
+      at[k] = i % dims[k];
+      i /= dims[k];
+    }
+    for (std::size_t k = 0; k < at.size(); ++k) where += (k ? ", " : "(") + std::to_string(at[k]);
+    where = "at index " + where + (at.size() == 1 ? ",): " : "): ");
+  }
+  try {
+    std::rethrow_exception(error);
+  } catch (const DomainError& e) {
+    throw DomainError(where + e.what());
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
+  } catch (const PrecisionError& e) {
+    throw PrecisionError(where + e.what());
+  } catch (const SolverError& e) {
+    throw SolverError(where + e.what());
+  }
+}
+
 struct Evaluation {
   Quantity quantity;
   std::optional<int> digits;
@@ -170,6 +197,8 @@ struct Evaluation {
   bool escalate = true;
   bool strings = false;
   bool nan_on_error = false;
+  bool certify = false;
+  std::string profile_text;  // as given, for messages
 };
 
 Precision to_precision(const std::optional<int>& digits, const py::object& type) {
@@ -410,31 +439,7 @@ class Output {
   const py::array& array() const { return array_; }
 
  private:
-  // The element's error, its message led by its index as numpy.unravel_index writes it ("at index
-  // (2,): ", "(1, 0)"); a scalar call's as it is.
-  [[noreturn]] void rethrow_at(std::size_t i, const std::exception_ptr& error) const {
-    std::string where;
-    if (!dims_.empty()) {
-      std::vector<std::size_t> at(dims_.size());
-      for (std::size_t k = dims_.size(); k-- > 0;) {
-        at[k] = i % dims_[k];
-        i /= dims_[k];
-      }
-      for (std::size_t k = 0; k < at.size(); ++k) where += (k ? ", " : "(") + std::to_string(at[k]);
-      where = "at index " + where + (at.size() == 1 ? ",): " : "): ");
-    }
-    try {
-      std::rethrow_exception(error);
-    } catch (const DomainError& e) {
-      throw DomainError(where + e.what());
-    } catch (const InputError& e) {
-      throw InputError(where + e.what());
-    } catch (const PrecisionError& e) {
-      throw PrecisionError(where + e.what());
-    } catch (const SolverError& e) {
-      throw SolverError(where + e.what());
-    }
-  }
+  [[noreturn]] void rethrow_at(std::size_t i, const std::exception_ptr& error) const { rethrow_at_index(dims_, i, error); }
   static constexpr std::size_t batch = 512;
   const Converter& convert_;
   std::vector<std::size_t> dims_;
@@ -445,6 +450,62 @@ class Output {
   PyObject** objects_ = nullptr;
   std::vector<std::pair<std::size_t, std::string>> pending_;
 };
+
+// certify=True (certify.hpp): each point computed as without it, and proven the correct rounding
+// of its exact value (piecewise-linear waves, flat punch); the result is (lo, hi) of
+// fractions.Fraction, equal, the exact value (arrays of them for array arguments).
+py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, const BatchOptions& options,
+                             const Column& betas, const Column& gammas, const BroadcastIndex& index, std::size_t n,
+                             const std::vector<std::size_t>& dims, const py::tuple& shape, const Evaluation& e) {
+  std::optional<Certifier> certifier;
+  if (options.profile.kind != ProfileKind::flat)
+    throw InputError("certify=True with profile = " + e.profile_text +
+                     ": certified values exist for the flat punch only (a curved contact integrates over springs)");
+  if (e.nan_on_error)
+    throw InputError("certify=True gives exact values or raises, nan_on_error=True gives NaN for a failure: give one of them");
+  if (!options.escalate)
+    throw InputError("certify=True proves the guaranteed value, escalate=False gives one that is not guaranteed: give one of them");
+  try {
+    certifier.emplace(wave, options.profile);
+  } catch (const InputError& err) {
+    throw InputError(std::string("certify=True: ") + err.what());
+  }
+  const bool with_gamma = e.quantity == Quantity::mu;
+  auto point = [&](std::size_t i) {
+    const auto at = index(i);
+    Point p;
+    p.beta = betas.text(at[0]);
+    if (with_gamma) p.gamma = gammas.text(at[1]);
+    return p;
+  };
+  std::vector<exact::Rational> values(n);
+  {
+    py::gil_scoped_release release;
+    evaluate_stream(wave, e.quantity, n, point, precision, options, [&](std::size_t i, const StreamValue& value) {
+      if (value.error) rethrow_at_index(dims, i, value.error);
+      const Certificate c = (*certifier)(e.quantity, point(i), precision, value.text);
+      if (!c.correctly_rounded)
+        rethrow_at_index(dims, i, std::make_exception_ptr(SolverError(
+            "certify=True: the value " + value.text + " is not the correct rounding of the exact value " + c.exact +
+            " (that is " + c.nearest.front() + "): a solver bug, please report it")));
+      values[i] = c.value;
+    });
+  }
+  const py::object fraction = py::module_::import("fractions").attr("Fraction");
+  const py::object integer = py::module_::import("builtins").attr("int");
+  auto to_fraction = [&](const exact::Rational& x) {
+    return fraction(integer(numerator(x).str()), integer(denominator(x).str()));
+  };
+  if (dims.empty()) {
+    const py::object x = to_fraction(values.front());
+    return py::make_tuple(x, x);
+  }
+  const py::module_ np = py::module_::import("numpy");
+  py::array flat = np.attr("empty")(n, "dtype"_a = "object");
+  for (std::size_t i = 0; i < n; ++i) flat[py::int_(i)] = to_fraction(values[i]);
+  const py::object array = flat.attr("reshape")(shape);
+  return py::make_tuple(array, array.attr("copy")());
+}
 
 // Values of `quantity` at the broadcast of beta and gamma (gamma None for psi): one evaluate_stream
 // over the points, each made from the arguments by index on the worker threads, each value stored
@@ -480,6 +541,7 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   const BroadcastIndex index(dims, betas.shape(), gammas.shape());
 
   options.deliver_errors = true;
+  if (e.certify) return certify_broadcast(wave, precision, options, betas, gammas, index, n, dims, shape, e);
   const Converter convert(result_form(precision, e.strings), precision);
   Output out(convert, n, dims, e.nan_on_error);
   {
@@ -531,7 +593,7 @@ unsigned to_threads(const py::object& x) {
   return static_cast<unsigned>(*t);
 }
 
-constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False)
+constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
 
 The macroscopic coefficient of friction mu/mu0 = int s dphi / int n dphi (Eq. 15; Eqs. 9, 13 of
 the paper) for sliding velocity beta (Eq. 5) and mean indentation gamma = u/A (Eq. 14), in the
@@ -562,13 +624,21 @@ and vibrofric.SolverError (the solver did not converge), for an array the first 
 element's with its index ('at index (2,): ...'); never returns NaN for a failure, unless
 nan_on_error=True (scipy's convention): then a failing element is NaN (None in object arrays)
 and the others answer.
+
+certify=True (the piecewise-linear waves 'triangle', 'sawtooth-right', 'sawtooth-left', 'square',
+'power:1' and samples, on the flat punch): returns (lo, hi), the enclosure of the exact value as
+fractions.Fraction -- for these waves lo == hi, the exact rational -- (arrays of them for array
+arguments), after proving that the value computed at type/digits is its correct rounding (a
+value that is not raises vibrofric.SolverError). float(lo) is the correctly rounded double.
+Other waves and profiles raise ValueError.
 )doc";
 
-constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False)
+constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
 
 The reduction function Psi_w(beta) = int (n - s) dphi without jumping (Eq. 12), which does not
 depend on gamma, so that mu/mu0 = 1 - Psi_w(beta)/gamma for gamma >= 1 (Eq. 13). For the
-triangle Psi = (4 - beta)/(4 + beta) (Eq. 17). Arguments and results as mu(); beta broadcasts.
+triangle Psi = (4 - beta)/(4 + beta) (Eq. 17). Arguments and results as mu() (certify=True
+too); beta broadcasts.
 Flat punch only (Psi does not exist for curved profiles).
 )doc";
 
@@ -1114,13 +1184,15 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       "mu",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& profile,
          const py::object& digits, const py::object& type, const py::object& threads, const py::object& max_iterations,
-         bool escalate, bool strings, bool nan_on_error) {
+         bool escalate, bool strings, bool nan_on_error, bool certify) {
         Evaluation e;
         e.quantity = Quantity::mu;
         e.nan_on_error = nan_on_error;
+        e.certify = certify;
         e.digits = optional_int(digits, "digits");
         e.type = type;
         e.profile = to_profile(profile);
+        e.profile_text = py_repr(profile);
         e.threads = to_threads(threads);
         if (auto mi = optional_int(max_iterations, "max_iterations")) e.max_iterations = *mi;
         e.escalate = escalate;
@@ -1129,15 +1201,17 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "profile"_a = "flat", "digits"_a = py::none(),
       "type"_a = py::none(), "threads"_a = 0, "max_iterations"_a = py::none(), "escalate"_a = true,
-      "strings"_a = false, "nan_on_error"_a = false, mu_doc);
+      "strings"_a = false, "nan_on_error"_a = false, "certify"_a = false, mu_doc);
 
   m.def(
       "psi",
       [](const py::object& wave, const py::object& beta, const py::object& digits, const py::object& type,
-         const py::object& threads, const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
+         const py::object& threads, const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error,
+         bool certify) {
         Evaluation e;
         e.quantity = Quantity::psi;
         e.nan_on_error = nan_on_error;
+        e.certify = certify;
         e.digits = optional_int(digits, "digits");
         e.type = type;
         e.threads = to_threads(threads);
@@ -1147,7 +1221,8 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
         return evaluate_broadcast(wave, beta, py::none(), e);
       },
       "wave"_a, "beta"_a, py::kw_only(), "digits"_a = py::none(), "type"_a = py::none(), "threads"_a = 0,
-      "max_iterations"_a = py::none(), "escalate"_a = true, "strings"_a = false, "nan_on_error"_a = false, psi_doc);
+      "max_iterations"_a = py::none(), "escalate"_a = true, "strings"_a = false, "nan_on_error"_a = false,
+      "certify"_a = false, psi_doc);
 
   m.def(
       "verify",

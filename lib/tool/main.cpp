@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/fit.hpp"
@@ -117,6 +118,7 @@ struct Flags {
   std::string type_text;
   std::optional<int> digits;
   bool no_escalate = false;
+  bool certify = false;
   // Solver controls (solver.hpp Options): a budget the solver cannot meet is an error, never a value.
   Options solver;
   // mu, psi, trace: β and γ as typed; sweep: their values, and γ's text
@@ -295,6 +297,10 @@ void profile_named(Flags& f, const std::string& t) {
   f.profile_text = t;
 }
 void format_of_point(Flags& f, const std::string& t) { f.format = format_named(t); }
+const FlagSpec kCertifyFlag{
+    "certify", "", "piecewise-linear waves on the flat punch: print the exact rational value and prove that the "
+                   "printed one is its correct rounding (=true/false/yes/no/1/0)", "",
+    [](Flags& f, const std::string& t) { f.certify = switch_value(t, "certify"); }};
 // A sweep writes rows: csv (its default) or json.
 void format_of_rows(Flags& f, const std::string& t) {
   f.format = format_named(t);
@@ -331,14 +337,16 @@ const std::vector<CommandSpec>& commands() {
            f.gamma = t;
          }},
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
-        {"format", "F", "text | csv | json", "text", format_of_point}},
+        {"format", "F", "text | csv | json", "text", format_of_point},
+        kCertifyFlag},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
        std::string(kWaves) + kProfiles,
        run_mu},
       {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
        {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", decimal_beta},
         {"profile", "P", "flat only: in a curved contact the outer springs always jump", "flat", profile_named},
-        {"format", "F", "text | csv | json", "text", format_of_point}},
+        {"format", "F", "text | csv | json", "text", format_of_point},
+        kCertifyFlag},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
        kWaves,
        run_psi},
@@ -359,7 +367,8 @@ const std::vector<CommandSpec>& commands() {
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
         {"threads", "N", "worker threads, 0 for every core", "0",
          [](Flags& f, const std::string& t) { f.threads = static_cast<unsigned>(integer(t, "--threads", 0, max_threads)); }},
-        {"format", "F", "csv | json", "csv", format_of_rows}},
+        {"format", "F", "csv | json", "csv", format_of_rows},
+        kCertifyFlag},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
        std::string(kWaves) + kProfiles,
        run_sweep},
@@ -600,6 +609,37 @@ WaveSpec read_wave(const Flags& f) {
   return wave;
 }
 
+// --certify (README, "Precision"): the exact value of a piecewise-linear wave's point and the proof
+// that the printed value is its correct rounding. A printed value that is not would be a solver
+// bug: an error, and the value is not printed.
+std::optional<Certifier> certifier_of(const Flags& f, const WaveSpec& wave, const BatchOptions& opt) {
+  if (!f.certify) return std::nullopt;
+  if (f.no_escalate)
+    throw InputError("--certify proves the guaranteed value, --no-escalate prints one that is not guaranteed: give one of them");
+  if (opt.profile.kind != ProfileKind::flat)
+    throw InputError("--certify --profile " + detail::visible(f.profile_text.value_or("")) +
+                     ": certified values exist for the flat punch only (a curved contact integrates over springs)");
+  try {
+    return Certifier(wave, opt.profile);
+  } catch (const InputError& e) {
+    throw InputError("--certify --wave " + detail::visible(f.wave.value_or("")) + ": " + e.what());
+  }
+}
+
+Certificate certified(const Certifier& certifier, Quantity q, const Point& p, const Precision& precision,
+                      const std::string& printed) {
+  Certificate c = certifier(q, p, precision, printed);
+  if (!c.correctly_rounded)
+    throw SolverError("--certify: the printed " + printed + " is not the correct rounding of the exact value " + c.exact +
+                      " (that is " + c.nearest.front() + "): a solver bug, please report it");
+  return c;
+}
+
+std::string rounding_name(const Precision& p) {
+  return p.type == NumberType::mpfr ? "to " + std::to_string(p.digits) + " significant digits"
+                                    : "to the nearest " + number_type_name(p.type);
+}
+
 int run_point(const Flags& f, Quantity q) {
   const WaveSpec wave = read_wave(f);
   const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : std::string()};
@@ -609,9 +649,17 @@ int run_point(const Flags& f, Quantity q) {
                      ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
                      "so Eq. 13's separation does not exist (use mu)");
   const Format format = f.format.value_or(Format::text);
-  const std::string value = evaluate(wave, q, {p}, precision_of(f), opt).front();
+  const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
+  const Precision precision = precision_of(f);
+  const std::string value = evaluate(wave, q, {p}, precision, opt).front();
+  std::optional<Certificate> cert;
+  if (certifier) cert = certified(*certifier, q, p, precision, value);
   if (format == Format::text) {
     std::cout << value << '\n';
+    if (cert)
+      std::cout << "exact: " << cert->exact << "\nproven: " << value << " is the exact value rounded " << rounding_name(precision)
+                << (cert->nearest.size() > 1 ? " (a tie: it lies midway between " + cert->nearest[0] + " and " + cert->nearest[1] + ")" : "")
+                << '\n';
     return 0;
   }
   std::vector<std::string> names{"wave"}, values{wave.name};
@@ -627,6 +675,10 @@ int run_point(const Flags& f, Quantity q) {
   }
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   values.push_back(value);
+  if (cert) {
+    names.insert(names.end(), {"exact", "correctly_rounded"});
+    values.insert(values.end(), {cert->exact, "proven"});
+  }
   if (format == Format::csv) {
     write_csv_row(names);
     write_csv_row(values);
@@ -689,6 +741,8 @@ int run_sweep(const Flags& f) {
   names.push_back("beta");
   if (q == Quantity::mu) names.push_back("gamma");
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
+  const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
+  if (certifier) names.insert(names.end(), {"exact", "correctly_rounded"});
   // Rows in their deterministic order as they complete; memory bounded whatever the count. The
   // domain (β ≥ 0 and representable, contact at the smallest γ, a profile's extent at the largest)
   // is monotone in β and γ, so the four corners decide it before any row is written.
@@ -719,6 +773,7 @@ int run_sweep(const Flags& f) {
     r.push_back(pt.beta);
     if (q == Quantity::mu) r.push_back(pt.gamma);
     r.push_back(value.text);
+    if (certifier) r.insert(r.end(), {certified(*certifier, q, pt, prec, value.text).exact, "proven"});
     if (format == Format::json)
       std::cout << (i ? ",\n " : "\n ") << json_record(names, r).dump();
     else

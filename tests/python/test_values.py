@@ -154,3 +154,34 @@ def test_curved_profiles():
     assert vibrofric.mu("triangle", 1, 0.5, profile="sphere") == 0.4
     got = vibrofric.mu("sine", 1, 0.5, profile="sphere", digits=40, strings=True)
     assert got == "0.3277956009610709120574149598203810342366"
+
+
+# certify=True: the exact value as (lo, hi) of Fractions, equal to the closed forms exactly.
+def test_certify_gives_the_closed_forms_exactly():
+    b, g = np.meshgrid(BETAS, GAMMAS, indexing="ij")
+    for wave, form in (("triangle", mu_triangle), ("square", mu_square), ("sawtooth-right", mu_sawtooth_right),
+                       ("sawtooth-left", mu_sawtooth_left)):
+        lo, hi = vibrofric.mu(wave, b, g, certify=True)
+        assert lo.shape == b.shape and hi.shape == b.shape
+        for i, j in np.ndindex(b.shape):
+            want = form(float(b[i, j]), float(g[i, j]))
+            assert lo[i, j] == want and hi[i, j] == want, (wave, b[i, j], g[i, j], lo[i, j], want)
+    for beta in BETAS:
+        assert vibrofric.psi("triangle", beta, certify=True) == (psi_triangle(beta), psi_triangle(beta))
+        assert vibrofric.psi("sawtooth-left", str(beta), certify=True, digits=40) == (psi_sawtooth_left(beta),) * 2
+    # float() of the exact value is the correctly rounded double, the module's own value.
+    assert float(vibrofric.mu("triangle", 0.1, 0.3, certify=True)[0]) == vibrofric.mu("triangle", 0.1, 0.3)
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda: vibrofric.mu("sine", 1, 0, certify=True), ["'sine'", "no certified values", "triangle"]),
+    (lambda: vibrofric.mu("triangle", 1, 0, profile="sphere", certify=True), ["'sphere'", "flat punch"]),
+    (lambda: vibrofric.mu("triangle", 1, 0, escalate=False, certify=True), ["escalate=False"]),
+    (lambda: vibrofric.psi("power:2", 1, certify=True), ["'power:2'"]),
+    (lambda: vibrofric.mu("triangle", [1, 2], [0, -3], certify=True), ["at index (1,)", "-3"]),
+])
+def test_certify_refusals(call, words):
+    with pytest.raises(ValueError) as e:
+        call()
+    for w in words:
+        assert w in str(e.value), (w, str(e.value))

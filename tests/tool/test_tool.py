@@ -1444,11 +1444,11 @@ WAVE = ["--wave", "--column", "--periods", "--diagnostics"]
 PRECISION = ["--digits", "--type", "--no-escalate"]
 SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
 HELP_FLAGS = {
-    "mu": (["--beta", "--gamma", "--profile", "--format"] + WAVE + PRECISION + SOLVER,
+    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER,
            {"--profile": "flat", "--format": "text", "--digits": "50", "--type": "mpfr", "--area": "auto",
             "--max-levels": "15"}),
-    "psi": (["--beta", "--profile", "--format"] + WAVE + PRECISION + SOLVER, {"--format": "text"}),
-    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format"] + WAVE + PRECISION + SOLVER,
+    "psi": (["--beta", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER, {"--format": "text"}),
+    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format", "--certify"] + WAVE + PRECISION + SOLVER,
               {"--quantity": "mu", "--threads": "0", "--format": "csv"}),
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--format"]
@@ -1909,6 +1909,140 @@ def range_and_fit_detail_tests():
     case("mu: power:p with p far above 10^digits reaches the square wave's value (Eq. 22)", power_far_beyond_the_digits)
 
 
+# --------------------------------------------------------------------------------------------
+# 7. --certify: exact rationals for the piecewise-linear waves (README, "Precision")
+# --------------------------------------------------------------------------------------------
+
+def closed_form_mu(wave, beta, gamma):
+    """mu/mu0 of the catalogue's piecewise-linear waves from the paper's closed forms (Eqs. 13,
+    17, 19, 22; Psi_sqr of ref. [10]), exactly, for -1 < gamma (jumping below 1)."""
+    if wave in ("triangle", "power:1"):
+        psi, jump = ((4 - beta) / (4 + beta) if beta < 4 else 0), (2 * beta / (4 + beta) if beta < 4 else 1)
+    elif wave == "sawtooth-right":
+        psi, jump = (1 - beta / 2 if beta < 2 else 0), (beta / 2 if beta < 2 else 1)
+    elif wave == "sawtooth-left":
+        psi, jump = 2 / (2 + beta), beta / (2 + beta)
+    else:  # square
+        psi = 1 - beta / 8 if beta <= 4 else 2 / beta
+        jump = beta / (4 * (1 + gamma)) if beta < 2 * (1 + gamma) else 1 - (1 + gamma) / beta
+    return (1 - psi / gamma) if gamma >= 1 else jump
+
+
+def nearest_double_text(x):
+    """The double nearest the Fraction x, printed with 17 significant digits (Python's float()
+    of a Fraction rounds correctly)."""
+    return "%.16e" % float(x)
+
+
+def certify_tests():
+    points = [("triangle", "0.5", "0.2"), ("sawtooth-right", "1.25", "-0.75"), ("sawtooth-left", "0.7", "3"),
+              ("square", "0.3", "0.2"), ("square", "2.9", "0.1"), ("power:1", "3", "0.9"), ("triangle", "1e-9", "1.5")]
+
+    def exact_values_are_the_closed_forms():
+        for wave, b, g in points:
+            want = closed_form_mu(wave, F(b), F(g))
+            for extra in ([], ["--type", "double"], ["--type", "long-double"], ["--digits", "30"]):
+                args = ["mu", "--wave", wave, "--beta", b, "--gamma", g, "--certify"] + extra
+                lines = ok_run(args).splitlines()
+                if len(lines) != 3 or not lines[1].startswith("exact: ") or not lines[2].startswith("proven: "):
+                    raise Fail("%s: expected the value, 'exact: ' and 'proven: ' lines, got %r" % (cmd(args), lines))
+                if Fraction(lines[1][len("exact: "):]) != want:
+                    raise Fail("%s: exact %s, the closed form gives %s" % (cmd(args), lines[1], want))
+                if extra == ["--type", "double"] and float(lines[0]) != float(want):
+                    raise Fail("%s: %s is not the double nearest %s (%s)" % (cmd(args), lines[0], want, nearest_double_text(want)))
+                if extra == ["--digits", "30"]:
+                    expect_digits(lines[0], want, 30, cmd(args))
+    case("certify: mu's exact value is the closed form (Eqs. 13, 17, 19, 22), and the printed value its rounding",
+         exact_values_are_the_closed_forms)
+
+    def psi_and_formats():
+        out = json.loads(ok_run(["psi", "--wave", "sawtooth-left", "--beta", "0.7", "--certify", "--format", "json"]))
+        if Fraction(out["exact"]) != 2 / (2 + Fraction(7, 10)) or out["correctly_rounded"] != "proven":
+            raise Fail("psi --certify json: %r" % out)
+        expect_digits(out["psi"], Fraction(20, 27), 50, "psi --certify json")
+        rows = ok_run(["mu", "--wave", "tri", "--beta", "0.5", "--gamma", "0.2", "--certify", "--format", "csv"]).splitlines()
+        if rows[0] != "wave,beta,gamma,mu_over_mu0,exact,correctly_rounded" or not rows[1].endswith(",2/9,proven"):
+            raise Fail("mu --certify csv: %r" % rows)
+    case("certify: psi and the JSON and CSV fields exact and correctly_rounded", psi_and_formats)
+
+    def sweep_rows():
+        args = ["sweep", "--wave", "square", "--beta", "0.5:4:8", "--gamma", "0,0.5,1.5", "--certify", "--type", "double"]
+        rows = ok_run(args).splitlines()
+        if rows[0] != "wave,beta,gamma,mu_over_mu0,exact,correctly_rounded" or len(rows) != 25:
+            raise Fail("%s: header %r, %d lines" % (cmd(args), rows[0], len(rows)))
+        for row in rows[1:]:
+            wave, b, g, value, exact, proven = row.split(",")
+            want = closed_form_mu("square", F(b), F(g))
+            if Fraction(exact) != want or proven != "proven" or float(value) != float(want):
+                raise Fail("%s: row %r, closed form %s" % (cmd(args), row, want))
+    case("certify: sweep rows carry the exact value, equal to Eq. 22 / Eq. 13", sweep_rows)
+
+    def envelope_mu(ys, beta, gamma):
+        """mu/mu0 of samples y_j at phi = j/N, exactly, by the lower envelope (model.md): s(phi) =
+        min(n(phi), min_k n(x_k) + beta ((phi - x_k) mod 1)) over the vertices x_k of the clipped n,
+        integrated piece by piece between n's vertices and n's crossings with the ramps (the ramps
+        are parallel), where s is linear, so the trapezoid rule is exact."""
+        m = len(ys)
+        mean = sum(ys) / m
+        scale = (max(ys) - min(ys)) / 2
+        pts = [(Fraction(j, m), gamma + (y - mean) / scale) for j, y in enumerate(ys)]
+        pts.append((Fraction(1), pts[0][1]))
+        verts = []  # the clipped n's vertices, with a vertex where gamma + w crosses zero
+        for (a, ya), (b, yb) in zip(pts, pts[1:]):
+            verts.append((a, max(ya, 0)))
+            if ya * yb < 0:
+                verts.append((a + (b - a) * ya / (ya - yb), Fraction(0)))
+        verts.append((Fraction(1), verts[0][1]))
+
+        def n_at(phi):
+            phi = phi % 1
+            for (a, na), (b, nb) in zip(verts, verts[1:]):
+                if a <= phi <= b:
+                    return na + (nb - na) * (phi - a) / (b - a)
+
+        def s_at(phi):
+            return min([n_at(phi)] + [nk + beta * ((phi - xk) % 1) for xk, nk in verts[:-1]])
+
+        retained = normal = Fraction(0)
+        for (a, na), (b, nb) in zip(verts, verts[1:]):
+            normal += (b - a) * (na + nb) / 2
+            cuts = {a, b}
+            slope = (nb - na) / (b - a)
+            for xk, nk in verts[:-1]:
+                shift = (a - xk) % 1 - (a - xk)  # (phi - x_k) mod 1 = phi - x_k + shift on (a, b)
+                if slope != beta:
+                    phi = (nk + beta * (shift - xk) - na + slope * a) / (slope - beta)
+                    if a < phi < b:
+                        cuts.add(phi)
+            cuts = sorted(cuts)
+            for p, q in zip(cuts, cuts[1:]):  # s is linear on (p, q): its integral is (q - p) s(midpoint)
+                retained += (q - p) * s_at((p + q) / 2)
+        return retained / normal
+
+    def samples_file():
+        values = ["0.12", "3", "1.5", "-0.7", "2.25", "0.4"]
+        path = write("certify-samples.txt", "\n".join(values) + "\n")
+        ys = [F(v) for v in values]
+        for b, g in (("1", "0.9"), ("0.37", "-0.2"), ("5.5", "1.7"), ("2", "0.05")):
+            args = ["mu", "--wave", "samples:" + path, "--beta", b, "--gamma", g, "--certify", "--type", "double"]
+            lines = ok_run(args).splitlines()
+            want = envelope_mu(ys, F(b), F(g))
+            if len(lines) != 3 or Fraction(lines[1][len("exact: "):]) != want or float(lines[0]) != float(want):
+                raise Fail("%s: %r, the envelope gives %s (%s)" % (cmd(args), lines, want, nearest_double_text(want)))
+    case("certify: a samples file", samples_file)
+
+    bad("certify: the sine has no certified values", ["mu", "--wave", "harmonic", "--beta", "1", "--gamma", "0", "--certify"],
+        ["harmonic"], ["certif", "triangle"])
+    bad("certify: power:2 has no certified values", ["psi", "--wave", "power:2", "--beta", "1", "--certify"],
+        ["power:2"], ["certif"])
+    bad("certify: a curved profile", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--profile", "sphere", "--certify"],
+        ["sphere"], ["flat punch"])
+    bad("certify: with --no-escalate", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--type", "double",
+                                        "--no-escalate", "--certify"], [], ["--no-escalate", "--certify"])
+    bad("certify: a value for the switch", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--certify=maybe"],
+        ["maybe"], ["certify"])
+
+
 def collect():
     bad_input_tests()
     format_tests()
@@ -1919,6 +2053,7 @@ def collect():
     cli_tests()
     claim_detail_tests()
     range_and_fit_detail_tests()
+    certify_tests()
 
 
 collect()

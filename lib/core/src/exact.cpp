@@ -1,0 +1,220 @@
+// Exact μ̄/μ0 and Ψ for piecewise-linear waves (exact.hpp; model.md, "Steady state, closed
+// characterisation").
+#include "vibrofric/core/exact.hpp"
+
+#include <cctype>
+#include <cstdlib>
+
+namespace vibrofric::exact {
+
+namespace {
+
+Rational lower(const Vertex& v) { return v.left < v.right ? v.left : v.right; }
+Rational upper(const Vertex& v) { return v.left < v.right ? v.right : v.left; }
+
+// Vertices sorted, x ∈ [0, 1), the first at 0: a malformed list is a bug of the caller.
+void check(const Wave& w) {
+  const auto& v = w.vertices;
+  if (v.empty() || v.front().x != 0) throw SolverError("exact wave " + w.name + ": no vertex at phase 0");
+  for (std::size_t k = 1; k < v.size(); ++k)
+    if (!(v[k - 1].x < v[k].x) || !(v[k].x < 1))
+      throw SolverError("exact wave " + w.name + ": vertex phases not increasing in [0, 1)");
+}
+
+// The clipped n = max(γ + w, 0), with a vertex (value 0) where γ + w changes sign inside a piece.
+std::vector<Vertex> clipped(const Wave& w, const Rational& gamma, Result& r) {
+  const auto& v = w.vertices;
+  const std::size_t m = v.size();
+  auto clip = [](const Rational& y) { return y > 0 ? y : Rational(0); };
+  std::vector<Vertex> n;
+  n.reserve(2 * m);
+  for (std::size_t k = 0; k < m; ++k) {
+    n.push_back({v[k].x, clip(gamma + v[k].left), clip(gamma + v[k].right)});
+    const Rational a = v[k].x, b = k + 1 < m ? v[k + 1].x : Rational(1);
+    const Rational ya = gamma + v[k].right, yb = gamma + v[(k + 1) % m].left;
+    if ((ya < 0 && yb > 0) || (ya > 0 && yb < 0)) {
+      n.push_back({a + (b - a) * ya / (ya - yb), 0, 0});
+      ++r.contact_boundaries;
+    }
+    if (ya < 0 || yb < 0) r.jumping = true;
+  }
+  return n;
+}
+
+}  // namespace
+
+Rational Wave::minimum() const {
+  Rational m = lower(vertices.at(0));
+  for (const Vertex& v : vertices) m = std::min(m, lower(v));
+  return m;
+}
+
+Rational Wave::maximum() const {
+  Rational m = upper(vertices.at(0));
+  for (const Vertex& v : vertices) m = std::max(m, upper(v));
+  return m;
+}
+
+Wave triangle() { return {"triangle", {{0, -1, -1}, {Rational(1, 2), 1, 1}}}; }
+Wave sawtooth_right() { return {"sawtooth-right", {{0, 1, -1}}}; }
+Wave sawtooth_left() { return {"sawtooth-left", {{0, -1, 1}}}; }
+Wave square() { return {"square", {{0, -1, 1}, {Rational(1, 2), 1, -1}}}; }
+Wave power_one() {
+  return {"power:1", {{0, 0, 0}, {Rational(1, 4), 1, 1}, {Rational(1, 2), 0, 0}, {Rational(3, 4), -1, -1}}};
+}
+
+Wave samples(std::string name, const std::vector<Rational>& y, const std::vector<Rational>& phases) {
+  const std::size_t n = y.size();
+  if (n < 2) throw InputError("sampled waveform " + name + " has " + std::to_string(n) + " sample(s): expected at least 2");
+  if (!phases.empty() && phases.size() != n) throw SolverError("exact samples " + name + ": phases and samples differ in number");
+  auto phase = [&](std::size_t j) { return phases.empty() ? Rational(j, n) : phases[j]; };
+  Rational lo = y[0], hi = y[0], mean = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    lo = std::min(lo, y[j]);
+    hi = std::max(hi, y[j]);
+    // The interpolant's integral, the trapezoid rule: Σ y_j (φ_{j+1} − φ_{j−1})/2.
+    const Rational next = j + 1 < n ? phase(j + 1) : Rational(1), prev = j > 0 ? phase(j - 1) : Rational(phase(n - 1) - 1);
+    mean += y[j] * (next - prev) / 2;
+  }
+  if (!(hi > lo)) throw InputError("sampled waveform " + name + " is constant: expected a signal with non-zero amplitude");
+  const Rational scale = (hi - lo) / 2;
+  Wave w{std::move(name), {}};
+  w.vertices.reserve(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Rational v = (y[j] - mean) / scale;
+    w.vertices.push_back({phase(j), v, v});
+  }
+  check(w);
+  return w;
+}
+
+Rational decimal(const std::string& text, const std::string& what) {
+  auto bad = [&] { return InputError(what + " '" + text + "': expected a decimal number"); };
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  bool negative = false;
+  if (i < n && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+  std::string digits;  // mpz_int reads a leading 0 as octal: leading zeros are dropped below
+  long scale = 0;  // value = digits · 10^(exponent − scale)
+  bool any = false;
+  while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) digits += text[i++], any = true;
+  if (i < n && text[i] == '.') {
+    ++i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) digits += text[i++], ++scale, any = true;
+  }
+  if (!any) throw bad();
+  digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
+  long exponent = 0;
+  if (i < n && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    const std::size_t start = i;
+    if (i < n && (text[i] == '+' || text[i] == '-')) ++i;
+    const std::size_t first_digit = i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    if (i == first_digit || i - first_digit > 9) throw bad();
+    exponent = std::strtol(text.c_str() + start, nullptr, 10);
+  }
+  if (i != n) throw bad();
+  if (digits.empty()) return 0;
+  const long power = exponent - scale;
+  if (power > max_exponent || power < -max_exponent - static_cast<long>(digits.size()))
+    throw InputError(what + " '" + text + "': its exponent is beyond ±" + std::to_string(max_exponent) +
+                     ", too large for an exact rational");
+  using Integer = boost::multiprecision::mpz_int;
+  Integer num(digits), ten = pow(Integer(10), static_cast<unsigned>(power < 0 ? -power : power));
+  Rational r = power < 0 ? Rational(num, ten) : Rational(num * ten);
+  return negative ? Rational(-r) : r;
+}
+
+Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
+  check(w);
+  if (!(beta > 0)) throw InputError("exact solve of " + w.name + ": beta must be > 0");
+  if (!(gamma + w.maximum() > 0)) throw DomainError("exact solve of " + w.name + ": gamma gives no contact");
+  Result r;
+  const std::vector<Vertex> n = clipped(w, gamma, r);
+  const std::size_t m = n.size();
+  auto end_of = [&](std::size_t k) { return k + 1 < m ? n[k + 1].x : Rational(1); };
+
+  // β_c: the largest slope of a piece, or none (∞) at an upward jump of n.
+  bool jump_up = false;
+  Rational steepest = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    if (n[k].right > n[k].left) jump_up = true;
+    const Rational slope = (n[(k + 1) % m].left - n[k].right) / (end_of(k) - n[k].x);
+    steepest = std::max(steepest, slope);
+    r.normal_area += (end_of(k) - n[k].x) * (n[k].right + n[(k + 1) % m].left) / 2;
+  }
+  if (!jump_up) r.beta_c = steepest;
+
+  // min of h = n − βψ over the period before [0, 1): β + its minimum over [0, 1), one-sided
+  // limits included (the left limit at 1 is n's at 0 from the left, minus β).
+  Rational low = n[0].left - beta;
+  for (std::size_t k = 0; k < m; ++k) {
+    low = std::min(low, n[k].right - beta * n[k].x);
+    if (k > 0) low = std::min(low, n[k].left - beta * n[k].x);
+  }
+  Rational M = low + beta;  // min of h over ψ ≤ φ, so far; s = βφ + M
+
+  // A ramp is an interval on which M is constant (s = βφ + M); it is a stick phase where s < n
+  // on part of it (`strict`). The ramp running at φ = 0 began in the period before: it is the
+  // one still running at φ = 1 (M(1⁻) + β = M(0)), so its end is kept to close that one.
+  Rational ramp_from = 0;
+  bool strict = false, initial = true, strict_initial = false;
+  std::optional<Rational> first_end;
+  auto close_ramp = [&](const Rational& x) {
+    if (initial) {
+      first_end = x;
+      strict_initial = strict;
+      initial = false;
+    } else if (strict && x > ramp_from) {
+      r.stick_phases.push_back({ramp_from, x, beta * ramp_from + M});
+    }
+    strict = false;
+  };
+  for (std::size_t k = 0; k < m; ++k) {
+    const Rational a = n[k].x, b = end_of(k);
+    const Rational& na = n[k].right;
+    const Rational& nb = n[(k + 1) % m].left;
+    const Rational ha = na - beta * a, hb = nb - beta * b;
+    if (ha < M) {  // n jumps down below the ramp at a: slip onto n
+      close_ramp(a);
+      M = ha;
+      ramp_from = a;
+    }
+    const Rational slope_h = (nb - na) / (b - a) - beta;
+    if (M <= hb) {  // the minimum stays on the whole piece: ramp
+      if (M < ha || slope_h > 0) strict = true;
+      r.retained_area += (b - a) * (M + beta * (a + b) / 2);
+      continue;
+    }
+    // h falls below M at c ∈ [a, b): ramp on [a, c], then s = n (slip) to b.
+    Rational c = a;
+    if (M < ha) {
+      c = a + (M - ha) / slope_h;
+      strict = true;
+      r.retained_area += (c - a) * (M + beta * (a + c) / 2);
+    }
+    close_ramp(c);
+    r.retained_area += (b - c) * (na + (c - a) * (slope_h + beta) + nb) / 2;
+    M = hb;
+    ramp_from = b;
+  }
+  // The ramp running at φ = 1 goes on into the next period to the initial ramp's end.
+  if (!first_end) throw SolverError("exact solve of " + w.name + ": the minimum never follows n (a bug)");
+  Rational end = *first_end + 1;
+  if ((strict || strict_initial) && end > ramp_from) {
+    const Rational level = beta * ramp_from + M;
+    if (ramp_from == 1) {  // it starts at the period's end: it is the period's first, from φ = 0
+      r.stick_phases.insert(r.stick_phases.begin(), StickPhase{0, *first_end, level});
+    } else {
+      r.stick_phases.push_back({ramp_from, end, level});
+    }
+  }
+  r.lost_area = r.normal_area - r.retained_area;
+  r.mu = r.retained_area / r.normal_area;
+  return r;
+}
+
+Result psi(const Wave& w, const Rational& beta) { return solve(w, beta, -w.minimum()); }
+
+}  // namespace vibrofric::exact

@@ -1,0 +1,207 @@
+// Certified values (api/certify.hpp) against the guaranteed path (README, "Precision"): on random
+// points of every piecewise-linear wave, the double and long double that evaluate() prints are
+// the exact value (core/exact.hpp) correctly rounded, as the certificate says and as MPFR's own
+// correctly rounded conversion of the exact rational says (an independent decision); and the
+// solver's first-order rounding bound in raw double and long double is a true bound of the
+// actual error, measured against the exact value (its ratio to the actual error is printed).
+// 3,000 points per wave here; VIBROFRIC_STRESS=full: 100,000 (issue 28's count).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/certify.hpp"
+#include "vibrofric/api/decimal.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "correct_rounding.hpp"
+
+namespace {
+
+using namespace vibrofric;
+using exact::Rational;
+
+int points_per_wave() {
+  const char* mode = std::getenv("VIBROFRIC_STRESS");
+  return mode && std::string(mode) == "full" ? 100000 : 3000;
+}
+
+// A decimal with `digits` significant digits, log-uniform in [lo, hi).
+std::string log_uniform(std::mt19937& rng, double lo, double hi, int digits) {
+  const double x = std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng));
+  return format_significant(x, digits);
+}
+
+std::string uniform(std::mt19937& rng, double lo, double hi, int digits) {
+  return format_significant(std::uniform_real_distribution<double>(lo, hi)(rng), digits);
+}
+
+// The exact value correctly rounded to T by MPFR (correct_rounding.hpp's nearest: mpfr_set_q at
+// T's precision), printed as evaluate() prints T.
+template <class T>
+std::string mpfr_rounding(const Rational& x) {
+  const boost::multiprecision::cpp_rational q(numerator(x).str() + "/" + denominator(x).str());
+  return format_significant(vibrofric::testing::nearest<T>(q), std::numeric_limits<T>::max_digits10);
+}
+
+Rational exact_of(double x) {
+  Rational q;
+  mpq_set_d(q.backend().data(), x);
+  return q;
+}
+
+Rational exact_of(long double x) {  // via MPFR, exactly (64 bits)
+  mpfr_t r;
+  mpfr_init2(r, 64);
+  mpfr_set_ld(r, x, MPFR_RNDN);
+  Rational q;
+  mpfr_get_q(q.backend().data(), r);
+  mpfr_clear(r);
+  return q;
+}
+
+struct Ratios {
+  std::vector<double> bound_over_actual;
+  long exact_hits = 0;  // the type's value was exact (actual error 0)
+  long unbounded = 0;   // the solver gave no finite bound in the type
+  std::string summary() const {
+    std::vector<double> v = bound_over_actual;
+    if (v.empty()) return "no inexact values";
+    std::sort(v.begin(), v.end());
+    return "bound / actual error: min " + format_significant(v.front(), 3) + ", median " + format_significant(v[v.size() / 2], 3) +
+           ", max " + format_significant(v.back(), 3) + " over " + std::to_string(v.size()) + " inexact values (" +
+           std::to_string(exact_hits) + " exact, " + std::to_string(unbounded) + " without a finite bound)";
+  }
+};
+
+// The raw solve in T: its bound must hold against the exact value.
+template <class T>
+void check_bound(const WaveSpec& spec, const Waveform<T>& w, Quantity q, const Point& p, Ratios& ratios) {
+  const T beta = parse_real<T>(p.beta, "beta");
+  const Result<T> r = q == Quantity::psi ? psi(w, beta) : solve(w, beta, parse_real<T>(p.gamma, "gamma"));
+  const T value = q == Quantity::psi ? r.lost_area : r.mu;
+  using std::isfinite;
+  const T& bound = q == Quantity::psi ? r.lost_relative_error : r.relative_error;
+  if (!isfinite(bound)) {  // no bound in T (the ladder goes on): nothing to check
+    ++ratios.unbounded;
+    return;
+  }
+  // The bound covers the computation from the inputs rounded to T; the inputs' own rounding
+  // (relative eps/2 each, amplified by the condition number) is not the solver's: compare with
+  // the exact value at the rounded inputs.
+  const Rational beta_t = exact_of(beta);
+  const exact::Wave ew = exact_wave(spec);
+  const Rational at_rounded = q == Quantity::psi ? exact::psi(ew, beta_t).lost_area
+                                                 : exact::solve(ew, beta_t, exact_of(parse_real<T>(p.gamma, "gamma"))).mu;
+  const Rational actual = abs(exact_of(value) - at_rounded);
+  const Rational allowed = exact_of(bound) * abs(at_rounded);
+  ASSERT_LE(actual, allowed) << spec.name << (q == Quantity::psi ? " psi" : " mu") << " in " << typeid(T).name()
+                             << " beta = " << p.beta << " gamma = " << p.gamma << ", value "
+                             << format_significant(static_cast<double>(at_rounded), 17) << ", stick phases "
+                             << r.stick_phases.size() << ", events " << r.events << ": actual error "
+                             << format_significant(static_cast<double>(actual), 3) << " over the bound "
+                             << format_significant(static_cast<double>(allowed), 3);
+  if (actual == 0) ++ratios.exact_hits;
+  else ratios.bound_over_actual.push_back(static_cast<double>(allowed / actual));
+}
+
+std::vector<WaveSpec> piecewise_linear_waves(std::mt19937& rng) {
+  std::vector<WaveSpec> waves;
+  for (const char* name : {"triangle", "sawtooth-right", "sawtooth-left", "square", "power:1"}) waves.push_back(parse_wave(name));
+  // A noisy signal as a rig records it: 4 significant digits, 60 samples at φ = j/N.
+  WaveSpec s;
+  s.kind = WaveKind::samples;
+  s.name = "samples:noisy";
+  std::normal_distribution<double> noise(0, 0.03);
+  for (int j = 0; j < 60; ++j) s.samples.push_back(format_significant(2 * std::sin(6.283185307179586 * j / 60) + noise(rng), 4));
+  waves.push_back(s);
+  // With time stamps (non-uniform phases), 25 samples.
+  WaveSpec t = s;
+  t.name = "samples:stamped";
+  t.samples.resize(25);
+  double time = 0;
+  for (int j = 0; j <= 25; ++j) {
+    t.times.push_back(format_significant(time, 6));
+    time += std::uniform_real_distribution<double>(0.5, 1.5)(rng);
+  }
+  waves.push_back(t);
+  return waves;
+}
+
+TEST(Certify, GuaranteedValuesAreTheCertifiedRoundings) {
+  std::mt19937 rng(20261127);
+  const int n = points_per_wave();
+  for (const WaveSpec& spec : piecewise_linear_waves(rng)) {
+    const Certifier certifier(spec, ProfileSpec{});
+    const auto wd = make_waveform<double>(spec);
+    const auto wl = make_waveform<long double>(spec);
+    const double top = static_cast<double>(wd->maximum());
+    Ratios ratios_d, ratios_l;
+    std::vector<Point> points;
+    for (int i = 0; i < n; ++i) {
+      // β log-uniform over (1e-4, 20): both sides of every β_c; every tenth point near the
+      // corners (β → 0, γ → −max w, where the ladder climbs to mpfr).
+      const bool corner = i % 10 == 0;
+      std::string beta = corner ? log_uniform(rng, 1e-7, 1e-3, 6) : log_uniform(rng, 1e-4, 20, 6);
+      std::string gamma = corner ? format_significant(-top + std::pow(10.0, -std::uniform_real_distribution<double>(2, 9)(rng)), 12)
+                                 : uniform(rng, -top + 1e-3, 3, 6);
+      points.push_back({beta, gamma});
+    }
+    for (Quantity q : {Quantity::mu, Quantity::psi}) {
+      const std::vector<std::string> d = evaluate(spec, q, points, {NumberType::float64, 0});
+      std::vector<Point> some(points.begin(), points.begin() + n / 10);
+      const std::vector<std::string> l = evaluate(spec, q, some, {NumberType::float80, 0});
+      for (int i = 0; i < n; ++i) {
+        const std::string at = spec.name + (q == Quantity::psi ? " psi" : " mu") + " beta = " + points[i].beta +
+                               (q == Quantity::mu ? " gamma = " + points[i].gamma : std::string());
+        const Certificate c = certifier(q, points[i], {NumberType::float64, 0}, d[i]);
+        ASSERT_TRUE(c.correctly_rounded) << at << ": printed " << d[i] << ", exact " << c.exact << ", nearest " << c.nearest.front();
+        ASSERT_EQ(d[i], mpfr_rounding<double>(c.value)) << at;
+        if (i < n / 10) {
+          const Certificate cl = certifier(q, points[i], {NumberType::float80, 0}, l[i]);
+          ASSERT_TRUE(cl.correctly_rounded) << at << ": printed " << l[i] << ", exact " << cl.exact;
+          ASSERT_EQ(l[i], mpfr_rounding<long double>(cl.value)) << at;
+        }
+        if (i % 3 == 0) {
+          check_bound(spec, *wd, q, points[i], ratios_d);
+          check_bound(spec, *wl, q, points[i], ratios_l);
+        }
+      }
+    }
+    std::cout << spec.name << ", double: " << ratios_d.summary() << "\n"
+              << spec.name << ", long double: " << ratios_l.summary() << "\n";
+  }
+}
+
+// The certificate is not a formality: a neighbour of the right value, and a value of the wrong
+// point, are refused.
+TEST(Certify, RefusesWrongValues) {
+  const WaveSpec tri = parse_wave("triangle");
+  const Certifier certifier(tri, ProfileSpec{});
+  const Point p{"0.5", "0.2"};  // μ̄/μ0 = 2β/(4 + β) = 2/9 (Eq. 19)
+  const Certificate right = certifier(Quantity::mu, p, {NumberType::float64, 0}, "0.22222222222222221");
+  EXPECT_TRUE(right.correctly_rounded);
+  EXPECT_EQ(right.exact, "2/9");
+  EXPECT_FALSE(certifier(Quantity::mu, p, {NumberType::float64, 0}, "0.22222222222222224").correctly_rounded);
+  EXPECT_FALSE(certifier(Quantity::mu, p, {NumberType::float64, 0}, "0.22222222222222218").correctly_rounded);
+  EXPECT_TRUE(certifier(Quantity::mu, p, {NumberType::mpfr, 5}, "0.22222").correctly_rounded);
+  EXPECT_FALSE(certifier(Quantity::mu, p, {NumberType::mpfr, 5}, "0.22223").correctly_rounded);
+  // A decimal tie at 2 digits: 1/8 = 0.125 (square wave, γ = 0, β = 0.5: β/(4(1 + γ)), Eq. 22).
+  const Certifier sq(parse_wave("square"), ProfileSpec{});
+  const Certificate tie = sq(Quantity::mu, {"0.5", "0"}, {NumberType::mpfr, 2}, "0.13");
+  EXPECT_EQ(tie.exact, "1/8");
+  EXPECT_EQ(tie.nearest, (std::vector<std::string>{"0.12", "0.13"}));
+  EXPECT_TRUE(tie.correctly_rounded);
+  EXPECT_TRUE(sq(Quantity::mu, {"0.5", "0"}, {NumberType::mpfr, 2}, "0.12").correctly_rounded);
+  EXPECT_FALSE(sq(Quantity::mu, {"0.5", "0"}, {NumberType::mpfr, 2}, "0.11").correctly_rounded);
+  // No certified values for the sine, a Fourier series, power:2 or a curved profile.
+  EXPECT_THROW(Certifier(parse_wave("sine"), ProfileSpec{}), InputError);
+  EXPECT_THROW(Certifier(parse_wave("power:2"), ProfileSpec{}), InputError);
+  EXPECT_THROW(Certifier(tri, parse_profile("sphere")), InputError);
+}
+
+}  // namespace
