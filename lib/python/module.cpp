@@ -478,7 +478,7 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
     if (with_gamma) p.gamma = gammas.text(at[1]);
     return p;
   };
-  std::vector<exact::Rational> values(n);
+  std::vector<std::pair<exact::Rational, exact::Rational>> values(n);
   {
     py::gil_scoped_release release;
     evaluate_stream(wave, e.quantity, n, point, precision, options, [&](std::size_t i, const StreamValue& value) {
@@ -488,7 +488,7 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
         rethrow_at_index(dims, i, std::make_exception_ptr(SolverError(
             "certify=True: the value " + value.text + " is not the correct rounding of the exact value " + c.exact +
             " (that is " + c.nearest.front() + "): a solver bug, please report it")));
-      values[i] = c.value;
+      values[i] = {c.lower, c.upper};
     });
   }
   const py::object fraction = py::module_::import("fractions").attr("Fraction");
@@ -497,14 +497,15 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
     return fraction(integer(numerator(x).str()), integer(denominator(x).str()));
   };
   if (dims.empty()) {
-    const py::object x = to_fraction(values.front());
-    return py::make_tuple(x, x);
+    return py::make_tuple(to_fraction(values.front().first), to_fraction(values.front().second));
   }
   const py::module_ np = py::module_::import("numpy");
-  py::array flat = np.attr("empty")(n, "dtype"_a = "object");
-  for (std::size_t i = 0; i < n; ++i) flat[py::int_(i)] = to_fraction(values[i]);
-  const py::object array = flat.attr("reshape")(shape);
-  return py::make_tuple(array, array.attr("copy")());
+  py::array lo = np.attr("empty")(n, "dtype"_a = "object"), hi = np.attr("empty")(n, "dtype"_a = "object");
+  for (std::size_t i = 0; i < n; ++i) {
+    lo[py::int_(i)] = to_fraction(values[i].first);
+    hi[py::int_(i)] = to_fraction(values[i].second);
+  }
+  return py::make_tuple(lo.attr("reshape")(shape), hi.attr("reshape")(shape));
 }
 
 // Values of `quantity` at the broadcast of beta and gamma (gamma None for psi): one evaluate_stream
@@ -625,12 +626,13 @@ element's with its index ('at index (2,): ...'); never returns NaN for a failure
 nan_on_error=True (scipy's convention): then a failing element is NaN (None in object arrays)
 and the others answer.
 
-certify=True (the piecewise-linear waves 'triangle', 'sawtooth-right', 'sawtooth-left', 'square',
-'power:1' and samples, on the flat punch): returns (lo, hi), the enclosure of the exact value as
-fractions.Fraction -- for these waves lo == hi, the exact rational -- (arrays of them for array
-arguments), after proving that the value computed at type/digits is its correct rounding (a
-value that is not raises vibrofric.SolverError). float(lo) is the correctly rounded double.
-Other waves and profiles raise ValueError.
+certify=True ('sine' and the piecewise-linear waves 'triangle', 'sawtooth-right',
+'sawtooth-left', 'square', 'power:1' and samples, on the flat punch): returns (lo, hi) as
+fractions.Fraction (arrays of them for array arguments), an enclosure of the exact value
+narrowed until it proves that the value computed at type/digits is its correct rounding (a
+value that is not raises vibrofric.SolverError). For the piecewise-linear waves lo == hi, the
+exact rational, and float(lo) is the correctly rounded double; for the sine lo < hi are the
+ends of an interval computation. Other waves and profiles raise ValueError.
 )doc";
 
 constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)

@@ -635,6 +635,12 @@ Certificate certified(const Certifier& certifier, Quantity q, const Point& p, co
   return c;
 }
 
+// CSV and JSON fields of a certificate: the exact value, or an enclosure's ends.
+std::vector<std::pair<std::string, std::string>> certificate_fields(const Certificate& c, bool enclosure) {
+  if (enclosure) return {{"lower", c.lower_text}, {"upper", c.upper_text}, {"correctly_rounded", "proven"}};
+  return {{"exact", c.exact}, {"correctly_rounded", "proven"}};
+}
+
 std::string rounding_name(const Precision& p) {
   return p.type == NumberType::mpfr ? "to " + std::to_string(p.digits) + " significant digits"
                                     : "to the nearest " + number_type_name(p.type);
@@ -657,7 +663,8 @@ int run_point(const Flags& f, Quantity q) {
   if (format == Format::text) {
     std::cout << value << '\n';
     if (cert)
-      std::cout << "exact: " << cert->exact << "\nproven: " << value << " is the exact value rounded " << rounding_name(precision)
+      std::cout << (cert->exact.empty() ? "enclosure: [" + cert->lower_text + ", " + cert->upper_text + "]" : "exact: " + cert->exact)
+                << "\nproven: " << value << " is the exact value rounded " << rounding_name(precision)
                 << (cert->nearest.size() > 1 ? " (a tie: it lies midway between " + cert->nearest[0] + " and " + cert->nearest[1] + ")" : "")
                 << '\n';
     return 0;
@@ -676,8 +683,10 @@ int run_point(const Flags& f, Quantity q) {
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   values.push_back(value);
   if (cert) {
-    names.insert(names.end(), {"exact", "correctly_rounded"});
-    values.insert(values.end(), {cert->exact, "proven"});
+    for (const auto& [name, v] : certificate_fields(*cert, cert->exact.empty())) {
+      names.push_back(name);
+      values.push_back(v);
+    }
   }
   if (format == Format::csv) {
     write_csv_row(names);
@@ -742,7 +751,8 @@ int run_sweep(const Flags& f) {
   if (q == Quantity::mu) names.push_back("gamma");
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
-  if (certifier) names.insert(names.end(), {"exact", "correctly_rounded"});
+  if (certifier)
+    for (const auto& field : certificate_fields(Certificate{}, wave.kind == WaveKind::sine)) names.push_back(field.first);
   // Rows in their deterministic order as they complete; memory bounded whatever the count. The
   // domain (β ≥ 0 and representable, contact at the smallest γ, a profile's extent at the largest)
   // is monotone in β and γ, so the four corners decide it before any row is written.
@@ -773,7 +783,9 @@ int run_sweep(const Flags& f) {
     r.push_back(pt.beta);
     if (q == Quantity::mu) r.push_back(pt.gamma);
     r.push_back(value.text);
-    if (certifier) r.insert(r.end(), {certified(*certifier, q, pt, prec, value.text).exact, "proven"});
+    if (certifier)
+      for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), wave.kind == WaveKind::sine))
+        r.push_back(field.second);
     if (format == Format::json)
       std::cout << (i ? ",\n " : "\n ") << json_record(names, r).dump();
     else

@@ -173,8 +173,19 @@ def test_certify_gives_the_closed_forms_exactly():
     assert float(vibrofric.mu("triangle", 0.1, 0.3, certify=True)[0]) == vibrofric.mu("triangle", 0.1, 0.3)
 
 
+def test_certify_sine_encloses_the_40_digit_value():
+    for beta, gamma in ((1.0, 0.2), (0.37, -0.9), (5.5, 2.0), (7.0, 0.5)):
+        lo, hi = vibrofric.mu("sine", beta, gamma, certify=True)
+        assert isinstance(lo, Fraction) and lo <= hi
+        want = Fraction(vibrofric.mu("sine", beta, gamma, digits=40, strings=True))
+        assert lo - Fraction(1, 10**39) <= want <= hi + Fraction(1, 10**39), (beta, gamma, lo, hi, want)
+        assert float(lo) == float(hi) == vibrofric.mu("sine", beta, gamma)
+    lo, hi = vibrofric.psi("sine", [0.5, 7.0], certify=True)
+    assert hi[1] == lo[1] == 0 and lo[0] < hi[0] and float(hi[0]) == vibrofric.psi("sine", 0.5)
+
+
 @pytest.mark.parametrize("call, words", [
-    (lambda: vibrofric.mu("sine", 1, 0, certify=True), ["'sine'", "no certified values", "triangle"]),
+    (lambda: vibrofric.mu("power:2", 1, 0, certify=True), ["'power:2'", "no certified values", "triangle"]),
     (lambda: vibrofric.mu("triangle", 1, 0, profile="sphere", certify=True), ["'sphere'", "flat punch"]),
     (lambda: vibrofric.mu("triangle", 1, 0, escalate=False, certify=True), ["escalate=False"]),
     (lambda: vibrofric.psi("power:2", 1, certify=True), ["'power:2'"]),

@@ -2031,8 +2031,33 @@ def certify_tests():
                 raise Fail("%s: %r, the envelope gives %s (%s)" % (cmd(args), lines, want, nearest_double_text(want)))
     case("certify: a samples file", samples_file)
 
-    bad("certify: the sine has no certified values", ["mu", "--wave", "harmonic", "--beta", "1", "--gamma", "0", "--certify"],
-        ["harmonic"], ["certif", "triangle"])
+    def sine_enclosures():
+        # The enclosure holds the 60-digit value, is narrow, and its ends round to the printed value.
+        for b, g in (("1", "0.2"), ("0.37", "-0.9"), ("5.5", "2"), ("1e-6", "0.5"), ("6.2", "0")):
+            want = F(ok_run(["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--digits", "60"]).strip())
+            for extra, digits in ((["--type", "double"], None), (["--digits", "25"], 25)):
+                args = ["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--certify"] + extra
+                lines = ok_run(args).splitlines()
+                m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 3 else None
+                if not m or not lines[2].startswith("proven: "):
+                    raise Fail("%s: %r" % (cmd(args), lines))
+                lo, hi = F(m.group(1)), F(m.group(2))
+                if not lo <= want <= hi or hi - lo > abs(want) * Fraction(1, 10 ** 15):
+                    raise Fail("%s: [%s, %s] does not hold the 60-digit %s tightly" % (cmd(args), lo, hi, dec(want, 30)))
+                if digits is None and not float(lo) == float(hi) == float(lines[0]):
+                    raise Fail("%s: the ends do not round to the printed double %s" % (cmd(args), lines[0]))
+                if digits is not None:
+                    expect_digits(lines[0], want, digits, cmd(args))
+        # beta >= beta_c = 2 pi: exactly 1 (Eq. 6), an enclosure of zero width.
+        lines = ok_run(["mu", "--wave", "sine", "--beta", "6.3", "--gamma", "0.5", "--certify", "--format", "json"])
+        out = json.loads(lines)
+        if F(out["lower"]) != 1 or F(out["upper"]) != 1 or out["correctly_rounded"] != "proven":
+            raise Fail("sine at beta 6.3 > 2 pi: %r" % out)
+    case("certify: the sine's enclosures hold the 60-digit value and decide the rounding", sine_enclosures)
+
+    bad("certify: a Fourier series has no certified values",
+        ["mu", "--wave", "fourier:" + write("certify.fourier", "1 0 1\n"), "--beta", "1", "--gamma", "0", "--certify"],
+        ["fourier"], ["certif", "triangle"])
     bad("certify: power:2 has no certified values", ["psi", "--wave", "power:2", "--beta", "1", "--certify"],
         ["power:2"], ["certif"])
     bad("certify: a curved profile", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--profile", "sphere", "--certify"],

@@ -151,6 +151,30 @@ TEST(Interval, TranscendentalFunctionsEncloseMpfrsDirectedRoundings) {
   }
 }
 
+TEST(Interval, InverseTrigonometryAndRationals) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 1000; ++k) {
+    const double x = u(rng);
+    const Interval i = Interval::exact(mpfr(x), kBits);
+    expect_encloses_mpfr(asin(i), mpfr_asin, x, "asin");
+    expect_encloses_mpfr(acos(i), mpfr_acos, x, "acos");
+  }
+  EXPECT_THROW(acos(Interval::hull(mpfr(0), mpfr(1.5), kBits)), vibrofric::SolverError);
+  EXPECT_THROW(asin(Interval::integer(-2, kBits)), vibrofric::SolverError);
+  // 1/3 enclosed by two neighbouring kBits numbers; 3/8 exactly.
+  mpq_t q;
+  mpq_init(q);
+  mpq_set_si(q, 1, 3);
+  const Interval third = Interval::rational(q, kBits);
+  EXPECT_EQ((third * 3 - Interval::integer(1, kBits)).sign(), Sign::undecided);
+  EXPECT_LE(width_in_ulps(third), 1.0);
+  mpq_set_si(q, 3, 8);
+  const Interval eighths = Interval::rational(q, kBits);
+  EXPECT_EQ((eighths * 8 - Interval::integer(3, kBits)).sign(), Sign::zero);
+  mpq_clear(q);
+}
+
 TEST(Interval, WideArgumentsHoldEveryPointsValue) {
   // sin over [1, 2] reaches its maximum 1 at π/2 inside: the enclosure must hold 1 and sin(1), sin(2).
   // MPFR's sin(x) rounded down and up at 4 × kBits lies inside for every sample x of [1, 2]

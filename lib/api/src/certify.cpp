@@ -5,10 +5,11 @@
 #include <limits>
 
 #include "vibrofric/api/decimal.hpp"
+#include "vibrofric/core/enclosure.hpp"
 
 namespace vibrofric {
 
-const char* const certified_waves = "triangle, sawtooth-right, sawtooth-left, square, power:1 and samples:FILE";
+const char* const certified_waves = "sine, triangle, sawtooth-right, sawtooth-left, square, power:1 and samples:FILE";
 
 using exact::Rational;
 using Integer = boost::multiprecision::mpz_int;
@@ -36,8 +37,7 @@ exact::Wave exact_wave(const WaveSpec& spec) {
     case WaveKind::sine:
     case WaveKind::fourier: break;
   }
-  throw InputError("wave '" + detail::visible(spec.name) + "' has no certified values: they exist for " + certified_waves +
-                   " (piecewise linear, so every event and area is an exact rational)");
+  throw InputError("wave '" + detail::visible(spec.name) + "' is not piecewise linear: it has no exact rational values");
 }
 
 namespace {
@@ -106,7 +106,61 @@ std::vector<std::string> nearest_decimals(const Rational& x, int digits) {
 
 }  // namespace
 
-Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) : wave_(exact_wave(wave)) {
+namespace {
+
+// The texts of the correctly rounded value(s) of x at the precision.
+std::vector<std::string> rounded_texts(const Rational& x, const Precision& precision) {
+  const int digits = output_digits(precision);
+  switch (precision.type) {
+    case NumberType::float64: return nearest_in<double>(x, digits);
+    case NumberType::float80: return nearest_in<long double>(x, digits);
+    case NumberType::bin50: return nearest_in<bin50>(x, digits);
+    case NumberType::bin100: return nearest_in<bin100>(x, digits);
+    case NumberType::mpfr: return nearest_decimals(x, digits);
+  }
+  return {};
+}
+
+Rational rational_of(const mpfr& x) {
+  Rational q;
+  mpfr_get_q(q.backend().data(), x.backend().data());
+  return q;
+}
+
+// x as a decimal of `digits` significant digits, rounded down or up.
+std::string directed(const mpfr& x, int digits, mpfr_rnd_t rounding) {
+  char* text = nullptr;
+  mpfr_asprintf(&text, "%.*R*e", digits - 1, rounding, x.backend().data());
+  std::string out(text);
+  mpfr_free_str(text);
+  return out;
+}
+
+// Bits to start from: the precision's, and some to spare for the enclosure's width.
+mpfr_prec_t first_bits(const Precision& p) {
+  switch (p.type) {
+    case NumberType::float64: return 53 + 40;
+    case NumberType::float80: return 64 + 40;
+    case NumberType::bin50: return std::numeric_limits<bin50>::digits + 40;
+    case NumberType::bin100: return std::numeric_limits<bin100>::digits + 40;
+    case NumberType::mpfr: return static_cast<mpfr_prec_t>(p.digits * 3.3219280948873623) + 40;
+  }
+  return 128;
+}
+
+}  // namespace
+
+Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
+  if (wave.kind == WaveKind::sine) {
+    // The sine's values are enclosed per point (core/enclosure.hpp).
+  } else {
+    try {
+      wave_ = exact_wave(wave);
+    } catch (const InputError&) {
+      throw InputError("wave '" + detail::visible(wave.name) + "' has no certified values: they exist for " + certified_waves +
+                       " (piecewise linear: exact rationals; the sine: enclosures)");
+    }
+  }
   if (profile.kind != ProfileKind::flat)
     throw InputError("profile " + detail::visible(profile.name) +
                      " has no certified values: they exist for the flat punch (a curved contact integrates over springs)");
@@ -116,17 +170,39 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
   if (point.beta_value || point.gamma_value)
     throw InputError("a computed point (beta " + point.beta + ") has no exact inputs to certify");
   const Rational beta = exact::decimal(point.beta, "beta");
+  const Rational gamma = q == Quantity::psi ? Rational(1) : exact::decimal(point.gamma, "gamma");
   Certificate c;
-  c.value = q == Quantity::psi ? exact::psi(wave_, beta).lost_area
-                               : exact::solve(wave_, beta, exact::decimal(point.gamma, "gamma")).mu;
-  c.exact = text_of(c.value);
-  const int digits = output_digits(precision);
-  switch (precision.type) {
-    case NumberType::float64: c.nearest = nearest_in<double>(c.value, digits); break;
-    case NumberType::float80: c.nearest = nearest_in<long double>(c.value, digits); break;
-    case NumberType::bin50: c.nearest = nearest_in<bin50>(c.value, digits); break;
-    case NumberType::bin100: c.nearest = nearest_in<bin100>(c.value, digits); break;
-    case NumberType::mpfr: c.nearest = nearest_decimals(c.value, digits); break;
+  if (wave_) {
+    c.lower = q == Quantity::psi ? exact::psi(*wave_, beta).lost_area : exact::solve(*wave_, beta, gamma).mu;
+    c.upper = c.lower;
+    c.exact = text_of(c.lower);
+    c.nearest = rounded_texts(c.lower, precision);
+  } else {
+    // Ψ of the sine at γ = −min w = 1 (Eq. 12). Double the bits until both ends of the
+    // enclosure round alike (no tie: the value is transcendental unless it is exactly 1 or 0).
+    for (mpfr_prec_t bits = first_bits(precision);; bits *= 2) {
+      if (bits > max_certify_bits)
+        throw SolverError("sine, beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
+                          ": the enclosure does not decide the rounding at " + std::to_string(max_certify_bits) + " bits");
+      std::optional<certified::SineEnclosure> e;
+      try {
+        e.emplace(certified::enclose_sine(beta, gamma, bits));
+      } catch (const certified::Undecided&) {
+        continue;
+      }
+      const Interval& v = q == Quantity::psi ? e->lost_area : e->mu;
+      const Rational lo = rational_of(v.lower()), hi = rational_of(v.upper());
+      std::vector<std::string> at_lo = rounded_texts(lo, precision), at_hi = rounded_texts(hi, precision);
+      if (at_lo.size() != 1 || at_lo != at_hi) continue;
+      c.lower = lo;
+      c.upper = hi;
+      c.nearest = at_lo;
+      c.bits = bits;
+      const int digits = output_digits(precision) + 3;
+      c.lower_text = directed(v.lower(), digits, MPFR_RNDD);
+      c.upper_text = directed(v.upper(), digits, MPFR_RNDU);
+      break;
+    }
   }
   for (const std::string& t : c.nearest) c.correctly_rounded = c.correctly_rounded || t == printed;
   return c;

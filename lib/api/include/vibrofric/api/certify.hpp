@@ -1,9 +1,10 @@
 // Certified values (README, "Precision"): μ̄/μ0 (Eq. 15) and Ψ_w(β) (Eq. 12) of the
-// piecewise-linear waves as exact rationals (core/exact.hpp), and the proof that a value evaluate()
-// printed is their correct rounding in the number type or to the digits asked for. The waves
-// that are not piecewise linear (the sine, power:P for P ≠ 1, Fourier series) have no certified
-// values yet.
+// piecewise-linear waves as exact rationals (core/exact.hpp), of the sine as interval enclosures
+// (core/enclosure.hpp) narrowed until they decide the rounding, and the proof that a value
+// evaluate() printed is their correct rounding in the number type or to the digits asked for.
+// power:P for P ≠ 1 and Fourier series have no certified values yet.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,17 +16,22 @@
 namespace vibrofric {
 
 struct Certificate {
-  exact::Rational value;  // μ̄/μ0 or Ψ, exactly
-  std::string exact;      // its text: "p/q", or "p" where it is an integer
+  // μ̄/μ0 or Ψ lies in [lower, upper]: equal, the exact value, for the piecewise-linear waves
+  // (`exact` its text: "p/q", or "p" for an integer); the dyadic ends of an enclosure for the
+  // sine (`lower_text`, `upper_text`: decimals rounded outward, three digits past the precision's).
+  exact::Rational lower, upper;
+  std::string exact, lower_text, upper_text;
+  mpfr_prec_t bits = 0;  // the enclosure's precision that decided the rounding (0: exact)
   // The texts of the correctly rounded value at the precision (two where the exact value is a
   // tie between them), and whether the printed text is one of them.
   std::vector<std::string> nearest;
   bool correctly_rounded = false;
 };
 
-// Certificates for the points of one wave: the triangle, both sawtooths, the square wave,
-// power:P with P = 1 and samples, on the flat punch. The constructor throws InputError for any
-// other wave or profile, naming it.
+// Certificates for the points of one wave: the sine, the triangle, both sawtooths, the square
+// wave, power:P with P = 1 and samples, on the flat punch. The constructor throws InputError for
+// any other wave or profile, naming it. An enclosure that has not decided the rounding at
+// max_certify_bits is a SolverError.
 class Certifier {
  public:
   Certifier(const WaveSpec& wave, const ProfileSpec& profile);
@@ -35,8 +41,10 @@ class Certifier {
   Certificate operator()(Quantity q, const Point& point, const Precision& precision, const std::string& printed) const;
 
  private:
-  exact::Wave wave_;
+  std::optional<exact::Wave> wave_;  // none: the sine
 };
+
+inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;
 
 // The wave as an exact piecewise-linear wave (samples normalised exactly, from their decimal
 // text); InputError naming it for a wave that is not piecewise linear.

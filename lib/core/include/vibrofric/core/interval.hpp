@@ -77,6 +77,12 @@ class Interval {
     mpfi_union(r.v_, r.v_, b.v_);
     return r;
   }
+  // The rational p/q (GMP), enclosed: exact where it is dyadic and fits, else one ulp wide.
+  static Interval rational(mpq_srcptr q, mpfr_prec_t bits) {
+    Interval r(bits);
+    mpfi_set_q(r.v_, q);
+    return r;
+  }
   static Interval pi(mpfr_prec_t bits) {
     Interval r(bits);
     mpfi_const_pi(r.v_);
@@ -127,6 +133,9 @@ class Interval {
   friend Interval sin(Interval a) { return a.unary(mpfi_sin); }
   friend Interval cos(Interval a) { return a.unary(mpfi_cos); }
   friend Interval exp(Interval a) { return a.unary(mpfi_exp); }
+  // asin and acos of an interval reaching outside [−1, 1] are an error, not a NaN end.
+  friend Interval asin(Interval a) { return a.in_unit_range("asin").unary(mpfi_asin); }
+  friend Interval acos(Interval a) { return a.in_unit_range("acos").unary(mpfi_acos); }
   // sqrt and log of an interval reaching below their domain are an error, not a NaN end.
   friend Interval sqrt(Interval a) {
     if (mpfr_sgn(&a.v_->left) < 0) throw SolverError("interval sqrt of an interval reaching below 0");
@@ -166,6 +175,11 @@ class Interval {
   Interval& apply(F f, const Interval& b) {
     if (mpfi_get_prec(b.v_) > precision()) mpfi_round_prec(v_, mpfi_get_prec(b.v_));
     f(v_, v_, b.v_);
+    return *this;
+  }
+  Interval& in_unit_range(const char* f) {
+    if (mpfr_cmp_si(&v_->left, -1) < 0 || mpfr_cmp_si(&v_->right, 1) > 0 || mpfr_nan_p(&v_->left) || mpfr_nan_p(&v_->right))
+      throw SolverError(std::string("interval ") + f + " of an interval reaching outside [-1, 1]");
     return *this;
   }
   template <class F>

@@ -1,0 +1,119 @@
+// Certified enclosures of the harmonic wave (core/enclosure.hpp) against the event solver at 100
+// digits (its own bound about 1e-95): every enclosure holds the solver's μ̄, Ψ, areas and stick
+// phase, is at most a few hundred ulps of its precision wide, and decides its structure only
+// when certain (β a hair from β_c is Undecided at 64 bits and decided at 256).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+
+#include "vibrofric/core/enclosure.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/waveform.hpp"
+
+namespace {
+
+namespace cert = vibrofric::certified;
+using Q = vibrofric::exact::Rational;
+using vibrofric::Interval;
+using vibrofric::mpfr;
+
+mpfr to_mpfr(const Q& x) {
+  mpfr r;
+  mpfr_set_q(r.backend().data(), x.backend().data(), MPFR_RNDN);
+  return r;
+}
+
+// x lies in the enclosure widened by the reference's own error.
+::testing::AssertionResult holds(const Interval& e, const mpfr& x, const mpfr& slack) {
+  // At 400 bits, directed: the enclosure's ends carry fewer bits, and Boost's mpfr arithmetic
+  // would round the slack away at the first operand's precision.
+  mpfr_t lo, hi;
+  mpfr_inits2(400, lo, hi, static_cast<mpfr_ptr>(nullptr));
+  mpfr_sub(lo, e.lower().backend().data(), slack.backend().data(), MPFR_RNDD);
+  mpfr_add(hi, e.upper().backend().data(), slack.backend().data(), MPFR_RNDU);
+  const bool inside = mpfr_cmp(lo, x.backend().data()) <= 0 && mpfr_cmp(x.backend().data(), hi) <= 0;
+  mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
+  if (inside) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << x.str(100) << " outside [" << e.lower().str(70) << ", " << e.upper().str(70) << "]";
+}
+
+// Width in units of 2^−bits, relative to max(1, |value|): the areas are differences of O(1)
+// antiderivative values, so a small μ̄ or Ψ (β → 0) has a small absolute, not relative, width
+// (the decision of a rounding then takes more bits, as in the solver's ladder).
+double width_in_ulps(const Interval& e, mpfr_prec_t bits) {
+  const mpfr scale = std::max(mpfr(1), std::max(abs(e.lower()), abs(e.upper())));
+  return static_cast<double>(e.width() / scale * pow(mpfr(2), static_cast<long>(bits)));
+}
+
+TEST(SineEnclosure, HoldsTheSolversValuesAndIsTight) {
+  vibrofric::PrecisionScope scope(100);
+  const mpfr slack("1e-90");
+  const vibrofric::Sine<mpfr> sine;
+  std::mt19937 rng(20261127);
+  constexpr mpfr_prec_t bits = 200;
+  int sticks = 0, contact_onsets = 0, no_stick = 0;
+  double widest = 0;
+  std::string widest_at;
+  for (int i = 0; i < 600; ++i) {
+    // β in (0, 7): both sides of β_c ∈ (0, 2π]; γ in (−1, 3): jumping and not.
+    const Q beta(std::uniform_int_distribution<long>(1, 7000000)(rng), 1000000);
+    Q gamma(std::uniform_int_distribution<long>(-999999, 3000000)(rng), 1000000);
+    if (i % 50 == 0) gamma = 1;  // Ψ's γ
+    const std::string at = "beta = " + beta.str() + ", gamma = " + gamma.str();
+    const cert::SineEnclosure e = cert::enclose_sine(beta, gamma, bits);
+    const vibrofric::Result<mpfr> r = vibrofric::solve(sine, to_mpfr(beta), to_mpfr(gamma));
+    ASSERT_LT(r.relative_error, mpfr("1e-95")) << at;
+    EXPECT_TRUE(holds(e.mu, r.mu, slack)) << at;
+    EXPECT_TRUE(holds(e.normal_area, r.normal_area, slack)) << at;
+    EXPECT_TRUE(holds(e.retained_area, r.retained_area, slack)) << at;
+    EXPECT_TRUE(holds(e.lost_area, r.lost_area, slack)) << at;
+    EXPECT_TRUE(holds(e.beta_c, r.beta_c, slack)) << at;
+    EXPECT_EQ(e.jumping, r.jumping) << at;
+    ASSERT_EQ(e.stick, !r.stick_phases.empty()) << at;
+    if (e.stick) {
+      ++sticks;
+      contact_onsets += e.onset_at_contact;
+      ASSERT_EQ(r.stick_phases.size(), 1u) << at;
+      // The solver's phases lie in [0, 1); the enclosure's onset may be negative (φ − 1).
+      mpfr onset = r.stick_phases[0].begin, end = r.stick_phases[0].end;
+      if (e.onset->upper() < 0) onset -= 1, end -= 1;
+      EXPECT_TRUE(holds(*e.onset, onset, slack)) << at;
+      EXPECT_TRUE(holds(*e.end, end, slack)) << at;
+      EXPECT_TRUE(holds(*e.level, r.stick_phases[0].level, slack)) << at;
+    } else {
+      ++no_stick;
+      EXPECT_EQ(e.mu.sign(), vibrofric::Sign::positive);
+      EXPECT_TRUE(e.mu.contains(mpfr(1)) && e.mu.width() == 0) << at << ": mu = 1 exactly (Eq. 6)";
+    }
+    // μ̄ = retained/normal: its width is the areas' divided by ∫n, small as γ → −1, so it is
+    // measured times ∫n.
+    const double widths[] = {width_in_ulps(e.retained_area, bits), width_in_ulps(e.normal_area, bits),
+                             width_in_ulps(e.lost_area, bits),
+                             width_in_ulps(e.mu, bits) * static_cast<double>(e.normal_area.lower())};
+    for (int k = 0; k < 4; ++k)
+      if (widths[k] > widest) widest = widths[k], widest_at = at + " (" + "rnlm"[k] + ")";
+  }
+  EXPECT_GT(sticks, 300);
+  EXPECT_GT(contact_onsets, 50);
+  EXPECT_GT(no_stick, 20);
+  // Tight: every enclosure within a few hundred units of 2^−200 (absolute for values below 1).
+  EXPECT_LT(widest, 1e4) << widest;
+  std::cout << "widest enclosure: " << widest << " units of 2^-200, at " << widest_at << "\n";
+}
+
+TEST(SineEnclosure, UndecidedUntilTheBitsDecide) {
+  // β = 2π to 21 digits, just above: at 64 bits the comparison with β_c = 2π is open.
+  const Q b(std::string("628318530717958647693/100000000000000000000"));
+  EXPECT_THROW(cert::enclose_sine(b, Q(2), 64), cert::Undecided);
+  const cert::SineEnclosure e = cert::enclose_sine(b, Q(2), 256);
+  EXPECT_FALSE(e.stick);  // β > 2π
+  const Q below(std::string("628318530717958647692/100000000000000000000"));
+  const cert::SineEnclosure f = cert::enclose_sine(below, Q(2), 256);
+  EXPECT_TRUE(f.stick);
+  EXPECT_THROW(cert::enclose_sine(Q(1), Q(-1), 64), vibrofric::DomainError);
+  EXPECT_THROW(cert::enclose_sine(Q(0), Q(0), 64), vibrofric::InputError);
+}
+
+}  // namespace
