@@ -298,8 +298,9 @@ void profile_named(Flags& f, const std::string& t) {
 }
 void format_of_point(Flags& f, const std::string& t) { f.format = format_named(t); }
 const FlagSpec kCertifyFlag{
-    "certify", "", "piecewise-linear waves on the flat punch: print the exact rational value and prove that the "
-                   "printed one is its correct rounding (=true/false/yes/no/1/0)", "",
+    "certify", "", "flat punch, every wave but Fourier series: print the exact value (piecewise-linear waves) or "
+                   "an enclosure (sine, power:P) and prove that the printed value is its correct rounding "
+                   "(=true/false/yes/no/1/0)", "",
     [](Flags& f, const std::string& t) { f.certify = switch_value(t, "certify"); }};
 // A sweep writes rows: csv (its default) or json.
 void format_of_rows(Flags& f, const std::string& t) {
@@ -784,7 +785,7 @@ int run_sweep(const Flags& f) {
     if (q == Quantity::mu) r.push_back(pt.gamma);
     r.push_back(value.text);
     if (certifier)
-      for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), wave.kind == WaveKind::sine))
+      for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), certifier->encloses()))
         r.push_back(field.second);
     if (format == Format::json)
       std::cout << (i ? ",\n " : "\n ") << json_record(names, r).dump();

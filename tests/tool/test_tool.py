@@ -2033,10 +2033,12 @@ def certify_tests():
 
     def sine_enclosures():
         # The enclosure holds the 60-digit value, is narrow, and its ends round to the printed value.
-        for b, g in (("1", "0.2"), ("0.37", "-0.9"), ("5.5", "2"), ("1e-6", "0.5"), ("6.2", "0")):
-            want = F(ok_run(["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--digits", "60"]).strip())
+        for wave, b, g in (("sine", "1", "0.2"), ("sine", "0.37", "-0.9"), ("sine", "5.5", "2"), ("sine", "1e-6", "0.5"),
+                           ("sine", "6.2", "0"), ("power:2", "3", "0.3"), ("power:3.5", "0.2", "-0.6"),
+                           ("power:1.25", "4.9", "1.5")):
+            want = F(ok_run(["mu", "--wave", wave, "--beta", b, "--gamma", g, "--digits", "60"]).strip())
             for extra, digits in ((["--type", "double"], None), (["--digits", "25"], 25)):
-                args = ["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--certify"] + extra
+                args = ["mu", "--wave", wave, "--beta", b, "--gamma", g, "--certify"] + extra
                 lines = ok_run(args).splitlines()
                 m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 3 else None
                 if not m or not lines[2].startswith("proven: "):
@@ -2053,13 +2055,15 @@ def certify_tests():
         out = json.loads(lines)
         if F(out["lower"]) != 1 or F(out["upper"]) != 1 or out["correctly_rounded"] != "proven":
             raise Fail("sine at beta 6.3 > 2 pi: %r" % out)
-    case("certify: the sine's enclosures hold the 60-digit value and decide the rounding", sine_enclosures)
+        # power:2 at gamma = -3/4: beta_c = 8 (1/4)^(1/2) = 4 exactly; beta = 4 gives 1 exactly (Eq. 6).
+        out = json.loads(ok_run(["mu", "--wave", "power:2", "--beta", "4", "--gamma", "-0.75", "--certify", "--format", "json"]))
+        if F(out["lower"]) != 1 or F(out["upper"]) != 1:
+            raise Fail("power:2 at beta = beta_c = 4: %r" % out)
+    case("certify: enclosures (sine, power:P) hold the 60-digit value and decide the rounding", sine_enclosures)
 
     bad("certify: a Fourier series has no certified values",
         ["mu", "--wave", "fourier:" + write("certify.fourier", "1 0 1\n"), "--beta", "1", "--gamma", "0", "--certify"],
         ["fourier"], ["certif", "triangle"])
-    bad("certify: power:2 has no certified values", ["psi", "--wave", "power:2", "--beta", "1", "--certify"],
-        ["power:2"], ["certif"])
     bad("certify: a curved profile", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--profile", "sphere", "--certify"],
         ["sphere"], ["flat punch"])
     bad("certify: with --no-escalate", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--type", "double",

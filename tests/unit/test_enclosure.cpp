@@ -1,4 +1,4 @@
-// Certified enclosures of the harmonic wave (core/enclosure.hpp) against the event solver at 100
+// Certified enclosures of the sine and power:p (core/enclosure.hpp) against the event solver at 100
 // digits (its own bound about 1e-95): every enclosure holds the solver's μ̄, Ψ, areas and stick
 // phase, is at most a few hundred ulps of its precision wide, and decides its structure only
 // when certain (β a hair from β_c is Undecided at 64 bits and decided at 256).
@@ -47,6 +47,29 @@ double width_in_ulps(const Interval& e, mpfr_prec_t bits) {
   return static_cast<double>(e.width() / scale * pow(mpfr(2), static_cast<long>(bits)));
 }
 
+// Every quantity of e holds the solver's (r, at 100 digits): μ̄, the areas, β_c, and the stick
+// phase, whose onset the solver counts in [0, 1) from its sweep's start (the enclosure's lies in
+// [−1/4, 1/4]: shifted by a period where they differ by more than a half).
+void expect_holds(const cert::SineEnclosure& e, const vibrofric::Result<mpfr>& r, const mpfr& slack, const std::string& at) {
+  EXPECT_TRUE(holds(e.mu, r.mu, slack)) << at;
+  EXPECT_TRUE(holds(e.normal_area, r.normal_area, slack)) << at;
+  EXPECT_TRUE(holds(e.retained_area, r.retained_area, slack)) << at;
+  EXPECT_TRUE(holds(e.lost_area, r.lost_area, slack)) << at;
+  EXPECT_TRUE(holds(e.beta_c, r.beta_c, slack)) << at;
+  EXPECT_EQ(e.jumping, r.jumping) << at;
+  ASSERT_EQ(e.stick, !r.stick_phases.empty()) << at;
+  if (!e.stick) {
+    EXPECT_TRUE(e.mu.contains(mpfr(1)) && e.mu.width() == 0) << at << ": mu = 1 exactly (Eq. 6)";
+    return;
+  }
+  ASSERT_EQ(r.stick_phases.size(), 1u) << at;
+  mpfr onset = r.stick_phases[0].begin, end = r.stick_phases[0].end;
+  if (onset - e.onset->upper() > mpfr(0.5)) onset -= 1, end -= 1;
+  EXPECT_TRUE(holds(*e.onset, onset, slack)) << at;
+  EXPECT_TRUE(holds(*e.end, end, slack)) << at;
+  EXPECT_TRUE(holds(*e.level, r.stick_phases[0].level, slack)) << at;
+}
+
 TEST(SineEnclosure, HoldsTheSolversValuesAndIsTight) {
   vibrofric::PrecisionScope scope(100);
   const mpfr slack("1e-90");
@@ -65,28 +88,9 @@ TEST(SineEnclosure, HoldsTheSolversValuesAndIsTight) {
     const cert::SineEnclosure e = cert::enclose_sine(beta, gamma, bits);
     const vibrofric::Result<mpfr> r = vibrofric::solve(sine, to_mpfr(beta), to_mpfr(gamma));
     ASSERT_LT(r.relative_error, mpfr("1e-95")) << at;
-    EXPECT_TRUE(holds(e.mu, r.mu, slack)) << at;
-    EXPECT_TRUE(holds(e.normal_area, r.normal_area, slack)) << at;
-    EXPECT_TRUE(holds(e.retained_area, r.retained_area, slack)) << at;
-    EXPECT_TRUE(holds(e.lost_area, r.lost_area, slack)) << at;
-    EXPECT_TRUE(holds(e.beta_c, r.beta_c, slack)) << at;
-    EXPECT_EQ(e.jumping, r.jumping) << at;
-    ASSERT_EQ(e.stick, !r.stick_phases.empty()) << at;
-    if (e.stick) {
-      ++sticks;
-      contact_onsets += e.onset_at_contact;
-      ASSERT_EQ(r.stick_phases.size(), 1u) << at;
-      // The solver's phases lie in [0, 1); the enclosure's onset may be negative (φ − 1).
-      mpfr onset = r.stick_phases[0].begin, end = r.stick_phases[0].end;
-      if (e.onset->upper() < 0) onset -= 1, end -= 1;
-      EXPECT_TRUE(holds(*e.onset, onset, slack)) << at;
-      EXPECT_TRUE(holds(*e.end, end, slack)) << at;
-      EXPECT_TRUE(holds(*e.level, r.stick_phases[0].level, slack)) << at;
-    } else {
-      ++no_stick;
-      EXPECT_EQ(e.mu.sign(), vibrofric::Sign::positive);
-      EXPECT_TRUE(e.mu.contains(mpfr(1)) && e.mu.width() == 0) << at << ": mu = 1 exactly (Eq. 6)";
-    }
+    expect_holds(e, r, slack, at);
+    if (e.stick) ++sticks, contact_onsets += e.onset_at_contact;
+    else ++no_stick;
     // μ̄ = retained/normal: its width is the areas' divided by ∫n, small as γ → −1, so it is
     // measured times ∫n.
     const double widths[] = {width_in_ulps(e.retained_area, bits), width_in_ulps(e.normal_area, bits),
@@ -101,6 +105,42 @@ TEST(SineEnclosure, HoldsTheSolversValuesAndIsTight) {
   // Tight: every enclosure within a few hundred units of 2^−200 (absolute for values below 1).
   EXPECT_LT(widest, 1e4) << widest;
   std::cout << "widest enclosure: " << widest << " units of 2^-200, at " << widest_at << "\n";
+}
+
+// power:p, p > 1, the same checks against the solver's Power wave at 100 digits.
+TEST(PowerEnclosure, HoldsTheSolversValues) {
+  vibrofric::PrecisionScope scope(100);
+  const mpfr slack("1e-90");
+  std::mt19937 rng(7);
+  constexpr mpfr_prec_t bits = 200;
+  int sticks = 0, contact_onsets = 0;
+  for (const char* ptext : {"1.5", "2", "2.5", "3", "7", "1.1", "20"}) {
+    const Q p = vibrofric::exact::decimal(ptext, "p");
+    const vibrofric::Power<mpfr> wave(mpfr(ptext), std::string("power:") + ptext);
+    for (int i = 0; i < 80; ++i) {
+      // β in (0, 5p): both sides of β_c ≤ 4p.
+      const Q beta = Q(std::uniform_int_distribution<long>(1, 5000000)(rng), 1000000) * p;
+      Q gamma(std::uniform_int_distribution<long>(-999999, 3000000)(rng), 1000000);
+      if (i % 20 == 0) gamma = 1;
+      const std::string at = std::string("power:") + ptext + ", beta = " + beta.str() + ", gamma = " + gamma.str();
+      const cert::SineEnclosure e = cert::enclose_power(p, beta, gamma, bits);
+      const vibrofric::Result<mpfr> r = vibrofric::solve(wave, to_mpfr(beta), to_mpfr(gamma));
+      ASSERT_LT(r.relative_error, mpfr("1e-90")) << at;
+      expect_holds(e, r, slack, at);
+      if (e.stick) ++sticks, contact_onsets += e.onset_at_contact;
+    }
+  }
+  EXPECT_GT(sticks, 300);
+  EXPECT_GT(contact_onsets, 40);
+  // β exactly at β_c = 4p (1 + γ)^((p − 1)/p) = 4 for p = 2, γ = −3/4: decided exactly (Eq. 6:
+  // μ̄ = 1), as is β exactly at n' of first contact (p = 2, γ = 3/4, where both onsets coincide).
+  const cert::SineEnclosure edge = cert::enclose_power(Q(2), Q(4), Q(-3, 4), 64);
+  EXPECT_FALSE(edge.stick);
+  const cert::SineEnclosure onset = cert::enclose_power(Q(2), Q(4), Q(3, 4), 128);
+  EXPECT_TRUE(onset.stick);
+  const vibrofric::Power<mpfr> two(mpfr(2), "power:2");
+  EXPECT_TRUE(holds(onset.mu, vibrofric::solve(two, mpfr(4), mpfr(0.75)).mu, slack));
+  EXPECT_THROW(cert::enclose_power(Q(1), Q(1), Q(0), 64), vibrofric::InputError);
 }
 
 TEST(SineEnclosure, UndecidedUntilTheBitsDecide) {

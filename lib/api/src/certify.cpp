@@ -9,7 +9,7 @@
 
 namespace vibrofric {
 
-const char* const certified_waves = "sine, triangle, sawtooth-right, sawtooth-left, square, power:1 and samples:FILE";
+const char* const certified_waves = "sine, power:P, triangle, sawtooth-right, sawtooth-left, square and samples:FILE";
 
 using exact::Rational;
 using Integer = boost::multiprecision::mpz_int;
@@ -151,14 +151,17 @@ mpfr_prec_t first_bits(const Precision& p) {
 }  // namespace
 
 Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
-  if (wave.kind == WaveKind::sine) {
-    // The sine's values are enclosed per point (core/enclosure.hpp).
-  } else {
+  // The sine and power:P (P ≠ 1) are enclosed per point (core/enclosure.hpp); the others exactly.
+  if (wave.kind == WaveKind::power) {
+    const Rational p = exact::decimal(wave.exponent, "power exponent p");
+    if (p != 1) power_ = p;
+  }
+  if (wave.kind != WaveKind::sine && !power_) {
     try {
       wave_ = exact_wave(wave);
     } catch (const InputError&) {
       throw InputError("wave '" + detail::visible(wave.name) + "' has no certified values: they exist for " + certified_waves +
-                       " (piecewise linear: exact rationals; the sine: enclosures)");
+                       " (piecewise linear: exact rationals; the sine and power:P: enclosures)");
     }
   }
   if (profile.kind != ProfileKind::flat)
@@ -178,15 +181,15 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     c.exact = text_of(c.lower);
     c.nearest = rounded_texts(c.lower, precision);
   } else {
-    // Ψ of the sine at γ = −min w = 1 (Eq. 12). Double the bits until both ends of the
+    // Ψ at γ = −min w = 1 (Eq. 12). Double the bits until both ends of the
     // enclosure round alike (no tie: the value is transcendental unless it is exactly 1 or 0).
     for (mpfr_prec_t bits = first_bits(precision);; bits *= 2) {
       if (bits > max_certify_bits)
-        throw SolverError("sine, beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
+        throw SolverError(std::string(power_ ? "power:" + power_->str() : "sine") + ", beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
                           ": the enclosure does not decide the rounding at " + std::to_string(max_certify_bits) + " bits");
       std::optional<certified::SineEnclosure> e;
       try {
-        e.emplace(certified::enclose_sine(beta, gamma, bits));
+        e.emplace(power_ ? certified::enclose_power(*power_, beta, gamma, bits) : certified::enclose_sine(beta, gamma, bits));
       } catch (const certified::Undecided&) {
         continue;
       }

@@ -1,8 +1,8 @@
 // Certified values (README, "Precision"): μ̄/μ0 (Eq. 15) and Ψ_w(β) (Eq. 12) of the
-// piecewise-linear waves as exact rationals (core/exact.hpp), of the sine as interval enclosures
-// (core/enclosure.hpp) narrowed until they decide the rounding, and the proof that a value
-// evaluate() printed is their correct rounding in the number type or to the digits asked for.
-// power:P for P ≠ 1 and Fourier series have no certified values yet.
+// piecewise-linear waves as exact rationals (core/exact.hpp), of the sine and power:P as interval
+// enclosures (core/enclosure.hpp) narrowed until they decide the rounding, and the proof that a
+// value evaluate() printed is their correct rounding in the number type or to the digits asked
+// for. Fourier series have no certified values yet.
 #pragma once
 #include <optional>
 #include <string>
@@ -28,8 +28,8 @@ struct Certificate {
   bool correctly_rounded = false;
 };
 
-// Certificates for the points of one wave: the sine, the triangle, both sawtooths, the square
-// wave, power:P with P = 1 and samples, on the flat punch. The constructor throws InputError for
+// Certificates for the points of one wave: the sine, power:P, the triangle, both sawtooths, the
+// square wave and samples, on the flat punch. The constructor throws InputError for
 // any other wave or profile, naming it. An enclosure that has not decided the rounding at
 // max_certify_bits is a SolverError.
 class Certifier {
@@ -39,9 +39,12 @@ class Certifier {
   // point's β and γ as typed: a computed point (Point::beta_value) has no exact inputs and is an
   // InputError, as is a point evaluate() refuses).
   Certificate operator()(Quantity q, const Point& point, const Precision& precision, const std::string& printed) const;
+  // Whether its certificates are enclosures (the sine, power:P with P ≠ 1) or exact values.
+  bool encloses() const { return !wave_; }
 
  private:
-  std::optional<exact::Wave> wave_;  // none: the sine
+  std::optional<exact::Wave> wave_;       // piecewise linear
+  std::optional<exact::Rational> power_;  // power:P, P ≠ 1; neither: the sine
 };
 
 inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;

@@ -1,17 +1,20 @@
-// Certified enclosures of μ̄/μ0 = g_w(β, γ) (Eq. 15) and Ψ_w(β) (Eq. 12) for the harmonic wave
-// w = sin 2πφ at rational β and γ, in interval arithmetic (core/interval.hpp): every interval
-// holds the exact value. n = max(γ + sin 2πφ, 0) has one maximum per period, so the steady state
-// (model.md) has at most one stick phase, and its structure is decided by certain comparisons:
-//  - no stick where β ≥ β_c(γ) (Eq. 6): 2π for γ ≥ 0, 2π√(1 − γ²) below; then μ̄ = 1 exactly;
-//  - onset (Eq. 4) at first contact φ_c = asin(−γ)/2π, level 0, where n' = 2π√(1 − γ²) > β
-//    there, else where n' falls to β, φ_1 = −acos(β/2π)/2π, level γ − √(1 − (β/2π)²);
-//  - end (Eq. 8) at the root of F(φ) = n(φ) − level − β(φ − φ_1) on the falling flank: a bracket
-//    with certain signs, then interval Newton once F' = 2π cos 2πφ − β < 0 certainly on it, so
-//    the root exists and is unique for every value of the enclosed parameters;
-//  - areas from the antiderivative γφ − cos(2πφ)/2π (Eqs. 9–12): ∫n = γ without jumping, else
-//    γ(1/2 − 2φ_c) + cos(2πφ_c)/π; lost = ∫ over the stick phase of n minus the ramp.
-// β against β_c and the onset's kind compare a rational with an irrational number, so more bits
-// always decide them; at too few bits a comparison is Undecided (never a guess).
+// Certified enclosures of μ̄/μ0 = g_w(β, γ) (Eq. 15) and Ψ_w(β) (Eq. 12) at rational β and γ,
+// in interval arithmetic (core/interval.hpp), for the waves with the sine's symmetries: the
+// harmonic wave sin 2πφ and power:p, p > 1 (model.md's catalogue). Both are odd on their rising
+// flank r(t), t ∈ [−1/4, 1/4] (r' largest at 0, r concave for t > 0), with w(1/2 − φ) = w(φ)
+// and w(φ + 1/2) = −w(φ). So n = max(γ + w, 0) has one maximum per period, the steady state
+// (model.md) at most one stick phase, and its structure is decided by certain comparisons:
+//  - no stick where β ≥ β_c(γ) (Eq. 6): r'(0) for γ ≥ 0, r'(t_c) below, t_c = r⁻¹(−γ) the first
+//    contact; then μ̄ = 1 exactly;
+//  - onset (Eq. 4) at first contact, level 0, where n' = r'(t_c) > β there, else where n' falls
+//    to β on the convex side, t_1 = −top, r'(top) = β, level γ − r(top);
+//  - end (Eq. 8) at the root of F(φ) = n(φ) − level − β(φ − t_1) on the falling flank: a bracket
+//    with certain signs, then interval Newton once F' = w' − β < 0 certainly on it, so the root
+//    exists and is unique for every value of the enclosed parameters;
+//  - areas from the antiderivative R of r (Eqs. 9–12): ∫n = γ without jumping, else
+//    γ(1/2 − 2t_c) + 2(R(1/4) − R(t_c)); lost = ∫ over the stick phase of n minus the ramp.
+// Comparisons of a rational with an irrational number (β against β_c for the sine) are decided
+// by more bits; at too few bits a comparison is Undecided (never a guess).
 #pragma once
 #include <optional>
 
@@ -41,5 +44,8 @@ struct SineEnclosure {
 // At `bits` per endpoint. InputError for β ≤ 0, DomainError for γ ≤ −1 (no contact), Undecided
 // where this precision does not decide a comparison, SolverError if the end cannot be enclosed.
 SineEnclosure enclose_sine(const exact::Rational& beta, const exact::Rational& gamma, mpfr_prec_t bits);
+// power:p, p > 1 (InputError otherwise; power:1 is piecewise linear: exact.hpp).
+SineEnclosure enclose_power(const exact::Rational& p, const exact::Rational& beta, const exact::Rational& gamma,
+                            mpfr_prec_t bits);
 
 }  // namespace vibrofric::certified
