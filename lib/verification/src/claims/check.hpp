@@ -196,20 +196,25 @@ inline int below_exponent(int digits) { return (digits + 3) / 4; }
 inline Real below_step(int digits) { return pow(Real(10), -below_exponent(digits)); }
 inline std::string below_text(int digits) { return "beta_c (1 - 1e-" + std::to_string(below_exponent(digits)) + ")"; }
 
-inline std::vector<Real> reals(std::initializer_list<const char*> l) {
+inline std::vector<Real> reals(const std::vector<const char*>& l) {
   std::vector<Real> out;
   for (const char* s : l) out.push_back(num(s));
   return out;
 }
 
 // β over (0, 100] with the catalogue's thresholds (2, 4) on both sides.
-inline std::vector<Real> betas_wide() {
-  return reals({"0.001", "0.01", "0.1", "0.5", "1", "1.5", "1.999", "2", "2.5", "3.9", "4", "5", "10", "100"});
+inline const std::vector<const char*>& beta_texts_wide() {
+  static const std::vector<const char*> t{"0.001", "0.01", "0.1", "0.5", "1", "1.5", "1.999",
+                                                    "2",     "2.5",  "3.9", "4",   "5", "10",  "100"};
+  return t;
 }
+inline std::vector<Real> betas_wide() { return reals(beta_texts_wide()); }
 // The jumping range (−1, 1], both ends approached.
-inline std::vector<Real> gammas_jumping() {
-  return reals({"-0.999", "-0.9", "-0.5", "-0.3", "0", "0.25", "0.5", "0.9", "0.999", "1"});
+inline const std::vector<const char*>& gamma_texts_jumping() {
+  static const std::vector<const char*> t{"-0.999", "-0.9", "-0.5", "-0.3", "0", "0.25", "0.5", "0.9", "0.999", "1"};
+  return t;
 }
+inline std::vector<Real> gammas_jumping() { return reals(gamma_texts_jumping()); }
 // The paper's 11 values of γ for Figs. 3 and 4, from 1 to −1 in steps of 0.2. γ = −1 itself has no
 // contact (model.md: a domain error), so the last curve is taken at −1 + 10^-3.
 inline std::vector<Real> gammas_figure() {

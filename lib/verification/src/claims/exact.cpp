@@ -2,6 +2,7 @@
 // decided by the solver at high precision against the closed form (closed_forms.hpp) or against
 // the solver at the reference point the claim names.
 #include "check.hpp"
+#include "vibrofric/core/exact.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 
 namespace vibrofric::claims {
@@ -9,7 +10,29 @@ namespace cf = closed_form;
 
 namespace {
 const char* const kWaves[] = {"sine", "triangle", "sawtooth-right", "sawtooth-left", "square", "power:2", "power:3"};
+
+// Certified (README, "Precision"): the claim at the same grid, its decimals taken exactly, in GMP
+// rationals (core/exact.hpp) against the closed form also in rationals. `equal(β, γ)` is one case;
+// a case that is not exactly equal is a deviation of 1, so the claim fails on it.
+using Q = exact::Rational;
+template <class Equal>
+void certify_exactly(Check& c, const std::vector<const char*>& betas, const std::vector<const char*>& gammas, Equal equal) {
+  long cases = 0, equal_cases = 0;
+  for (const char* b : betas)
+    for (const char* g : gammas) {
+      ++cases;
+      const Q beta = exact::decimal(b, "beta"), gamma = exact::decimal(g, "gamma");
+      if (equal(beta, gamma)) {
+        ++equal_cases;
+      } else {
+        c.record(1.0, std::string("certified in exact rationals: beta = ") + b + ", gamma = " + g + " not equal");
+      }
+    }
+  c.measure("certified in exact rationals (core/exact.hpp), the grid's decimals taken exactly",
+            std::to_string(equal_cases) + " of " + std::to_string(cases) + " cases exactly equal",
+            {{"equal", std::to_string(equal_cases)}, {"cases", std::to_string(cases)}});
 }
+}  // namespace
 
 ClaimCheck eq6(int digits) {
   Check c(entry("eq6"), digits);
@@ -54,19 +77,24 @@ ClaimCheck eq13(int digits) {
 
 ClaimCheck eq17(int digits) {
   Check c(entry("eq17"), digits);
-  c.out().how = "solver Psi of str, stl, tri against the closed forms, 14 beta in (0, 100] (below beta_c for str, tri)";
+  c.out().how = "solver Psi of str, stl, tri against the closed forms, 14 beta in (0, 100] (below beta_c for str, tri); then certified: the same decimals exactly, in GMP rationals (core/exact.hpp), against the closed form in rationals";
   Solver str("sawtooth-right", digits), stl("sawtooth-left", digits), tri("triangle", digits);
   for (const Real& beta : betas_wide()) {
     if (beta < 2) c.compare(str.psi(beta), cf::psi_sawtooth_right(beta), at("str", beta));
     c.compare(stl.psi(beta), cf::psi_sawtooth_left(beta), at("stl", beta));
     if (beta < 4) c.compare(tri.psi(beta), cf::psi_triangle(beta), at("tri", beta));
   }
+  certify_exactly(c, beta_texts_wide(), {"1"}, [](const Q& beta, const Q&) {
+    return exact::psi(exact::sawtooth_right(), beta).lost_area == cf::psi_sawtooth_right(beta) &&
+           exact::psi(exact::sawtooth_left(), beta).lost_area == cf::psi_sawtooth_left(beta) &&
+           exact::psi(exact::triangle(), beta).lost_area == cf::psi_triangle(beta);
+  });
   return c.finish_exact();
 }
 
 ClaimCheck eq18(int digits) {
   Check c(entry("eq18"), digits);
-  c.out().how = "tri, str, stl x 14 beta x 10 gamma in (-1, 1]: solver mu(beta, gamma) against solver mu(beta, 1)";
+  c.out().how = "tri, str, stl x 14 beta x 10 gamma in (-1, 1]: solver mu(beta, gamma) against solver mu(beta, 1); then certified: the same decimals exactly, in GMP rationals (core/exact.hpp), mu(beta, gamma) against mu(beta, 1)";
   for (const char* name : {"triangle", "sawtooth-right", "sawtooth-left"}) {
     Solver s(name, digits);
     for (const Real& beta : betas_wide()) {
@@ -74,12 +102,17 @@ ClaimCheck eq18(int digits) {
       for (const Real& gamma : gammas_jumping()) c.compare(s.mu(beta, gamma), ref, at(name, beta, &gamma));
     }
   }
+  certify_exactly(c, beta_texts_wide(), gamma_texts_jumping(), [](const Q& beta, const Q& gamma) {
+    for (const exact::Wave& w : {exact::triangle(), exact::sawtooth_right(), exact::sawtooth_left()})
+      if (exact::solve(w, beta, gamma).mu != exact::solve(w, beta, Q(1)).mu) return false;
+    return true;
+  });
   return c.finish_exact();
 }
 
 ClaimCheck eq19(int digits) {
   Check c(entry("eq19"), digits);
-  c.out().how = "tri, str, stl x 14 beta x 10 gamma in (-1, 1]: solver against the closed forms (mu = mu0 beyond beta_c)";
+  c.out().how = "tri, str, stl x 14 beta x 10 gamma in (-1, 1]: solver against the closed forms (mu = mu0 beyond beta_c); then certified: the same decimals exactly, in GMP rationals (core/exact.hpp), against the closed form in rationals";
   Solver str("sawtooth-right", digits), stl("sawtooth-left", digits), tri("triangle", digits);
   for (const Real& beta : betas_wide())
     for (const Real& gamma : gammas_jumping()) {
@@ -87,6 +120,11 @@ ClaimCheck eq19(int digits) {
       c.compare(stl.mu(beta, gamma), cf::mu_sawtooth_left_jumping(beta), at("stl", beta, &gamma));
       c.compare(tri.mu(beta, gamma), cf::mu_triangle_jumping(beta), at("tri", beta, &gamma));
     }
+  certify_exactly(c, beta_texts_wide(), gamma_texts_jumping(), [](const Q& beta, const Q& gamma) {
+    return exact::solve(exact::sawtooth_right(), beta, gamma).mu == cf::mu_sawtooth_right_jumping(beta) &&
+           exact::solve(exact::sawtooth_left(), beta, gamma).mu == cf::mu_sawtooth_left_jumping(beta) &&
+           exact::solve(exact::triangle(), beta, gamma).mu == cf::mu_triangle_jumping(beta);
+  });
   return c.finish_exact();
 }
 
@@ -119,9 +157,15 @@ void square_closed_form(Check& c, Solver& s, const std::vector<Real>& gammas, co
 
 ClaimCheck eq22(int digits) {
   Check c(entry("eq22"), digits);
-  c.out().how = "square, 10 gamma in (-1, 1] x (14 beta + 5 around the threshold 2(1+gamma)): solver against the closed form";
+  c.out().how = "square, 10 gamma in (-1, 1] x (14 beta + 5 around the threshold 2(1+gamma)): solver against the closed form; then certified: the same decimals exactly, in GMP rationals (core/exact.hpp), against the closed form in rationals";
   Solver s("square", digits);
   square_closed_form(c, s, gammas_jumping(), betas_wide());
+  certify_exactly(c, beta_texts_wide(), gamma_texts_jumping(), [](const Q& beta, const Q& gamma) {
+    // The grid's β and the threshold 2(1 + γ) with its neighbours, exactly.
+    for (const Q& b : {beta, Q(2 * (1 + gamma)), Q(2 * (1 + gamma) * Q(999999, 1000000)), Q(2 * (1 + gamma) * Q(1000001, 1000000))})
+      if (exact::solve(exact::square(), b, gamma).mu != cf::mu_square_jumping(b, gamma)) return false;
+    return true;
+  });
   return c.finish_exact();
 }
 
