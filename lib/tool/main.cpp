@@ -753,7 +753,7 @@ int run_sweep(const Flags& f) {
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   if (certifier)
-    for (const auto& field : certificate_fields(Certificate{}, wave.kind == WaveKind::sine)) names.push_back(field.first);
+    for (const auto& field : certificate_fields(Certificate{}, certifier->encloses())) names.push_back(field.first);
   // Rows in their deterministic order as they complete; memory bounded whatever the count. The
   // domain (β ≥ 0 and representable, contact at the smallest γ, a profile's extent at the largest)
   // is monotone in β and γ, so the four corners decide it before any row is written.

@@ -2055,6 +2055,14 @@ def certify_tests():
         out = json.loads(lines)
         if F(out["lower"]) != 1 or F(out["upper"]) != 1 or out["correctly_rounded"] != "proven":
             raise Fail("sine at beta 6.3 > 2 pi: %r" % out)
+        # sweep: the header names the enclosure's fields, row by row.
+        rows = ok_run(["sweep", "--wave", "power:3", "--beta", "0.5:13:3", "--gamma", "0.2", "--certify", "--type", "double"]).splitlines()
+        if rows[0] != "wave,beta,gamma,mu_over_mu0,lower,upper,correctly_rounded" or len(rows) != 4:
+            raise Fail("sweep --wave power:3 --certify: %r" % rows)
+        for row in rows[1:]:
+            f = row.split(",")
+            if not F(f[4]) <= F(f[5]) or float(f[4]) != float(f[3]) or f[6] != "proven":
+                raise Fail("sweep --wave power:3 --certify: row %r" % row)
         # power:2 at gamma = -3/4: beta_c = 8 (1/4)^(1/2) = 4 exactly; beta = 4 gives 1 exactly (Eq. 6).
         out = json.loads(ok_run(["mu", "--wave", "power:2", "--beta", "4", "--gamma", "-0.75", "--certify", "--format", "json"]))
         if F(out["lower"]) != 1 or F(out["upper"]) != 1:
