@@ -148,18 +148,14 @@ TEST(Interval, TranscendentalFunctionsEncloseMpfrsDirectedRoundings) {
     const Interval j = Interval::exact(mpfr(y), kBits);
     expect_encloses_mpfr(log(j), mpfr_log, y, "log");
     expect_encloses_mpfr(sqrt(j), mpfr_sqrt, y, "sqrt");
+    const double z = x / 30;  // in (−1, 1)
+    const Interval w = Interval::exact(mpfr(z), kBits);
+    expect_encloses_mpfr(asin(w), mpfr_asin, z, "asin");
+    expect_encloses_mpfr(acos(w), mpfr_acos, z, "acos");
   }
 }
 
-TEST(Interval, InverseTrigonometryAndRationals) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (int k = 0; k < 1000; ++k) {
-    const double x = u(rng);
-    const Interval i = Interval::exact(mpfr(x), kBits);
-    expect_encloses_mpfr(asin(i), mpfr_asin, x, "asin");
-    expect_encloses_mpfr(acos(i), mpfr_acos, x, "acos");
-  }
+TEST(Interval, InverseTrigonometryDomainsAndRationals) {
   EXPECT_THROW(acos(Interval::hull(mpfr(0), mpfr(1.5), kBits)), vibrofric::SolverError);
   EXPECT_THROW(asin(Interval::integer(-2, kBits)), vibrofric::SolverError);
   // 1/3 enclosed by two neighbouring kBits numbers; 3/8 exactly.
