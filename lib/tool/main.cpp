@@ -298,8 +298,8 @@ void profile_named(Flags& f, const std::string& t) {
 }
 void format_of_point(Flags& f, const std::string& t) { f.format = format_named(t); }
 const FlagSpec kCertifyFlag{
-    "certify", "", "flat punch, every wave but Fourier series: print the exact value (piecewise-linear waves) or "
-                   "an enclosure (sine, power:P) and prove that the printed value is its correct rounding "
+    "certify", "", "flat punch: print the exact value (piecewise-linear waves) or an enclosure (sine, "
+                   "power:P, Fourier series) and prove that the printed value is its correct rounding "
                    "(=true/false/yes/no/1/0)", "",
     [](Flags& f, const std::string& t) { f.certify = switch_value(t, "certify"); }};
 // A sweep writes rows: csv (its default) or json.

@@ -173,7 +173,7 @@ def test_certify_gives_the_closed_forms_exactly():
     assert float(vibrofric.mu("triangle", 0.1, 0.3, certify=True)[0]) == vibrofric.mu("triangle", 0.1, 0.3)
 
 
-def test_certify_sine_encloses_the_40_digit_value():
+def test_certify_enclosures_hold_the_40_digit_value():
     for beta, gamma in ((1.0, 0.2), (0.37, -0.9), (5.5, 2.0), (7.0, 0.5)):
         lo, hi = vibrofric.mu("sine", beta, gamma, certify=True)
         assert isinstance(lo, Fraction) and lo <= hi
@@ -182,10 +182,17 @@ def test_certify_sine_encloses_the_40_digit_value():
         assert float(lo) == float(hi) == vibrofric.mu("sine", beta, gamma)
     lo, hi = vibrofric.psi("sine", [0.5, 7.0], certify=True)
     assert hi[1] == lo[1] == 0 and lo[0] < hi[0] and float(hi[0]) == vibrofric.psi("sine", 0.5)
+    # A Fourier series of three harmonics, jumping and not.
+    three = vibrofric.fourier([0, 0.1, 0], [1, -0.05, 0.333])
+    for beta, gamma in ((1.5, 0.3), (0.01, -0.2), (4.0, 1.5)):
+        lo, hi = vibrofric.mu(three, beta, gamma, certify=True)
+        want = Fraction(vibrofric.mu(three, beta, gamma, digits=40, strings=True))
+        assert lo - Fraction(1, 10**39) <= want <= hi + Fraction(1, 10**39), (beta, gamma, lo, hi, want)
+        assert float(lo) == float(hi) == vibrofric.mu(three, beta, gamma)
 
 
 @pytest.mark.parametrize("call, words", [
-    (lambda: vibrofric.mu(vibrofric.fourier([0.0], [1.0]), 1, 0, certify=True), ["no certified values", "triangle"]),
+    (lambda: vibrofric.mu("sine", 1, 0, certify=True, nan_on_error=True), ["nan_on_error=True"]),
     (lambda: vibrofric.mu("triangle", 1, 0, profile="sphere", certify=True), ["'sphere'", "flat punch"]),
     (lambda: vibrofric.mu("triangle", 1, 0, escalate=False, certify=True), ["escalate=False"]),
     (lambda: vibrofric.mu("triangle", [1, 2], [0, -3], certify=True), ["at index (1,)", "-3"]),

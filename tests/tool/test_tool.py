@@ -2033,9 +2033,14 @@ def certify_tests():
 
     def sine_enclosures():
         # The enclosure holds the 60-digit value, is narrow, and its ends round to the printed value.
+        # Fourier series: three harmonics (up to six stick phases on random series in test_enclosure),
+        # and an odd one at gamma = 1, where n touches zero at its minimum (no bits decide a dip).
+        three = "fourier:" + write("certify.three", "1 0 1\n2 0.1 -0.05\n3 0 0.333\n")
+        odd = "fourier:" + write("certify.odd", "1 0 1\n3 0 0.5\n")
         for wave, b, g in (("sine", "1", "0.2"), ("sine", "0.37", "-0.9"), ("sine", "5.5", "2"), ("sine", "1e-6", "0.5"),
                            ("sine", "6.2", "0"), ("power:2", "3", "0.3"), ("power:3.5", "0.2", "-0.6"),
-                           ("power:1.25", "4.9", "1.5")):
+                           ("power:1.25", "4.9", "1.5"), (three, "1.5", "0.3"), (three, "0.01", "-0.2"), (odd, "1", "1"),
+                           (odd, "4", "-0.5")):
             want = F(ok_run(["mu", "--wave", wave, "--beta", b, "--gamma", g, "--digits", "60"]).strip())
             for extra, digits in ((["--type", "double"], None), (["--digits", "25"], 25)):
                 args = ["mu", "--wave", wave, "--beta", b, "--gamma", g, "--certify"] + extra
@@ -2050,6 +2055,13 @@ def certify_tests():
                     raise Fail("%s: the ends do not round to the printed double %s" % (cmd(args), lines[0]))
                 if digits is not None:
                     expect_digits(lines[0], want, digits, cmd(args))
+        # Psi of a Fourier series (at a gamma without jumping), to 30 digits.
+        want = F(ok_run(["psi", "--wave", three, "--beta", "2", "--digits", "60"]).strip())
+        lines = ok_run(["psi", "--wave", three, "--beta", "2", "--digits", "30", "--certify"]).splitlines()
+        m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 3 else None
+        if not m or not F(m.group(1)) <= want <= F(m.group(2)) or not lines[2].startswith("proven: "):
+            raise Fail("psi --wave %s --certify: %r against %s" % (three, lines, dec(want, 40)))
+        expect_digits(lines[0], want, 30, "psi --wave %s --digits 30 --certify" % three)
         # beta >= beta_c = 2 pi: exactly 1 (Eq. 6), an enclosure of zero width.
         lines = ok_run(["mu", "--wave", "sine", "--beta", "6.3", "--gamma", "0.5", "--certify", "--format", "json"])
         out = json.loads(lines)
@@ -2067,11 +2079,8 @@ def certify_tests():
         out = json.loads(ok_run(["mu", "--wave", "power:2", "--beta", "4", "--gamma", "-0.75", "--certify", "--format", "json"]))
         if F(out["lower"]) != 1 or F(out["upper"]) != 1:
             raise Fail("power:2 at beta = beta_c = 4: %r" % out)
-    case("certify: enclosures (sine, power:P) hold the 60-digit value and decide the rounding", sine_enclosures)
+    case("certify: enclosures (sine, power:P, Fourier) hold the 60-digit value and decide the rounding", sine_enclosures)
 
-    bad("certify: a Fourier series has no certified values",
-        ["mu", "--wave", "fourier:" + write("certify.fourier", "1 0 1\n"), "--beta", "1", "--gamma", "0", "--certify"],
-        ["fourier"], ["certif", "triangle"])
     bad("certify: a curved profile", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--profile", "sphere", "--certify"],
         ["sphere"], ["flat punch"])
     bad("certify: with --no-escalate", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--type", "double",

@@ -1,16 +1,18 @@
 // Certified values (api/certify.hpp) against the guaranteed path (README, "Precision"): on random
-// points of every piecewise-linear wave, of the sine and of power:P, the double and long double that
+// points of every piecewise-linear wave, of the sine, of power:P and of Fourier series (fewer
+// points), the double and long double that
 // evaluate() prints are the exact value (core/exact.hpp) or both ends of its enclosure
 // (core/enclosure.hpp) correctly rounded, as the certificate says and as MPFR's own correctly
 // rounded conversion says (an independent decision); and the solver's first-order rounding bound
 // in raw double and long double is a true bound of the actual error, measured against the exact
-// value (the sine, power:P: against the farther end of a 256-bit enclosure). Its ratio to the actual
+// value (the enclosed waves: against the farther end of a 256-bit enclosure). Its ratio to the actual
 // error is printed.
 // 400 points per wave here; VIBROFRIC_STRESS=full: 100,000 (issue 28's count).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -81,6 +83,27 @@ struct Ratios {
   }
 };
 
+// μ̄ or Ψ enclosed at 256 bits (Ψ at a γ without jumping: 1 for the sine and power:P, 2 for a
+// series); a series' shape built once.
+Interval enclosure_at_256_bits(const WaveSpec& spec, Quantity q, const Rational& beta, const Rational& gamma) {
+  if (spec.kind == WaveKind::fourier) {
+    static std::map<std::string, certified::FourierShape> shapes;
+    auto it = shapes.find(spec.name);
+    if (it == shapes.end()) {
+      std::vector<certified::RationalHarmonic> series;
+      for (const auto& h : spec.harmonics) series.push_back({h.k, exact::decimal(h.a, "a"), exact::decimal(h.b, "b")});
+      it = shapes.emplace(spec.name, certified::FourierShape(series, 256)).first;
+    }
+    const certified::FourierEnclosure e = certified::enclose_fourier(it->second, beta, q == Quantity::psi ? Rational(2) : gamma);
+    return q == Quantity::psi ? e.lost_area : e.mu;
+  }
+  const Rational g = q == Quantity::psi ? Rational(1) : gamma;
+  const certified::SineEnclosure e = spec.kind == WaveKind::sine
+                                         ? certified::enclose_sine(beta, g, 256)
+                                         : certified::enclose_power(exact::decimal(spec.exponent, "p"), beta, g, 256);
+  return q == Quantity::psi ? e.lost_area : e.mu;
+}
+
 // The raw solve in T: its bound must hold against the exact value.
 template <class T>
 void check_bound(const WaveSpec& spec, const Waveform<T>& w, Quantity q, const Point& p, Ratios& ratios) {
@@ -101,11 +124,7 @@ void check_bound(const WaveSpec& spec, const Waveform<T>& w, Quantity q, const P
   Rational at_rounded, actual;
   if (Certifier(spec, ProfileSpec{}).encloses()) {
     // The enclosure at 256 bits; the actual error is at most the distance to its farther end.
-    const Rational g = q == Quantity::psi ? Rational(1) : gamma_t;
-    const certified::SineEnclosure e = spec.kind == WaveKind::sine
-                                           ? certified::enclose_sine(beta_t, g, 256)
-                                           : certified::enclose_power(exact::decimal(spec.exponent, "p"), beta_t, g, 256);
-    const Interval& v = q == Quantity::psi ? e.lost_area : e.mu;
+    const Interval v = enclosure_at_256_bits(spec, q, beta_t, gamma_t);
     Rational lo, hi;
     mpfr_get_q(lo.backend().data(), v.lower().backend().data());
     mpfr_get_q(hi.backend().data(), v.upper().backend().data());
@@ -147,13 +166,26 @@ std::vector<WaveSpec> certified_waves_to_test(std::mt19937& rng) {
     time += std::uniform_real_distribution<double>(0.5, 1.5)(rng);
   }
   waves.push_back(t);
+  // Fourier series: three harmonics as a user writes them, and six random ones.
+  WaveSpec f;
+  f.kind = WaveKind::fourier;
+  f.name = "fourier:three";
+  f.harmonics = {{1, "0", "1"}, {2, "0.1", "-0.05"}, {3, "0", "0.333"}};
+  waves.push_back(f);
+  f.name = "fourier:random";
+  f.harmonics.clear();
+  for (unsigned k = 1; k <= 6; ++k)
+    f.harmonics.push_back({k, uniform(rng, -1, 1, 3), uniform(rng, -1, 1, 3)});
+  waves.push_back(f);
   return waves;
 }
 
 TEST(Certify, GuaranteedValuesAreTheCertifiedRoundings) {
   std::mt19937 rng(20261127);
-  const int n = points_per_wave();
   for (const WaveSpec& spec : certified_waves_to_test(rng)) {
+    // A series' enclosure costs milliseconds a point (its events isolated one by one, 20 ms for
+    // six harmonics): a tenth of the points, a twentieth for the random one.
+    const int n = points_per_wave() / (spec.kind != WaveKind::fourier ? 1 : spec.name == "fourier:three" ? 10 : 20);
     const Certifier certifier(spec, ProfileSpec{});
     const auto wd = make_waveform<double>(spec);
     const auto wl = make_waveform<long double>(spec);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "vibrofric/core/interval.hpp"
@@ -143,6 +144,8 @@ TEST(Interval, TranscendentalFunctionsEncloseMpfrsDirectedRoundings) {
     const Interval i = Interval::exact(mpfr(x), kBits);
     expect_encloses_mpfr(sin(i), mpfr_sin, x, "sin");
     expect_encloses_mpfr(cos(i), mpfr_cos, x, "cos");
+    expect_encloses_mpfr(sin_cos(i).first, mpfr_sin, x, "sin of sin_cos");
+    expect_encloses_mpfr(sin_cos(i).second, mpfr_cos, x, "cos of sin_cos");
     expect_encloses_mpfr(exp(i), mpfr_exp, x, "exp");
     const double y = std::fabs(x) + 1e-3;
     const Interval j = Interval::exact(mpfr(y), kBits);
@@ -184,6 +187,27 @@ TEST(Interval, WideArgumentsHoldEveryPointsValue) {
     mpfr_sin(down, v, MPFR_RNDD);
     mpfr_sin(up, v, MPFR_RNDU);
     EXPECT_TRUE(mpfi_is_inside_fr(down, s.data()) > 0 && mpfi_is_inside_fr(up, s.data()) > 0) << x;
+  }
+  // sin_cos over a narrow interval (its midpoint and radius) and a wide one (mpfi) alike.
+  for (const double width : {0.0, 1e-30, 1e-7, 0.5}) {
+    const Interval arc = Interval::hull(mpfr(1), mpfr(1) + mpfr(width), kBits);
+    const auto [sn, cs] = sin_cos(arc);
+    for (double t = 0; t <= 1; t += 1.0 / 16) {
+      mpfr_set_d(v, 1, MPFR_RNDN);
+      mpfr_set_prec(down, 4 * kBits);
+      mpfr_set_d(down, width * t, MPFR_RNDN);
+      mpfr_add(v, v, down, MPFR_RNDN);  // exact: 1 + a double within 4 × kBits
+      using F = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
+      for (const auto& [f, out, name] : {std::tuple<F, const Interval*, const char*>{mpfr_sin, &sn, "sin"},
+                                          std::tuple<F, const Interval*, const char*>{mpfr_cos, &cs, "cos"}}) {
+        f(down, v, MPFR_RNDD);
+        f(up, v, MPFR_RNDU);
+        EXPECT_TRUE(mpfi_is_inside_fr(down, out->data()) > 0 && mpfi_is_inside_fr(up, out->data()) > 0) << name << " " << width;
+      }
+    }
+    if (width < 1e-6) {
+      EXPECT_LT(width_in_ulps(sn) + width_in_ulps(cs), 8 + 2 * width * std::pow(2.0, static_cast<double>(sn.precision()))) << width;
+    }
   }
   mpfr_clears(v, down, up, static_cast<mpfr_ptr>(nullptr));
   // cos over a whole period is [−1, 1].

@@ -9,7 +9,7 @@
 
 namespace vibrofric {
 
-const char* const certified_waves = "sine, power:P, triangle, sawtooth-right, sawtooth-left, square and samples:FILE";
+const char* const certified_waves = "sine, power:P, fourier:FILE, triangle, sawtooth-right, sawtooth-left, square and samples:FILE";
 
 using exact::Rational;
 using Integer = boost::multiprecision::mpz_int;
@@ -151,22 +151,37 @@ mpfr_prec_t first_bits(const Precision& p) {
 }  // namespace
 
 Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
-  // The sine and power:P (P ≠ 1) are enclosed per point (core/enclosure.hpp); the others exactly.
+  // The sine, power:P (P ≠ 1) and Fourier series are enclosed per point (core/enclosure.hpp);
+  // the others exactly.
   if (wave.kind == WaveKind::power) {
     const Rational p = exact::decimal(wave.exponent, "power exponent p");
     if (p != 1) power_ = p;
   }
-  if (wave.kind != WaveKind::sine && !power_) {
+  if (wave.kind == WaveKind::fourier) {
+    fourier_.emplace();
+    for (const WaveSpec::Harmonic& h : wave.harmonics)
+      fourier_->push_back({h.k, exact::decimal(h.a, wave.name + " coefficient a_" + std::to_string(h.k)),
+                           exact::decimal(h.b, wave.name + " coefficient b_" + std::to_string(h.k))});
+  }
+  name_ = detail::visible(wave.name);
+  if (wave.kind != WaveKind::sine && !power_ && !fourier_) {
     try {
       wave_ = exact_wave(wave);
     } catch (const InputError&) {
       throw InputError("wave '" + detail::visible(wave.name) + "' has no certified values: they exist for " + certified_waves +
-                       " (piecewise linear: exact rationals; the sine and power:P: enclosures)");
+                       " (piecewise linear: exact rationals; the others: enclosures)");
     }
   }
   if (profile.kind != ProfileKind::flat)
     throw InputError("profile " + detail::visible(profile.name) +
                      " has no certified values: they exist for the flat punch (a curved contact integrates over springs)");
+}
+
+std::shared_ptr<const certified::FourierShape> Certifier::shape(mpfr_prec_t bits) const {
+  const std::lock_guard<std::mutex> lock(shapes_->mutex);
+  auto& s = shapes_->at[bits];
+  if (!s) s = std::make_shared<const certified::FourierShape>(*fourier_, bits);
+  return s;
 }
 
 Certificate Certifier::operator()(Quantity q, const Point& point, const Precision& precision, const std::string& printed) const {
@@ -181,19 +196,28 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     c.exact = text_of(c.lower);
     c.nearest = rounded_texts(c.lower, precision);
   } else {
-    // Ψ at γ = −min w = 1 (Eq. 12). Double the bits until both ends of the
+    // Ψ at a γ without jumping (Eq. 12): 1 = −min w for the sine and power:P, 2 > −min w for any
+    // normalised series (max w − min w = 2, max w > 0). Double the bits until both ends of the
     // enclosure round alike (no tie: the value is transcendental unless it is exactly 1 or 0).
+    const Rational at_gamma = q == Quantity::psi ? Rational(fourier_ ? 2 : 1) : gamma;
     for (mpfr_prec_t bits = first_bits(precision);; bits *= 2) {
       if (bits > max_certify_bits)
-        throw SolverError(std::string(power_ ? "power:" + power_->str() : "sine") + ", beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
+        throw SolverError(name_ + ", beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
                           ": the enclosure does not decide the rounding at " + std::to_string(max_certify_bits) + " bits");
-      std::optional<certified::SineEnclosure> e;
+      std::optional<Interval> value;
       try {
-        e.emplace(power_ ? certified::enclose_power(*power_, beta, gamma, bits) : certified::enclose_sine(beta, gamma, bits));
+        if (fourier_) {
+          const certified::FourierEnclosure e = certified::enclose_fourier(*shape(bits), beta, at_gamma);
+          value = q == Quantity::psi ? e.lost_area : e.mu;
+        } else {
+          const certified::SineEnclosure e =
+              power_ ? certified::enclose_power(*power_, beta, at_gamma, bits) : certified::enclose_sine(beta, at_gamma, bits);
+          value = q == Quantity::psi ? e.lost_area : e.mu;
+        }
       } catch (const certified::Undecided&) {
         continue;
       }
-      const Interval& v = q == Quantity::psi ? e->lost_area : e->mu;
+      const Interval& v = *value;
       const Rational lo = rational_of(v.lower()), hi = rational_of(v.upper());
       std::vector<std::string> at_lo = rounded_texts(lo, precision), at_hi = rounded_texts(hi, precision);
       if (at_lo.size() != 1 || at_lo != at_hi) continue;

@@ -1,7 +1,10 @@
 // Certified enclosures for the harmonic wave (enclosure.hpp).
 #include "vibrofric/core/enclosure.hpp"
 
+#include <algorithm>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace vibrofric::certified {
 
@@ -10,7 +13,7 @@ namespace {
 Interval of(const exact::Rational& x, mpfr_prec_t bits) { return Interval::rational(x.backend().data(), bits); }
 
 // The certain sign of x, or Undecided naming the comparison.
-Sign decide(const Interval& x, const char* what) {
+Sign decide(const Interval& x, const std::string& what) {
   const Sign s = x.sign();
   if (s == Sign::undecided) throw Undecided(std::string("undecided at this precision: ") + what);
   return s;
@@ -28,6 +31,52 @@ mpfr midpoint(const mpfr& lo, const mpfr& hi, mpfr_prec_t bits) {
 
 // A thin interval at the point x.
 Interval point(const mpfr& x, mpfr_prec_t bits) { return Interval::exact(x, bits); }
+
+// Interval Newton on X, where f' excludes 0: X ∩ (m − f(m)/f'(X)) while it halves.
+template <class F, class DF>
+Interval newton(Interval X, F f, DF df, mpfr_prec_t bits, const std::string& what) {
+  for (int k = 0; k < 200; ++k) {
+    const Interval m = point(X.midpoint(), bits);
+    const Interval N = m - f(m) / df(X);
+    std::optional<Interval> next = intersection(X, N);
+    if (!next) throw SolverError(what + ": interval Newton lost the root (a bug)");
+    const bool shrank = next->width() < X.width() / 2;
+    X = *next;
+    if (!shrank) break;
+  }
+  return X;
+}
+
+// The root of F between the thin points lo < hi, where F is certainly positive at lo and negative
+// at hi (else SolverError: no sign change, or Undecided: a sign this precision leaves open):
+// bisection until F' < 0 certainly on the bracket and interval Newton contracts there, so the
+// root exists and is unique for every value of the parameters F encloses.
+template <class F, class DF>
+Interval bracketed_root(F f, DF df, mpfr lo, mpfr hi, mpfr_prec_t bits, const std::string& what) {
+  if (decide(f(point(lo, bits)), what + ": the sign at its bracket's start") != Sign::positive ||
+      decide(f(point(hi, bits)), what + ": the sign at its bracket's end") != Sign::negative)
+    throw SolverError(what + " has no sign change in its bracket");
+  for (int k = 0;; ++k) {
+    if (k > static_cast<int>(bits) + 64) throw Undecided(what + ": its bracket does not separate from a turning point");
+    if (df(Interval::hull(lo, hi, bits)).sign() == Sign::negative) {
+      // Newton contracts once f' is bounded away from 0 on the bracket (near a turning point at
+      // its end, f' < 0 can be certain and still as small as the rounding): else bisect on.
+      Interval X = newton(Interval::hull(lo, hi, bits), f, df, bits, what);
+      if (X.width() * 4 < hi - lo) return X;
+    }
+    // The midpoint, or beside it where the root sits on it (a dyadic root of a symmetric wave).
+    mpfr mid = midpoint(lo, hi, bits);
+    Sign at = f(point(mid, bits)).sign();
+    for (int side = -1; side <= 1 && at != Sign::positive && at != Sign::negative; side += 2) {
+      mid = midpoint(mid, side < 0 ? lo : hi, bits);
+      at = f(point(mid, bits)).sign();
+    }
+    if (decide(f(point(mid, bits)), what + ": the sign inside its bracket") == Sign::positive)
+      lo = mid;
+    else
+      hi = mid;
+  }
+}
 
 // The rising flank r(t), t ∈ [−1/4, 1/4], of a wave with the sine's symmetries (enclosure.hpp).
 // Arguments are intervals inside [−1/4, 1/4]; an interval may straddle 0.
@@ -211,31 +260,7 @@ SineEnclosure enclose(const Flank& flank, const char* name, const exact::Rationa
   const Interval right = e.jumping ? half - *contact : one - top;
   auto F = [&](const Interval& x) { return G + wave.w(x) - level - B * (x - phi1); };
   auto dF = [&](const Interval& x) { return wave.dw(x) - B; };
-  mpfr lo = top.upper(), hi = right.lower();
-  if (decide(F(point(lo, bits)), "n above the ramp after the onset") != Sign::positive ||
-      decide(F(point(hi, bits)), "n below the ramp at the bracket's end") != Sign::negative)
-    throw SolverError(where + ": the stick end has no sign change in its bracket");
-  // Bisection until F' < 0 certainly on the bracket (at `top` it is 0), then interval Newton.
-  for (int k = 0;; ++k) {
-    if (k > static_cast<int>(bits) + 64)
-      throw Undecided(where + ": the stick end's bracket does not separate from n's turning point");
-    if (dF(Interval::hull(lo, hi, bits)).sign() == Sign::negative) break;
-    const mpfr mid = midpoint(lo, hi, bits);
-    if (decide(F(point(mid, bits)), "n against the ramp inside the stick end's bracket") == Sign::positive)
-      lo = mid;
-    else
-      hi = mid;
-  }
-  Interval X = Interval::hull(lo, hi, bits);
-  for (int k = 0; k < 200; ++k) {
-    const Interval m = point(X.midpoint(), bits);
-    const Interval N = m - F(m) / dF(X);
-    std::optional<Interval> next = intersection(X, N);
-    if (!next) throw SolverError(where + ": interval Newton lost the stick end (a bug)");
-    const bool shrank = next->width() < X.width() / 2;
-    X = *next;
-    if (!shrank) break;
-  }
+  const Interval X = bracketed_root(F, dF, top.upper(), right.lower(), bits, where + ": the stick end");
   e.onset = phi1;
   e.end = X;
   e.level = level;
@@ -258,6 +283,377 @@ SineEnclosure enclose_power(const exact::Rational& p, const exact::Rational& bet
                             mpfr_prec_t bits) {
   if (!(p > 1)) throw InputError("power:p with p = " + p.str() + ": expected p > 1 for an enclosure (power:1 is exact)");
   return enclose(PowerFlank(of(p, bits), bits), "power", beta, gamma, power_slope_sign, p);
+}
+
+namespace {
+
+// u(φ) = Σ a_k cos 2πkφ + b_k sin 2πkφ with its derivatives and antiderivative, enclosed.
+class Series {
+ public:
+  Series(const std::vector<RationalHarmonic>& harmonics, mpfr_prec_t bits) : bits_(bits) {
+    std::map<unsigned, std::pair<exact::Rational, exact::Rational>> sum;
+    for (const RationalHarmonic& h : harmonics)
+      if (h.k != 0) sum[h.k].first += h.a, sum[h.k].second += h.b;
+    two_pi_ = Interval::pi(bits) * 2;
+    for (const auto& [k, ab] : sum)
+      if (ab.first != 0 || ab.second != 0) {
+        terms_.push_back({k, two_pi_ * static_cast<long>(k), of(ab.first, bits), of(ab.second, bits)});
+        max_k_ = std::max(max_k_, k);
+      }
+    if (terms_.empty()) throw InputError("a Fourier series without a harmonic k >= 1 has zero amplitude");
+    for (int o = 0; o <= 4; ++o) bounds_.push_back(bound(o));
+  }
+  // u^(order), order 0 to 3, and −1 (the antiderivative with zero mean: periodic). On a narrow x,
+  // cos and sin of 2πkx by the angle-addition recurrence from one sin_cos; on a wide one, each
+  // directly (the recurrence would compound the widths).
+  Interval operator()(const Interval& x, int order) const {
+    Interval out(bits_);
+    const bool narrow = x.width() < mpfr(1e-9);
+    std::optional<Interval> c1, s1, c, s;
+    unsigned at = 0, anchor = 1;
+    if (narrow) {
+      auto [sn, cs] = sin_cos(two_pi_ * x);
+      s1 = sn, c1 = cs, s = sn, c = cs, at = 1;
+    }
+    for (const Term& t : terms_) {
+      if (narrow && t.k >= anchor + 16) {  // re-anchored every 16 harmonics: the widths grow
+        auto [sn, cs] = sin_cos(t.omega * x);   // by up to √2 a step
+        s = std::move(sn), c = std::move(cs), at = anchor = t.k;
+      } else if (narrow) {
+        for (; at < t.k; ++at) {
+          Interval next = *c * *c1 - *s * *s1;
+          s = *s * *c1 + *c * *s1;
+          c = std::move(next);
+        }
+      } else {
+        auto [sn, cs] = sin_cos(t.omega * x);
+        s = std::move(sn), c = std::move(cs);
+      }
+      switch (order) {
+        case -1: out += (t.a * *s - t.b * *c) / t.omega; break;
+        case 0: out += t.a * *c + t.b * *s; break;
+        case 1: out += t.omega * (t.b * *c - t.a * *s); break;
+        case 2: out -= sqr(t.omega) * (t.a * *c + t.b * *s); break;
+        default: out += sqr(t.omega) * t.omega * (t.a * *s - t.b * *c); break;
+      }
+    }
+    return out;
+  }
+  // u^(order) over x by its centred form: the value at the midpoint and r·max|u^(order+1)|, r the
+  // radius (a narrow x: as above). Cheaper than the wide form's 2K interval sines, and as tight
+  // on the brackets of one root.
+  Interval centred(const Interval& x, int order) const {
+    if (x.width() < mpfr(1e-9)) return (*this)(x, order);
+    const mpfr mid = x.midpoint();
+    mpfr r;
+    mpfr_set_prec(r.backend().data(), 64);
+    mpfr_sub(r.backend().data(), x.upper().backend().data(), mid.backend().data(), MPFR_RNDU);
+    mpfr radius_low;
+    mpfr_set_prec(radius_low.backend().data(), 64);
+    mpfr_sub(radius_low.backend().data(), mid.backend().data(), x.lower().backend().data(), MPFR_RNDU);
+    mpfr_max(r.backend().data(), r.backend().data(), radius_low.backend().data(), MPFR_RNDU);
+    const Interval spread = Interval::hull(mpfr(-r), r, bits_) * bounds_.at(static_cast<std::size_t>(order + 1));
+    return (*this)(Interval::exact(mid, bits_), order) + spread;
+  }
+  unsigned max_k() const { return max_k_; }
+
+ private:
+  struct Term {
+    unsigned k;
+    Interval omega, a, b;  // ω = 2πk
+  };
+  Interval two_pi_{2};
+  // max |u^(order)| ≤ Σ ω^order (|a| + |b|), enclosed (its upper end is the bound).
+  Interval bound(int order) const {
+    Interval out(bits_);
+    for (const Term& t : terms_) {
+      Interval power = Interval::integer(1, bits_);
+      for (int o = 0; o < order; ++o) power *= t.omega;
+      out += power * (abs(t.a) + abs(t.b));
+    }
+    return Interval::hull(mpfr(0), out.upper(), bits_);
+  }
+  std::vector<Term> terms_;
+  std::vector<Interval> bounds_;  // bound(0) … bound(4)
+  unsigned max_k_ = 0;
+  mpfr_prec_t bits_;
+};
+
+struct Root {
+  Interval x;
+  Sign slope;  // of the function at the root
+};
+
+// Every root of f on [from, from + 1], each enclosed with a certain sign change at thin ends and
+// f' excluding 0 on its enclosure (one simple root), in increasing order: bisection of `cells`
+// cells, a cell dropped where f excludes 0 or is monotone without a sign change. A root that does
+// not separate from another (or from a cell's end) before the cells are 2^−bits/2 wide is Undecided.
+template <class F, class DF>
+std::vector<Root> isolate(F f, DF df, const mpfr& from, int cells, mpfr_prec_t bits, const std::string& what) {
+  auto at = [&](long j) {  // from + j/cells, exactly (cells a power of two)
+    mpfr x;
+    mpfr_set_prec(x.backend().data(), bits + 64);
+    mpfr_set_si(x.backend().data(), j, MPFR_RNDN);
+    mpfr_div_si(x.backend().data(), x.backend().data(), cells, MPFR_RNDN);
+    mpfr_add(x.backend().data(), x.backend().data(), from.backend().data(), MPFR_RNDN);
+    return x;
+  };
+  mpfr narrowest;
+  mpfr_set_prec(narrowest.backend().data(), 64);
+  mpfr_set_ui_2exp(narrowest.backend().data(), 1, -static_cast<long>(bits / 2), MPFR_RNDN);
+  std::vector<std::pair<mpfr, mpfr>> stack;
+  for (long j = cells; j > 0; --j) stack.emplace_back(at(j - 1), at(j));
+  std::vector<Root> roots;
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    const Interval X = Interval::hull(a, b, bits);
+    const Sign value = f(X).sign();
+    if (value == Sign::positive || value == Sign::negative) continue;
+    const Sign slope = df(X).sign();
+    if (slope == Sign::positive || slope == Sign::negative) {
+      const Sign fa = f(point(a, bits)).sign(), fb = f(point(b, bits)).sign();
+      const bool certain = (fa == Sign::positive || fa == Sign::negative) && (fb == Sign::positive || fb == Sign::negative);
+      if (certain && fa == fb) continue;
+      if (certain) {  // one root: kept once Newton contracts (else f' is near 0 on X: bisect on)
+        Interval root = newton(X, f, df, bits, what);
+        if (root.width() * 4 < X.width()) {
+          roots.push_back({std::move(root), slope});
+          continue;
+        }
+      }
+    }
+    if (X.width() < narrowest)
+      throw Undecided("undecided at this precision: " + what + " near phase " + a.str(12) +
+                      " does not separate from another (a double root?)");
+    const mpfr mid = midpoint(a, b, bits);
+    stack.emplace_back(mid, b);
+    stack.emplace_back(a, mid);
+  }
+  return roots;
+}
+
+// An event of h = n − βφ on the circle (enclosure.hpp): a contact boundary or a turning point.
+struct Event {
+  enum Kind { up, down, turn } kind;
+  Interval x;  // in [cut, cut + 1)
+  Interval h;  // h(x); n = 0 at a contact boundary
+};
+
+// The root of f on the monotone arc (lo, hi) of f, rising or falling (bracketed_root).
+template <class F, class DF>
+Interval arc_root(F f, DF df, bool rising, const mpfr& lo, const mpfr& hi, mpfr_prec_t bits, const std::string& what) {
+  if (!rising) return bracketed_root(f, df, lo, hi, bits, what);
+  return bracketed_root([&](const Interval& x) { return -f(x); }, [&](const Interval& x) { return -df(x); }, lo, hi, bits, what);
+}
+
+}  // namespace
+
+// The circle is cut at a phase no event of a rational series sits on (1/π as a double), and
+// split into cells of a fraction of the shortest harmonic's period.
+struct FourierShape::Data {
+  Data(const std::vector<RationalHarmonic>& harmonics, mpfr_prec_t b) : u(harmonics, b), cut(0.31830988618379067), bits(b) {}
+  Series u;
+  mpfr cut;
+  mpfr_prec_t bits;
+  std::vector<Root> extrema, bends;      // roots of u' and of u'' (the extrema of u')
+  std::vector<Interval> values, slopes;  // u at the extrema, u' at the bends
+};
+
+FourierShape::FourierShape(const std::vector<RationalHarmonic>& harmonics, mpfr_prec_t bits) {
+  auto d = std::make_shared<Data>(harmonics, bits);
+  int cells = 8;
+  while (cells < 8 * static_cast<int>(d->u.max_k())) cells *= 2;
+  const Series& u = d->u;
+  auto order = [&](int o) { return [&u, o](const Interval& x) { return u(x, o); }; };
+  d->extrema = isolate(order(1), order(2), d->cut, cells, bits, "an extremum of the series");
+  d->bends = isolate(order(2), order(3), d->cut, cells, bits, "an extremum of the series' slope");
+  if (d->extrema.size() < 2 || d->bends.size() < 2) throw SolverError("fourier: fewer than two extrema enclosed (a bug)");
+  for (const Root& r : d->extrema) d->values.push_back(u(r.x, 0));
+  for (const Root& r : d->bends) d->slopes.push_back(u(r.x, 1));
+  data_ = std::move(d);
+}
+
+mpfr_prec_t FourierShape::bits() const { return data_->bits; }
+
+FourierEnclosure enclose_fourier(const std::vector<RationalHarmonic>& harmonics, const exact::Rational& beta,
+                                 const exact::Rational& gamma, mpfr_prec_t bits) {
+  return enclose_fourier(FourierShape(harmonics, bits), beta, gamma);
+}
+
+FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rational& beta, const exact::Rational& gamma) {
+  const std::string where = "fourier, beta = " + beta.str() + ", gamma = " + gamma.str();
+  if (!(beta > 0)) throw InputError("beta = " + beta.str() + ": expected a number > 0");
+  const FourierShape::Data& d = *shape.data_;
+  const Series& u = d.u;
+  const mpfr& cut = d.cut;
+  const mpfr_prec_t bits = d.bits;
+  const std::vector<Root>& extrema = d.extrema;
+  const std::vector<Interval>& values = d.values;
+  // Slopes over a root's bracket by the centred form (its values at thin points are exact).
+  auto f1 = [&](const Interval& x) { return u.centred(x, 1); };
+  auto f2 = [&](const Interval& x) { return u.centred(x, 2); };
+
+  // S = (max u − min u)/2 over the extrema (the roots of u').
+  auto extreme = [&](bool top) {
+    mpfr lo = values[0].lower(), hi = values[0].upper();
+    for (const Interval& v : values) {
+      lo = top ? std::max(lo, v.lower()) : std::min(lo, v.lower());
+      hi = top ? std::max(hi, v.upper()) : std::min(hi, v.upper());
+    }
+    return Interval::hull(lo, hi, bits);
+  };
+  const Interval U = extreme(true), L = extreme(false), S = (U - L) / Interval::integer(2, bits);
+  FourierEnclosure e(bits);
+  e.scale = S;
+  e.minimum = L / S;
+  // In u's units: n = max(ν, 0), ν = G + u, G = γS, ramp slope B = βS.
+  const Interval G = of(gamma, bits) * S, B = of(beta, bits) * S;
+  auto nu = [&](const Interval& x) { return G + u(x, 0); };
+
+  // Contact boundaries: one on each monotone arc of u whose extrema have certain opposite signs
+  // of ν. A minimum with ν undecided (n touching zero, as at γ = −min w) is taken as contact:
+  // max(ν, 0) − ν ≤ δ there, and δ widens the areas below.
+  std::vector<Event> events;
+  std::vector<Sign> at_extremum;
+  mpfr delta = 0;
+  bool any_contact = false;
+  for (std::size_t j = 0; j < extrema.size(); ++j) {
+    const Interval v = G + values[j];
+    Sign sv = v.sign();
+    if (sv == Sign::zero) sv = Sign::undecided;
+    if (sv == Sign::undecided) {
+      if (extrema[j].slope != Sign::positive) throw Undecided("undecided at this precision: " + where + ": n touches zero at a maximum");
+      delta = std::max(delta, mpfr(-v.lower()));
+    }
+    any_contact = any_contact || (extrema[j].slope == Sign::negative && sv == Sign::positive);
+    at_extremum.push_back(sv);
+  }
+  if (!any_contact) {
+    bool none = true;
+    for (std::size_t j = 0; j < extrema.size(); ++j) none = none && at_extremum[j] == Sign::negative;
+    if (none) throw DomainError("gamma = " + gamma.str() + " gives no contact for this Fourier series");
+    throw Undecided("undecided at this precision: " + where + ": whether there is contact");
+  }
+  for (std::size_t j = 0; j < extrema.size(); ++j) {
+    const std::size_t k = (j + 1) % extrema.size();
+    const Sign a = at_extremum[j], b = at_extremum[k];
+    if (a == Sign::undecided || b == Sign::undecided || a == b) continue;
+    const mpfr lo = extrema[j].x.upper(), hi = (extrema[k].x + Interval::integer(k == 0 ? 1 : 0, bits)).lower();
+    const bool rising = a == Sign::negative;
+    Interval x = arc_root(nu, f1, rising, lo, hi, bits, where + ": a contact boundary");
+    if (k == 0 && x.lower() >= cut + 1) x = x - Interval::integer(1, bits);
+    if (x.upper() >= cut + 1) throw Undecided("undecided at this precision: " + where + ": a contact boundary at the cut");
+    events.push_back({rising ? Event::up : Event::down, x, -(B * x)});
+  }
+  e.jumping = !events.empty();
+  // Turning points of h in contact: u' = B where ν > 0, one on each monotone arc of u' whose
+  // ends (the bends) have certain opposite signs of u' − B.
+  for (std::size_t j = 0; j < d.bends.size(); ++j) {
+    const std::size_t k = (j + 1) % d.bends.size();
+    const Sign a = decide(d.slopes[j] - B, "beta against a local extremum of n'"), b = decide(d.slopes[k] - B, "beta against a local extremum of n'");
+    if (a == b) continue;
+    const mpfr lo = d.bends[j].x.upper(), hi = (d.bends[k].x + Interval::integer(k == 0 ? 1 : 0, bits)).lower();
+    Interval x = arc_root([&](const Interval& y) { return u(y, 1) - B; }, f2, a == Sign::negative, lo, hi, bits,
+                          where + ": a turning point (n' = beta)");
+    if (k == 0 && x.lower() >= cut + 1) x = x - Interval::integer(1, bits);
+    if (x.upper() >= cut + 1) throw Undecided("undecided at this precision: " + where + ": a turning point at the cut");
+    const Interval v = nu(x);
+    const Sign sv = v.sign();
+    if (sv == Sign::negative) continue;
+    if (sv != Sign::positive) throw Undecided("undecided at this precision: " + where + ": a turning point at a contact boundary");
+    events.push_back({Event::turn, x, v - B * x});
+  }
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.x.lower() < b.x.lower(); });
+  const std::size_t count = events.size();
+  for (std::size_t j = 1; j <= count && count > 1; ++j)
+    if (!(events[j - 1].x.upper() < (j < count ? events[j].x : events[0].x + Interval::integer(1, bits)).lower()))
+      throw Undecided("undecided at this precision: " + where + ": two events do not separate");
+
+  // Piece j runs from event j to event j + 1 (the last to the first, a period on): contact status
+  // and the certain direction of h on it.
+  std::vector<bool> in_contact(count, true);
+  std::vector<Sign> direction(count);
+  bool status = true;  // before the first event: the status the last contact boundary leaves
+  for (const Event& ev : events)
+    if (ev.kind != Event::turn) status = ev.kind == Event::up;
+  const Interval one = Interval::integer(1, bits);
+  auto start = [&](std::size_t j) { return events[j % count].x + one * static_cast<long>(j / count); };
+  auto level = [&](std::size_t j) { return events[j % count].h - B * static_cast<long>(j / count); };
+  for (std::size_t j = 0; j < count; ++j) {
+    if (events[j].kind != Event::turn) status = events[j].kind == Event::up;
+    in_contact[j] = status;
+    const mpfr m = midpoint(start(j).upper(), start(j + 1).lower(), bits);
+    const Interval slope = status ? u(point(m, bits), 1) - B : -B;
+    direction[j] = decide(slope, "the direction of h between two events");
+  }
+
+  // Valleys, and where each one's level returns: walk the pieces from it (steps[i]: the piece of
+  // the return, counted from the valley's event).
+  struct Valley {
+    std::size_t event, steps = 0;
+    Interval end;
+  };
+  std::vector<Valley> valleys;
+  for (std::size_t j = 0; j < count; ++j)
+    if (direction[(j + count - 1) % count] == Sign::negative && direction[j] == Sign::positive) valleys.push_back({j, 0, one});
+  for (Valley& v : valleys) {
+    const Interval c = events[v.event].h;
+    for (std::size_t m = 1;; ++m) {
+      if (m >= count + 1) throw SolverError(where + ": a stick phase does not end within a period (a bug)");
+      const std::size_t j = v.event + m;
+      if (direction[j % count] == Sign::positive) continue;
+      if (decide(level(j + 1) - c, "h against a valley's level") == Sign::positive) continue;
+      if (!in_contact[j % count]) throw SolverError(where + ": a stick phase ends in flight (a bug)");
+      v.steps = m;
+      v.end = bracketed_root([&](const Interval& x) { return nu(x) - B * x - c; }, [&](const Interval& x) { return f1(x) - B; },
+                             start(j).upper(), start(j + 1).lower(), bits, where + ": a stick end");
+      break;
+    }
+  }
+  // Normal area: γ without flight, else the contact arcs' integrals.
+  Interval normal(bits);
+  auto integral = [&](const Interval& a, const Interval& b) { return G * (b - a) + u(b, -1) - u(a, -1); };
+  if (!e.jumping) {
+    normal = G;
+  } else {
+    for (std::size_t j = 0; j < count; ++j)
+      if (events[j].kind == Event::up)
+        for (std::size_t m = 1; m <= count; ++m)
+          if (events[(j + m) % count].kind == Event::down) {
+            normal += integral(events[j].x, start(j + m));
+            break;
+          }
+  }
+  // Stick phases: the valleys inside no other's.
+  Interval lost(bits);
+  for (const Valley& v : valleys) {
+    bool inside = false;
+    for (const Valley& w : valleys)
+      if (&w != &v) inside = inside || (v.event + count - w.event) % count <= w.steps;
+    if (inside) continue;
+    const Event& ev = events[v.event];
+    const bool at_contact = ev.kind == Event::up;
+    const Interval lev = at_contact ? Interval(bits) : nu(ev.x);
+    const Interval length = v.end - ev.x;
+    lost += integral(ev.x, v.end) - lev * length - B * sqr(length) / Interval::integer(2, bits);
+    e.sticks.push_back({ev.x, v.end, lev / S, at_contact});
+  }
+  if (!valleys.empty() && e.sticks.empty()) throw SolverError(where + ": every valley inside another's stick phase (a bug)");
+  // n lies above the n* computed on by at most δ (n touching zero): ∫n and ∫s (monotone and
+  // 1-Lipschitz in n, by model.md's envelope) lie within δ above theirs, ∫(n − s) within δ.
+  const Interval up = Interval::hull(mpfr(0), delta, bits), both = Interval::hull(mpfr(-delta), delta, bits);
+  e.normal_area = (normal + up) / S;
+  if (e.sticks.empty()) {  // μ̄ = 1 exactly (Eq. 6): no valley of h, with or without the touch
+    e.retained_area = e.normal_area;
+    e.lost_area = Interval(bits);
+    e.mu = one;
+  } else {
+    e.retained_area = (normal - lost + up) / S;
+    e.lost_area = (lost + both) / S;
+    e.mu = (normal - lost + up) / (normal + up);
+  }
+  return e;
 }
 
 }  // namespace vibrofric::certified

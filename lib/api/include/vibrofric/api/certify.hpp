@@ -1,9 +1,12 @@
 // Certified values (README, "Precision"): μ̄/μ0 (Eq. 15) and Ψ_w(β) (Eq. 12) of the
-// piecewise-linear waves as exact rationals (core/exact.hpp), of the sine and power:P as interval
-// enclosures (core/enclosure.hpp) narrowed until they decide the rounding, and the proof that a
-// value evaluate() printed is their correct rounding in the number type or to the digits asked
-// for. Fourier series have no certified values yet.
+// piecewise-linear waves as exact rationals (core/exact.hpp), of the sine, power:P and Fourier
+// series as interval enclosures (core/enclosure.hpp) narrowed until they decide the rounding, and
+// the proof that a value evaluate() printed is their correct rounding in the number type or to
+// the digits asked for.
 #pragma once
+#include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +14,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/core/enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
 
 namespace vibrofric {
@@ -18,7 +22,7 @@ namespace vibrofric {
 struct Certificate {
   // μ̄/μ0 or Ψ lies in [lower, upper]: equal, the exact value, for the piecewise-linear waves
   // (`exact` its text: "p/q", or "p" for an integer); the dyadic ends of an enclosure for the
-  // sine (`lower_text`, `upper_text`: decimals rounded outward, three digits past the precision's).
+  // others (`lower_text`, `upper_text`: decimals rounded outward, three digits past the precision's).
   exact::Rational lower, upper;
   std::string exact, lower_text, upper_text;
   mpfr_prec_t bits = 0;  // the enclosure's precision that decided the rounding (0: exact)
@@ -28,7 +32,7 @@ struct Certificate {
   bool correctly_rounded = false;
 };
 
-// Certificates for the points of one wave: the sine, power:P, the triangle, both sawtooths, the
+// Certificates for the points of one wave: the sine, power:P, Fourier series, the triangle, both sawtooths, the
 // square wave and samples, on the flat punch. The constructor throws InputError for
 // any other wave or profile, naming it. An enclosure that has not decided the rounding at
 // max_certify_bits is a SolverError.
@@ -39,12 +43,22 @@ class Certifier {
   // point's β and γ as typed: a computed point (Point::beta_value) has no exact inputs and is an
   // InputError, as is a point evaluate() refuses).
   Certificate operator()(Quantity q, const Point& point, const Precision& precision, const std::string& printed) const;
-  // Whether its certificates are enclosures (the sine, power:P with P ≠ 1) or exact values.
+  // Whether its certificates are enclosures (the sine, power:P with P ≠ 1, Fourier
+  // series) or exact values.
   bool encloses() const { return !wave_; }
 
  private:
   std::optional<exact::Wave> wave_;       // piecewise linear
-  std::optional<exact::Rational> power_;  // power:P, P ≠ 1; neither: the sine
+  std::optional<exact::Rational> power_;  // power:P, P ≠ 1
+  std::optional<std::vector<certified::RationalHarmonic>> fourier_;  // none of the three: the sine
+  std::string name_;
+  // A Fourier series' shape per precision, built once (shared by copies, and by threads).
+  struct Shapes {
+    std::mutex mutex;
+    std::map<mpfr_prec_t, std::shared_ptr<const certified::FourierShape>> at;
+  };
+  std::shared_ptr<Shapes> shapes_ = std::make_shared<Shapes>();
+  std::shared_ptr<const certified::FourierShape> shape(mpfr_prec_t bits) const;
 };
 
 inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;

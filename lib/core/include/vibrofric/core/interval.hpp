@@ -133,6 +133,42 @@ class Interval {
   friend Interval sin(Interval a) { return a.unary(mpfi_sin); }
   friend Interval cos(Interval a) { return a.unary(mpfi_cos); }
   friend Interval exp(Interval a) { return a.unary(mpfi_exp); }
+  // sin and cos together. A narrow interval (radius r < 2^−20) costs one mpfr_sin_cos at its
+  // midpoint: each correctly rounded value widened by an ulp either way, then by r (both are
+  // 1-Lipschitz); a wide one is mpfi_sin and mpfi_cos.
+  friend std::pair<Interval, Interval> sin_cos(const Interval& a) {
+    const mpfr_prec_t bits = a.precision();
+    Interval s(bits), c(bits);
+    mpfr_t mid, radius, sv, cv;
+    mpfr_inits2(bits, mid, radius, sv, cv, static_cast<mpfr_ptr>(nullptr));
+    mpfi_mid(mid, a.v_);
+    mpfr_sub(radius, &a.v_->right, mid, MPFR_RNDU);
+    mpfr_sub(sv, mid, &a.v_->left, MPFR_RNDU);
+    mpfr_max(radius, radius, sv, MPFR_RNDU);
+    const bool narrow = mpfr_number_p(radius) && (mpfr_zero_p(radius) || mpfr_get_exp(radius) < -20);
+    if (narrow) {
+      mpfr_sin_cos(sv, cv, mid, MPFR_RNDN);
+      auto widen = [&](Interval& out, mpfr_ptr v) {
+        mpfr_t lo, hi;
+        mpfr_inits2(bits, lo, hi, static_cast<mpfr_ptr>(nullptr));
+        mpfr_set(lo, v, MPFR_RNDN);
+        mpfr_set(hi, v, MPFR_RNDN);
+        mpfr_nextbelow(lo);
+        mpfr_nextabove(hi);
+        mpfr_sub(lo, lo, radius, MPFR_RNDD);
+        mpfr_add(hi, hi, radius, MPFR_RNDU);
+        mpfi_interv_fr(out.v_, lo, hi);
+        mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
+      };
+      widen(s, sv);
+      widen(c, cv);
+    } else {
+      mpfi_sin(s.v_, a.v_);
+      mpfi_cos(c.v_, a.v_);
+    }
+    mpfr_clears(mid, radius, sv, cv, static_cast<mpfr_ptr>(nullptr));
+    return {std::move(s), std::move(c)};
+  }
   // asin and acos of an interval reaching outside [−1, 1] are an error, not a NaN end.
   friend Interval asin(Interval a) { return a.in_unit_range("asin").unary(mpfi_asin); }
   friend Interval acos(Interval a) { return a.in_unit_range("acos").unary(mpfi_acos); }
