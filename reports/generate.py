@@ -530,6 +530,8 @@ def main():
                 ev.append("[%s](../%s)" % (os.path.basename(c["proof"]), c["proof"]))
             ev.append("test `%s`" % c["key"])
             verdict = "**%s**" % c["verdict"]
+            if c["verdict"] != "holds approximately":
+                verdict = "**%s (%s)**" % (c["verdict"], c["certification"])
             if c["scope"]:
                 verdict += " — " + c["scope"]
             if c["fails_where"]:
@@ -632,10 +634,17 @@ def main():
         w("")
     w("## Exact claims: how each was checked")
     w("")
+    w("A verdict is *certified* where a certified computation decides it on the claim's grid (exact rationals, "
+      "`core/exact.hpp`, or interval enclosures, `core/enclosure.hpp`: the closed form equal to the exact value or "
+      "inside the enclosure, a counterexample outside it), *numerical* where it rests on the high-precision solver and "
+      "its error estimate; each entry says how, or what keeps it numerical.")
+    w("")
     for c in claims:
         if c["verdict"] == "holds approximately":
             continue
-        w("- **%s** (%s): %s. *Criterion:* %s." % (c["id"], c["verdict"], c["how"], c["criterion"]))
+        w("- **%s** (%s, %s): %s. *Criterion:* %s. *%s:* %s." % (
+            c["id"], c["verdict"], c["certification"], c["how"], c["criterion"], c["certification"].capitalize(),
+            c["certification_note"]))
         for m in c["measured"]:
             if c["verdict"] != "fails":
                 w("  - %s: %s" % (m["name"], m["value"]))

@@ -945,15 +945,16 @@ int run_verify(const Flags& f) {
   }
   std::printf("%-28s %-8s %-20s %-9s %s\n", "claim", "cases", "verdict", "deviation", "statement");
   for (const auto& c : checks) {
-    std::printf("%-28s %-8zu %-20s %-9s %s\n", c.id.c_str(), c.cases, verdict_name(c.verdict).c_str(),
+    std::printf("%-28s %-8zu %-20s %-9s %s\n", c.id.c_str(), c.cases, verdict_text(c).c_str(),
                 c.deviation_text.c_str(), c.statement.c_str());
   }
   std::printf("\nrequested precision: %d digits\n", digits);
   for (const auto& c : checks) {
-    std::printf("\n%s (%s, %s) — %s\n", c.id.c_str(), c.key.c_str(), c.source.c_str(), verdict_name(c.verdict).c_str());
+    std::printf("\n%s (%s, %s) — %s\n", c.id.c_str(), c.key.c_str(), c.source.c_str(), verdict_text(c).c_str());
     std::printf("  method:    %s%s\n", c.method.c_str(), c.proof.empty() ? "" : (" (" + c.proof + ")").c_str());
     std::printf("  checked:   %s\n", c.how.c_str());
     std::printf("  criterion: %s\n", c.criterion.c_str());
+    std::printf("  %-10s %s\n", (c.certification + ":").c_str(), c.certification_note.c_str());
     std::printf("  deviation: %s (%s)\n", c.deviation_text.c_str(), c.deviation_unit.c_str());
     std::printf("  worst:     %s\n", c.worst.c_str());
     if (!c.scope.empty()) std::printf("  scope:     %s\n", c.scope.c_str());

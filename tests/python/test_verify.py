@@ -2,7 +2,8 @@
 --format json`."""
 import vibrofric
 
-FIELDS = {"key", "id", "source", "statement", "method", "how", "criterion", "proof", "worst", "verdict", "scope",
+FIELDS = {"key", "id", "source", "statement", "method", "how", "criterion", "proof", "worst", "verdict",
+          "certification", "certification_note", "scope",
           "fails_where", "corrected", "cases", "deviation", "deviation_unit", "corrected_deviation", "measured",
           "digits"}
 
@@ -11,7 +12,7 @@ def test_eq17_holds():
     (row,) = vibrofric.verify("eq17", digits=20)
     assert set(row) == FIELDS
     assert row["key"] == "eq17" and row["id"] == "Eq. 17" and row["source"] == "paper"
-    assert row["verdict"] == "holds"
+    assert row["verdict"] == "holds" and row["certification"] == "certified" and "rationals" in row["certification_note"]
     assert row["cases"] > 0 and row["digits"] == 20
     assert isinstance(row["deviation"], str) and float(row["deviation"]) < 1e-15
     assert row["corrected_deviation"] is None
@@ -20,7 +21,7 @@ def test_eq17_holds():
 
 def test_eq24_fails_as_printed():
     (row,) = vibrofric.verify("eq24", digits=10)
-    assert row["verdict"] == "fails"
+    assert row["verdict"] == "fails" and row["certification"] == "certified"
     assert row["corrected"] and row["corrected_deviation"] is not None
 
 

@@ -1823,6 +1823,22 @@ def claim_detail_tests():
                     raise Fail("verify --claim %s: text shows %s %r, JSON %s is empty" % (key, label, shown[label], field))
     case("verify: the text and JSON formats publish the same fields", text_and_json_agree)
 
+    def certification():
+        # Certified verdicts say so in the table and the detail, with how; numerical ones say why.
+        for key, status in (("eq6", "certified"), ("eq24", "certified"), ("sec3", "numerical"), ("fig2", "numerical")):
+            c = claim(key)
+            text = ok_run(["verify", "--digits", "12", "--claim", key])
+            row = "%s (%s)" % (c["verdict"], status)
+            if c["certification"] != status or not c["certification_note"] \
+                    or not re.search(r"^%s\s+\d+\s+%s\s" % (re.escape(c["id"]), re.escape(row)), text, re.M) \
+                    or "  %s: %s\n" % (status, c["certification_note"]) not in text:
+                raise Fail("verify --claim %s: certification %r, %r; text:\n%s" % (key, c["certification"],
+                                                                                   c["certification_note"], text))
+        # An approximate statement's verdict is a measured size: no certification in its row.
+        if not re.search(r"^Eq\. 23\s+\d+\s+holds approximately\s+\d", ok_run(["verify", "--digits", "12", "--claim", "eq23"]), re.M):
+            raise Fail("verify --claim eq23: the approximate verdict's row")
+    case("verify: certified verdicts against numerical ones, with how or why", certification)
+
     def sec3_cases():
         # The case count is the grid the claim states: "WAVES (gamma = LIST)" groups in `how`.
         c = claim("sec3")

@@ -141,6 +141,8 @@ TEST_P(Claim, VerdictIsTheEstablishedOne) {
   EXPECT_FALSE(c.deviation_text.empty());
   EXPECT_EQ(vibrofric::verdict_name(c.verdict), vibrofric::verdict_name(want.verdict))
       << c.id << " (" << want.why << "): deviation " << c.deviation << " at " << c.worst;
+  EXPECT_EQ(c.certification, vibrofric::testing::certified_claims().count(c.key) ? "certified" : "numerical") << c.id;
+  EXPECT_FALSE(c.certification_note.empty()) << c.id << ": how it is certified, or what keeps it numerical";
   const double tol = std::pow(10.0, -kDigits);
   switch (want.verdict) {
     case Verdict::holds:
@@ -225,6 +227,8 @@ TEST(ClaimCatalogue, VerdictsAtTheSmallestPrecisionAreTheEstablishedOnes) {
       ASSERT_NE(it, established().end()) << c.key;
       EXPECT_EQ(vibrofric::verdict_name(c.verdict), vibrofric::verdict_name(it->second.verdict))
           << c.id << " at " << digits << " digits: deviation " << c.deviation_text << " at " << c.worst;
+      EXPECT_EQ(c.certification, vibrofric::testing::certified_claims().count(c.key) ? "certified" : "numerical")
+          << c.id << " at " << digits << " digits";
     }
   }
 }

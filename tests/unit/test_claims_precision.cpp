@@ -16,6 +16,7 @@ TEST(ClaimCatalogue, VerdictsAtTheLargestPrecisionAreTheEstablishedOnes) {
     ASSERT_NE(it, vibrofric::testing::established().end()) << c.key;
     EXPECT_EQ(vibrofric::verdict_name(c.verdict), vibrofric::verdict_name(it->second.verdict))
         << c.id << " at 300 digits: deviation " << c.deviation_text << " at " << c.worst;
+    EXPECT_EQ(c.certification, vibrofric::testing::certified_claims().count(c.key) ? "certified" : "numerical") << c.id;
     // The deviation keeps the working precision's exponent (a double would underflow below 1e-308).
     if (c.verdict == vibrofric::Verdict::holds && c.deviation_text != "0") {
       EXPECT_LT(std::stoi(c.deviation_text.substr(c.deviation_text.find('e') + 1)), -300) << c.id;

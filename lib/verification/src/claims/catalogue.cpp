@@ -14,6 +14,11 @@ std::string verdict_name(Verdict v) {
   return "?";
 }
 
+std::string verdict_text(const ClaimCheck& c) {
+  if (c.verdict == Verdict::holds_approximately) return verdict_name(c.verdict);
+  return verdict_name(c.verdict) + " (" + c.certification + ")";
+}
+
 const std::string& Measurement::field(const std::string& key) const {
   for (const auto& [k, v] : fields)
     if (k == key) return v;

@@ -141,8 +141,22 @@ class Check {
     if (within_digits()) return finish(Verdict::holds, crit);
     return finish(dev_ <= Real("1e-3") ? Verdict::holds_approximately : Verdict::fails, crit);
   }
+  // The verdict is proven on the claim's grid by a certified computation (claims.hpp), `how`.
+  void certified(std::string how) {
+    c_.certification = "certified";
+    c_.certification_note = std::move(how);
+  }
+  // What keeps the claim numerical.
+  void numerical(std::string why) {
+    c_.certification = "numerical";
+    c_.certification_note = std::move(why);
+  }
   ClaimCheck finish(Verdict v, std::string criterion) {
     c_.verdict = v;
+    if (c_.certification_note.empty())
+      c_.certification_note = v == Verdict::holds_approximately
+                                  ? "an approximate statement: its verdict is a measured size, not an identity an enclosure could prove"
+                                  : "decided by the high-precision solver and its error estimate; no certified check of it yet";
     c_.criterion = std::move(criterion);
     c_.deviation = static_cast<double>(dev_);
     c_.deviation_text = text(dev_);

@@ -1,7 +1,10 @@
 // The exact claims: Eqs. 6, 13, 17, 18, 19, 20–21, 22, Fig. 3 and model.md's β_c table, each
 // decided by the solver at high precision against the closed form (closed_forms.hpp) or against
-// the solver at the reference point the claim names.
+// the solver at the reference point the claim names; then all but the β_c table again, certified
+// (claims.hpp): exactly in rationals (core/exact.hpp) and by enclosures (core/enclosure.hpp).
 #include "check.hpp"
+#include "vibrofric/api/certify.hpp"
+#include "vibrofric/core/enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 
@@ -31,6 +34,45 @@ void certify_exactly(Check& c, const std::vector<const char*>& betas, const std:
   c.measure("certified in exact rationals (core/exact.hpp), the grid's decimals taken exactly",
             std::to_string(equal_cases) + " of " + std::to_string(cases) + " cases exactly equal",
             {{"equal", std::to_string(equal_cases)}, {"cases", std::to_string(cases)}});
+  if (equal_cases == cases)
+    c.certified("exact rationals (core/exact.hpp): every case of the grid, its decimals taken exactly, equals the closed form");
+}
+
+// The claims' enclosed waves (sine, power:p): at rational β, γ, with the bits of `digits` plus 40,
+// doubled where a comparison is undecided (enclosure.hpp).
+struct Enclosed {
+  const char* name;
+  std::optional<Q> p;  // power:p; none: the sine
+  mpfr_prec_t bits;
+  certified::SineEnclosure at(const Q& beta, const Q& gamma) const {
+    for (mpfr_prec_t b = bits; b <= max_certify_bits; b *= 2) {
+      try {
+        return p ? certified::enclose_power(*p, beta, gamma, b) : certified::enclose_sine(beta, gamma, b);
+      } catch (const certified::Undecided&) {
+      }
+    }
+    throw SolverError(std::string(name) + ", beta = " + beta.str() + ", gamma = " + gamma.str() + ": no enclosure decides it");
+  }
+};
+std::vector<Enclosed> enclosed_waves(int digits) {
+  const auto bits = static_cast<mpfr_prec_t>(digits * 3.3219280948873623) + 40;
+  return {{"sine", std::nullopt, bits}, {"power:2", Q(2), bits}, {"power:3", Q(3), bits}};
+}
+const std::pair<const char*, exact::Wave (*)()> kExactWaves[] = {
+    {"triangle", exact::triangle}, {"sawtooth-right", exact::sawtooth_right}, {"sawtooth-left", exact::sawtooth_left},
+    {"square", exact::square}};
+
+// x ∈ a and x ∈ b for some x, both narrower than 10^−digits relative to max(1, |a|): the enclosures
+// prove |a − b| below 2·10^−digits.
+bool overlap_within(const Interval& a, const Interval& b, int digits) {
+  const mpfr tol = pow(mpfr(10), -digits) * std::max(mpfr(1), abs(a.upper()));
+  return intersection(a, b).has_value() && a.width() < tol && b.width() < tol;
+}
+
+Q rational_of(const mpfr& x) {
+  Q q;
+  mpfr_get_q(q.backend().data(), x.backend().data());
+  return q;
 }
 }  // namespace
 
@@ -38,7 +80,8 @@ ClaimCheck eq6(int digits) {
   Check c(entry("eq6"), digits);
   c.unit("relative |mu - mu0|/mu0 at and above beta_c; 1 per case without stick below it");
   c.out().how = "7 waves x gamma in {3, 1, 0.5, 0, -0.5, -0.9}: mu at beta_c, 1.5 beta_c, 10 beta_c must be exactly 1; "
-                "at " + below_text(digits) + " (or beta = 100, 1000 where beta_c is infinite) a stick phase and mu < 1 (deviation 1 if not)";
+                "at " + below_text(digits) + " (or beta = 100, 1000 where beta_c is infinite) a stick phase and mu < 1 (deviation 1 if not); "
+                "then certified: tri, str, stl, square in exact rationals, the sine and power:2, power:3 by enclosures beside beta_c";
   for (const char* name : kWaves) {
     Solver s(name, digits);
     for (const Real& gamma : reals({"3", "1", "0.5", "0", "-0.5", "-0.9"})) {
@@ -57,13 +100,60 @@ ClaimCheck eq6(int digits) {
       }
     }
   }
+  // Certified: the piecewise-linear waves exactly at beta_c, 1.5 and 10 beta_c (beta_c rational)
+  // and 1e-3 below; the sine and power:p by enclosures at rationals 1e-12 above the enclosure of
+  // beta_c, 1.5 and 10 times it, and 1e-3 below (irrational beta_c: beside it, not at it).
+  long cases = 0, proven = 0;
+  auto decide = [&](bool ok, const std::string& where) {
+    ++cases;
+    if (ok) ++proven;
+    else c.record(1.0, "certified: " + where + " contradicts Eq. 6");
+  };
+  const std::vector<const char*> gammas{"3", "1", "0.5", "0", "-0.5", "-0.9"};
+  for (const auto& [name, make] : kExactWaves) {
+    const exact::Wave w = make();
+    for (const char* gt : gammas) {
+      const Q gamma = exact::decimal(gt, "gamma");
+      const std::optional<Q> bc = exact::solve(w, Q(1), gamma).beta_c;
+      for (const Q& f : {Q(1), Q(3, 2), Q(10)})
+        if (bc) {
+          const exact::Result r = exact::solve(w, *bc * f, gamma);
+          decide(r.mu == 1 && r.stick_phases.empty(), std::string(name) + " at " + (*bc * f).str() + " beta_c, gamma = " + gt);
+        }
+      for (const Q& beta : bc ? std::vector<Q>{*bc * Q(999, 1000)} : std::vector<Q>{Q(100), Q(1000)}) {
+        const exact::Result r = exact::solve(w, beta, gamma);
+        decide(r.mu < 1 && !r.stick_phases.empty(), std::string(name) + ", beta = " + beta.str() + ", gamma = " + gt);
+      }
+    }
+  }
+  for (const Enclosed& e : enclosed_waves(digits))
+    for (const char* gt : gammas) {
+      const Q gamma = exact::decimal(gt, "gamma");
+      // beta_c enclosed (its own enclosure, at any beta), and rationals beside its ends.
+      const Interval bc = e.at(Q(1), gamma).beta_c;
+      const Q upper = rational_of(bc.upper()), lower = rational_of(bc.lower());
+      for (const Q& f : {Q(1000000000001, 1000000000000), Q(3, 2), Q(10)}) {
+        const certified::SineEnclosure r = e.at(upper * f, gamma);
+        decide(!r.stick && r.mu.width() == 0 && r.mu.contains(mpfr(1)), std::string(e.name) + " at " + f.str() + " beta_c, gamma = " + gt);
+      }
+      const certified::SineEnclosure r = e.at(lower * Q(999, 1000), gamma);
+      decide(r.stick && r.mu.upper() < 1, std::string(e.name) + " at 0.999 beta_c, gamma = " + gt);
+    }
+  c.measure("certified (exact rationals; enclosures for the sine, power:2, power:3)",
+            std::to_string(proven) + " of " + std::to_string(cases) + " cases proven",
+            {{"proven", std::to_string(proven)}, {"cases", std::to_string(cases)}});
+  if (proven == cases)
+    c.certified("tri, str, stl, square exactly in rationals at beta_c (rational), 1.5 and 10 beta_c, and 1e-3 below; the sine "
+                "and power:2, power:3 by enclosures at rationals beside beta_c's own enclosure: 1e-12 above it, 1.5 and 10 times "
+                "it (mu = 1 exactly, no stick), 1e-3 below (a stick phase, mu < 1 certainly)");
   return c.finish_exact();
 }
 
 ClaimCheck eq13(int digits) {
   Check c(entry("eq13"), digits);
   c.out().how = "7 waves x 14 beta in (0, 100] x gamma in {1, 1.5, 3, 10, 1000}: solver mu(beta, gamma) against "
-                "1 - Psi(beta)/gamma with Psi from the solver at gamma = -min w";
+                "1 - Psi(beta)/gamma with Psi from the solver at gamma = -min w; then certified: tri, str, stl, square in "
+                "exact rationals, the sine and power:2, power:3 by enclosures";
   for (const char* name : kWaves) {
     Solver s(name, digits);
     for (const Real& beta : betas_wide()) {
@@ -72,6 +162,41 @@ ClaimCheck eq13(int digits) {
         c.compare(s.mu(beta, gamma), cf::mu_from_psi(p, gamma), at(name, beta, &gamma));
     }
   }
+  // Certified on the same grid: the piecewise-linear waves exactly; the sine and power:p by
+  // enclosures of mu and of 1 - Psi/gamma that overlap, each narrower than 10^-digits.
+  long cases = 0, proven = 0;
+  const std::vector<const char*> gammas{"1", "1.5", "3", "10", "1000"};
+  for (const auto& [name, make] : kExactWaves) {
+    const exact::Wave w = make();
+    for (const char* bt : beta_texts_wide()) {
+      const Q beta = exact::decimal(bt, "beta"), psi = exact::psi(w, beta).lost_area;
+      for (const char* gt : gammas) {
+        const Q gamma = exact::decimal(gt, "gamma");
+        ++cases;
+        if (exact::solve(w, beta, gamma).mu == 1 - psi / gamma) ++proven;
+        else c.record(1.0, std::string("certified: ") + name + ", beta = " + bt + ", gamma = " + gt + " not equal");
+      }
+    }
+  }
+  for (const Enclosed& e : enclosed_waves(digits))
+    for (const char* bt : beta_texts_wide()) {
+      const Q beta = exact::decimal(bt, "beta");
+      const Interval psi = e.at(beta, Q(1)).lost_area;
+      for (const char* gt : gammas) {
+        const Q gamma = exact::decimal(gt, "gamma");
+        ++cases;
+        const Interval g = Interval::rational(gamma.backend().data(), e.bits);
+        if (overlap_within(e.at(beta, gamma).mu, Interval::integer(1, e.bits) - psi / g, digits)) ++proven;
+        else c.record(1.0, std::string("certified: ") + e.name + ", beta = " + bt + ", gamma = " + gt + ": enclosures apart");
+      }
+    }
+  c.measure("certified (exact rationals; enclosures for the sine, power:2, power:3)",
+            std::to_string(proven) + " of " + std::to_string(cases) + " cases proven",
+            {{"proven", std::to_string(proven)}, {"cases", std::to_string(cases)}});
+  if (proven == cases)
+    c.certified("tri, str, stl, square exactly in rationals (mu = 1 - Psi/gamma, equal); the sine and power:2, power:3 by "
+                "enclosures: mu's and 1 - Psi/gamma's overlap, each narrower than 1e-" + std::to_string(digits) +
+                ", so they differ by less than 2e-" + std::to_string(digits));
   return c.finish_exact();
 }
 
@@ -131,7 +256,8 @@ ClaimCheck eq19(int digits) {
 ClaimCheck eq20_21(int digits) {
   Check c(entry("eq20-21"), digits);
   c.out().how = "square, 14 beta x 10 gamma in (-1, 1]: solver mu(beta, gamma) against solver mu(xi_sqr, 1) and "
-                "against 1 - Psi_sqr(xi_sqr) with Psi_sqr (ref. [10], Eq. 36) from the solver at gamma = 1";
+                "against 1 - Psi_sqr(xi_sqr) with Psi_sqr (ref. [10], Eq. 36) from the solver at gamma = 1; then certified: "
+                "the same decimals exactly, in GMP rationals (core/exact.hpp), against both and the closed form of Psi_sqr";
   Solver s("square", digits);
   for (const Real& beta : betas_wide())
     for (const Real& gamma : gammas_jumping()) {
@@ -140,6 +266,11 @@ ClaimCheck eq20_21(int digits) {
       c.compare(got, s.mu(xi, Real(1)), at("square", beta, &gamma));
       c.compare(got, 1 - s.psi(xi), at("square", beta, &gamma) + " (Eq. 20 form)");
     }
+  certify_exactly(c, beta_texts_wide(), gamma_texts_jumping(), [](const Q& beta, const Q& gamma) {
+    const Q xi = cf::xi_square(beta, gamma), mu = exact::solve(exact::square(), beta, gamma).mu;
+    return mu == exact::solve(exact::square(), xi, Q(1)).mu && mu == 1 - exact::psi(exact::square(), xi).lost_area &&
+           mu == 1 - cf::psi_square(xi);
+  });
   return c.finish_exact();
 }
 
@@ -173,7 +304,8 @@ ClaimCheck fig3(int digits) {
   Check c(entry("fig3"), digits);
   c.out().how = "square, the figure's 11 gamma (1, 0.8, ..., -0.8, and -0.999 for -1, where there is no contact) x "
                 "(beta = 0.1, 0.2, ..., 8 + 5 around the threshold): solver against Eq. 22, at the "
-                "points of the figure's data (a sweep of the square wave)";
+                "points of the figure's data (a sweep of the square wave); then certified: the same decimals exactly, in "
+                "GMP rationals (core/exact.hpp), against Eq. 22 in rationals";
   Solver s("square", digits);
   std::vector<Real> betas;
   for (int k = 1; k <= 80; ++k) betas.push_back(Real(k) / 10);
@@ -182,6 +314,19 @@ ClaimCheck fig3(int digits) {
   const Real gamma = num("-0.999999999999");
   const Real beta = num("0.001");
   c.measure("mu(beta = 0.001, gamma = -1 + 1e-12)", str(s.mu(beta, gamma), 15));
+  static const std::vector<std::string> beta_texts = [] {
+    std::vector<std::string> t;
+    for (int k = 1; k <= 80; ++k) t.push_back(std::to_string(k / 10) + "." + std::to_string(k % 10));
+    return t;
+  }();
+  std::vector<const char*> bt;
+  for (const std::string& t : beta_texts) bt.push_back(t.c_str());
+  certify_exactly(c, bt, {"1", "0.8", "0.6", "0.4", "0.2", "0", "-0.2", "-0.4", "-0.6", "-0.8", "-0.999"},
+                  [](const Q& beta, const Q& gamma) {
+                    for (const Q& b : {beta, Q(2 * (1 + gamma)), Q(2 * (1 + gamma) * Q(999999, 1000000)), Q(2 * (1 + gamma) * Q(1000001, 1000000))})
+                      if (exact::solve(exact::square(), b, gamma).mu != cf::mu_square_jumping(b, gamma)) return false;
+                    return true;
+                  });
   return c.finish_exact();
 }
 

@@ -46,6 +46,8 @@ ClaimCheck sec3(int digits) {
                                  {"sawtooth-right", half, false},       {"sawtooth-left", half, false},
                                  {"square", square_slope, false},       {"power:2", power_slope<2>, true},
                                  {"power:3", power_slope<3>, true}};
+  c.numerical("a limit (beta -> 0): enclosures at finitely many beta bound mu there but not its limit; the limit "
+              "itself is proofs/sec3_static.md's derivation");
   const Real beta = Real(tiny.c_str());
   double order_worst = 1e9;
   for (const auto& w : waves) {

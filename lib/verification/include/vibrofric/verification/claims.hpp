@@ -52,6 +52,13 @@ struct ClaimCheck {
   std::string deviation_unit;  // what it measures: "relative", "absolute, in mu0", "|gamma_min - 0.6|", ...
   std::string worst;      // the case with the largest deviation (the counterexample if it fails)
   Verdict verdict = Verdict::holds;
+  // "certified" where the verdict is proven by a certified computation on the claim's grid (exact
+  // rationals or interval enclosures, README "Certified values"): the closed form equal to the
+  // exact value, or inside the enclosure (for a counterexample: outside it); else "numerical": it
+  // rests on the high-precision solver and its error estimate. The note says how, or what keeps
+  // the claim numerical.
+  std::string certification = "numerical";
+  std::string certification_note;
   std::string scope;      // where the verdict holds, when that is part of it (e.g. a β range)
   std::string fails_where;  // for an approximate statement: where it does not hold ("" if nowhere checked)
   std::string corrected;  // the statement the solver and a proof support, when it differs
@@ -59,6 +66,10 @@ struct ClaimCheck {
   std::string corrected_deviation_text;       // the same at the working precision ("" if none)
   std::vector<Measurement> measured;
 };
+
+// The verdict as verify prints it: "holds (certified)", "fails (numerical)", …; an approximate
+// statement's verdict is a measured size, printed alone.
+std::string verdict_text(const ClaimCheck& c);
 
 struct ClaimEntry {
   std::string key, id, source, statement, method, proof;
@@ -95,6 +106,8 @@ void for_each_field(const ClaimCheck& c, F&& f) {
   f("proof", c.proof);
   f("worst", c.worst);
   f("verdict", verdict_name(c.verdict));
+  f("certification", c.certification);
+  f("certification_note", c.certification_note);
   f("scope", c.scope);
   f("fails_where", c.fails_where);
   f("corrected", c.corrected);
@@ -107,7 +120,8 @@ void for_each_field(const ClaimCheck& c, F&& f) {
 
 // The checks as one JSON document (`verify --format json`, the report generator): {"digits": D,
 // "claims": [{key, id, source, statement, method, how, criterion, proof,
-// worst, verdict, scope, fails_where, corrected, cases, deviation, deviation_unit,
+// worst, verdict, certification, certification_note, scope, fails_where, corrected, cases,
+// deviation, deviation_unit,
 // corrected_deviation, measured: [{name, value, fields: {key: value, ...}}, ...]}, ...]}. Deviations are decimal strings at
 // the working precision (a JSON number would pass through a double and underflow beyond 300
 // digits); corrected_deviation is null where a claim has no corrected statement.
