@@ -252,8 +252,9 @@ TEST(FourierEnclosure, HoldsTheSolversValuesAndEveryStickPhase) {
 
 // n touching zero (γ = −min w exactly, the odd series sin + sin 3·/3 at γ = 1): no bits decide
 // whether n vanishes there, and none need to: the enclosure, widened by the undecided dip, holds
-// the solver's value and narrows with the bits. A single harmonic is the sine.
-TEST(FourierEnclosure, TouchingZeroAndTheSine) {
+// the solver's value and narrows with the bits. A flat of the series (a double root of u'), and
+// a single harmonic, which is the sine.
+TEST(FourierEnclosure, TouchingZeroFlatsAndTheSine) {
   vibrofric::PrecisionScope scope(100);
   const std::vector<cert::RationalHarmonic> odd{{1, Q(0), Q(1)}, {3, Q(0), Q(1, 3)}};
   const vibrofric::FourierSeries<mpfr> wave("fourier", {1, 3}, {mpfr(0), mpfr(0)}, {mpfr(1), mpfr(1) / 3});
@@ -273,6 +274,18 @@ TEST(FourierEnclosure, TouchingZeroAndTheSine) {
     EXPECT_TRUE(f.mu.contains(s.mu.midpoint()) && s.mu.contains(f.mu.midpoint())) << gamma.str();
     ASSERT_EQ(f.sticks.size(), 1u);
     EXPECT_TRUE(holds(f.sticks[0].end, s.end->midpoint() + 1, mpfr("1e-50")) || holds(f.sticks[0].end, s.end->midpoint(), mpfr("1e-50")));
+  }
+  // sin + sin(2·)/2: u' = (2c − 1)(c + 1), c = cos 2πφ, a double root at φ = 1/2 (a flat, no
+  // extremum): no bits separate its two roots, and none need to (u is monotone through it).
+  const std::vector<cert::RationalHarmonic> flat{{1, Q(0), Q(1)}, {2, Q(0), Q(1, 2)}};
+  const vibrofric::FourierSeries<mpfr> flat_wave("fourier", {1, 2}, {mpfr(0), mpfr(0)}, {mpfr(1), mpfr("0.5")});
+  for (const auto& [beta, gamma] : {std::pair{Q(1), Q(3, 10)}, std::pair{Q(1, 100), Q(-1, 2)}, std::pair{Q(7, 2), Q(2)}}) {
+    const cert::FourierEnclosure e = cert::enclose_fourier(flat, beta, gamma, 200);
+    const vibrofric::Result<mpfr> r = vibrofric::solve(flat_wave, to_mpfr(beta), to_mpfr(gamma));
+    EXPECT_TRUE(holds(e.mu, r.mu, mpfr("1e-90"))) << beta.str() << ", " << gamma.str();
+    EXPECT_TRUE(holds(e.normal_area, r.normal_area, mpfr("1e-90"))) << beta.str() << ", " << gamma.str();
+    EXPECT_EQ(e.sticks.size(), r.stick_phases.size());
+    EXPECT_LT(e.mu.width(), mpfr("1e-50"));
   }
   EXPECT_THROW(cert::enclose_fourier(sine, Q(1), Q(-1), 100), cert::Undecided);  // n touches zero at its maximum
   EXPECT_THROW(cert::enclose_fourier(sine, Q(1), Q(-2), 100), vibrofric::DomainError);

@@ -200,10 +200,14 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     // normalised series (max w − min w = 2, max w > 0). Double the bits until both ends of the
     // enclosure round alike (no tie: the value is transcendental unless it is exactly 1 or 0).
     const Rational at_gamma = q == Quantity::psi ? Rational(fourier_ ? 2 : 1) : gamma;
+    // A series' enclosure isolates its events by bisection to 2^−bits/2: four times the first
+    // bits at most (an inherent undecided case, n touching zero at a maximum, would else take
+    // minutes); the others up to max_certify_bits.
+    const mpfr_prec_t cap = fourier_ ? std::min(max_certify_bits, 4 * first_bits(precision)) : max_certify_bits;
     for (mpfr_prec_t bits = first_bits(precision);; bits *= 2) {
-      if (bits > max_certify_bits)
+      if (bits > cap)
         throw SolverError(name_ + ", beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
-                          ": the enclosure does not decide the rounding at " + std::to_string(max_certify_bits) + " bits");
+                          ": the enclosure does not decide the rounding at " + std::to_string(cap) + " bits");
       std::optional<Interval> value;
       try {
         if (fourier_) {

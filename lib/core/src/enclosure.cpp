@@ -381,13 +381,15 @@ class Series {
 
 struct Root {
   Interval x;
-  Sign slope;  // of the function at the root
+  Sign slope;  // of the function at the root; undecided: a flat (below)
 };
 
 // Every root of f on [from, from + 1], each enclosed with a certain sign change at thin ends and
 // f' excluding 0 on its enclosure (one simple root), in increasing order: bisection of `cells`
-// cells, a cell dropped where f excludes 0 or is monotone without a sign change. A root that does
-// not separate from another (or from a cell's end) before the cells are 2^−bits/2 wide is Undecided.
+// cells, a cell dropped where f excludes 0 or is monotone without a sign change. Where f does not
+// separate from 0 before the cells are 2^−bits/2 wide (a double root, as u' = cos 2πφ + cos 4πφ
+// at φ = 1/2, or roots closer than that) the cells are kept as a flat: a Root with an undecided
+// slope, holding every root there (none, one or more).
 template <class F, class DF>
 std::vector<Root> isolate(F f, DF df, const mpfr& from, int cells, mpfr_prec_t bits, const std::string& what) {
   auto at = [&](long j) {  // from + j/cells, exactly (cells a power of two)
@@ -423,9 +425,13 @@ std::vector<Root> isolate(F f, DF df, const mpfr& from, int cells, mpfr_prec_t b
         }
       }
     }
-    if (X.width() < narrowest)
-      throw Undecided("undecided at this precision: " + what + " near phase " + a.str(12) +
-                      " does not separate from another (a double root?)");
+    if (X.width() < narrowest) {
+      if (!roots.empty() && roots.back().slope == Sign::undecided && !(roots.back().x.upper() < a))
+        roots.back().x = hull(roots.back().x, X);
+      else
+        roots.push_back({X, Sign::undecided});
+      continue;
+    }
     const mpfr mid = midpoint(a, b, bits);
     stack.emplace_back(mid, b);
     stack.emplace_back(a, mid);
@@ -456,7 +462,9 @@ struct FourierShape::Data {
   Series u;
   mpfr cut;
   mpfr_prec_t bits;
-  std::vector<Root> extrema, bends;      // roots of u' and of u'' (the extrema of u')
+  // Roots of u' and of u'' (the extrema of u'), flats among them: between two of them u (u') is
+  // monotone, and the extreme values of u lie in u over them.
+  std::vector<Root> extrema, bends;
   std::vector<Interval> values, slopes;  // u at the extrema, u' at the bends
 };
 
@@ -494,7 +502,9 @@ FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rationa
   auto f1 = [&](const Interval& x) { return u.centred(x, 1); };
   auto f2 = [&](const Interval& x) { return u.centred(x, 2); };
 
-  // S = (max u − min u)/2 over the extrema (the roots of u').
+  // S = (max u − min u)/2 over the extrema (the roots of u'): max u lies between the largest lower
+  // end of u over them (u at some point) and the largest upper end (u at the maximum), so does
+  // every flat's.
   auto extreme = [&](bool top) {
     mpfr lo = values[0].lower(), hi = values[0].upper();
     for (const Interval& v : values) {
@@ -511,9 +521,10 @@ FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rationa
   const Interval G = of(gamma, bits) * S, B = of(beta, bits) * S;
   auto nu = [&](const Interval& x) { return G + u(x, 0); };
 
-  // Contact boundaries: one on each monotone arc of u whose extrema have certain opposite signs
-  // of ν. A minimum with ν undecided (n touching zero, as at γ = −min w) is taken as contact:
-  // max(ν, 0) − ν ≤ δ there, and δ widens the areas below.
+  // Contact boundaries: one on each monotone arc of u whose ends (extrema, flats) have certain
+  // opposite signs of ν. A minimum with ν undecided (n touching zero, as at γ = −min w) is taken
+  // as contact: max(ν, 0) − ν ≤ δ there, and δ widens the areas below. Contact exists where ν > 0
+  // at one of them, none where ν < 0 at all (the maximum is among them).
   std::vector<Event> events;
   std::vector<Sign> at_extremum;
   mpfr delta = 0;
@@ -523,10 +534,11 @@ FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rationa
     Sign sv = v.sign();
     if (sv == Sign::zero) sv = Sign::undecided;
     if (sv == Sign::undecided) {
-      if (extrema[j].slope != Sign::positive) throw Undecided("undecided at this precision: " + where + ": n touches zero at a maximum");
+      if (extrema[j].slope != Sign::positive)
+        throw Undecided("undecided at this precision: " + where + ": n touches zero at a maximum or a flat");
       delta = std::max(delta, mpfr(-v.lower()));
     }
-    any_contact = any_contact || (extrema[j].slope == Sign::negative && sv == Sign::positive);
+    any_contact = any_contact || sv == Sign::positive;
     at_extremum.push_back(sv);
   }
   if (!any_contact) {
