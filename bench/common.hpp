@@ -105,5 +105,6 @@ void register_speed_mpfr();
 void register_speed_bin50();
 void register_accuracy();
 void register_curved();
+void register_certify();
 
 }  // namespace vibrofric::bench

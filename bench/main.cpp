@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   register_speed_bin50();
   register_speed_mpfr();
   register_curved();
+  register_certify();
 
   benchmark::Initialize(&rest_argc, rest.data());
   if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 2;

@@ -71,7 +71,8 @@ Interval bracketed_root(F f, DF df, mpfr lo, mpfr hi, mpfr_prec_t bits, const st
       mid = midpoint(mid, side < 0 ? lo : hi, bits);
       at = f(point(mid, bits)).sign();
     }
-    if (decide(f(point(mid, bits)), what + ": the sign inside its bracket") == Sign::positive)
+    if (at == Sign::undecided || at == Sign::zero) throw Undecided(what + ": the sign inside its bracket");
+    if (at == Sign::positive)
       lo = mid;
     else
       hi = mid;

@@ -1,0 +1,61 @@
+// Speed of certified values (api/certify.hpp, issue targets: a certified double within 10× the
+// guaranteed double, a certified 50-digit sine within 4× the uncertified one), measured beside
+// the paths they certify, on the same inputs in the same run:
+//   speed/<wave>/certified_double     evaluate(…, float64) of one point and its certificate
+//   speed/<wave>/certified_mpfr_50    the same at 50 digits (against guaranteed_mpfr_50)
+// for an enclosed wave (sine, power:3: MPFI), an exact one (triangle: GMP rationals) and a
+// Fourier series of three harmonics (its shape, built once per precision, outside the loop after
+// the first point).
+#include "common.hpp"
+#include "vibrofric/api/certify.hpp"
+#include "vibrofric/api/evaluate.hpp"
+
+namespace vibrofric::bench {
+namespace {
+
+WaveSpec certified_wave(const std::string& wave) {
+  if (wave != "fourier:three") return parse_wave(wave);
+  WaveSpec f;
+  f.kind = WaveKind::fourier;
+  f.name = wave;
+  f.harmonics = {{1, "0", "1"}, {2, "0.1", "-0.05"}, {3, "0", "0.333"}};
+  return f;
+}
+
+// One point per iteration, cycling through speed_inputs(): evaluate() in double (digits 0) or
+// at `digits`, then its certificate (certify) or nothing (the uncertified side, for the series:
+// the catalogue waves have theirs in speed_double.cpp and speed_mpfr.cpp).
+void BM_point(benchmark::State& state, const std::string& wave, int digits, bool certify) {
+  const WaveSpec spec = certified_wave(wave);
+  const Certifier certifier(spec, ProfileSpec{});
+  std::vector<std::vector<Point>> in;
+  for (const Input& p : speed_inputs()) in.push_back({Point{shortest_decimal(p.beta), shortest_decimal(p.gamma)}});
+  const Precision precision{digits ? NumberType::mpfr : NumberType::float64, digits};
+  BatchOptions options;
+  options.threads = 1;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto out = evaluate(spec, Quantity::mu, in[i], precision, options);
+    if (certify && !certifier(Quantity::mu, in[i].front(), precision, out.front()).correctly_rounded)
+      state.SkipWithError("a value not proven correctly rounded");
+    benchmark::DoNotOptimize(out.data());
+    if (++i == in.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+}  // namespace
+
+void register_certify() {
+  for (const std::string wave : {"sine", "power:3", "triangle", "fourier:three"})
+    for (int digits : {0, 50}) {
+      const std::string name = "speed/" + wave + "/certified_" + (digits ? "mpfr_50" : "double");
+      speed_settings(benchmark::RegisterBenchmark(name.c_str(), BM_point, wave, digits, true));
+    }
+  for (int digits : {0, 50}) {
+    const std::string name = std::string("speed/fourier:three/guaranteed_") + (digits ? "mpfr_50" : "double");
+    speed_settings(benchmark::RegisterBenchmark(name.c_str(), BM_point, "fourier:three", digits, false));
+  }
+}
+
+}  // namespace vibrofric::bench
