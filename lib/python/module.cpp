@@ -626,13 +626,13 @@ element's with its index ('at index (2,): ...'); never returns NaN for a failure
 nan_on_error=True (scipy's convention): then a failing element is NaN (None in object arrays)
 and the others answer.
 
-certify=True ('sine' and the piecewise-linear waves 'triangle', 'sawtooth-right',
-'sawtooth-left', 'square', 'power:1' and samples, on the flat punch): returns (lo, hi) as
-fractions.Fraction (arrays of them for array arguments), an enclosure of the exact value
-narrowed until it proves that the value computed at type/digits is its correct rounding (a
-value that is not raises vibrofric.SolverError). For the piecewise-linear waves lo == hi, the
-exact rational, and float(lo) is the correctly rounded double; for the sine lo < hi are the
-ends of an interval computation. Other waves and profiles raise ValueError.
+certify=True (every wave on the flat punch: the sine, 'power:P', Fourier series, and the
+piecewise-linear 'triangle', 'sawtooth-right', 'sawtooth-left', 'square', 'power:1' and samples):
+returns (lo, hi) as fractions.Fraction (arrays of them for array arguments), an enclosure of the
+exact value narrowed until it proves that the value computed at type/digits is its correct
+rounding (a value that is not raises vibrofric.SolverError). For the piecewise-linear waves
+lo == hi, the exact rational, and float(lo) is the correctly rounded double; for the others
+lo < hi are the ends of an interval computation. Curved profiles raise ValueError.
 )doc";
 
 constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
