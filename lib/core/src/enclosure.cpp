@@ -1,4 +1,4 @@
-// Certified enclosures for the harmonic wave (enclosure.hpp).
+// Certified enclosures of the sine, power:p and Fourier series (enclosure.hpp).
 #include "vibrofric/core/enclosure.hpp"
 
 #include <algorithm>
