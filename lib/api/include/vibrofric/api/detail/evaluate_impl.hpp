@@ -274,8 +274,8 @@ template <class Real>
 bool own_rung_may_certify(WaveCache<Real>& waves, Quantity q, const Point& p, const Options& opt) {
   if (q != Quantity::mu) return true;
   try {
-    // β that is not positive here (1e-400 underflows in double, not in long double) gets its
-    // message from this type's rung, never a value from a wider one.
+    // β that is not positive here (1e-400 underflows in double, not in long double) goes to this
+    // type's rung, whose UnderflowError escalates: it is answered as in mpfr.
     const Real beta = point_beta<Real>(p);
     return !(beta > 0 && beta < waves.contact(p, false, opt).beta_c());
   } catch (const std::exception&) {
