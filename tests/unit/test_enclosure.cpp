@@ -212,6 +212,7 @@ TEST(FourierEnclosure, HoldsTheSolversValuesAndEveryStickPhase) {
     EXPECT_TRUE(holds(e.retained_area, r.retained_area, slack)) << at;
     EXPECT_TRUE(holds(e.lost_area, r.lost_area, slack)) << at;
     EXPECT_TRUE(holds(e.minimum, wave->minimum(), slack)) << at;
+    EXPECT_TRUE(holds(e.scale, wave->normalisation().scale, slack)) << at << ": the scale S";
     EXPECT_EQ(e.jumping, r.jumping) << at;
     ASSERT_EQ(e.sticks.size(), r.stick_phases.size()) << at;
     // The solver counts onsets in [0, 1) from its sweep's start; the enclosure's from its cut.

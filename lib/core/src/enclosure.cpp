@@ -522,6 +522,16 @@ FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rationa
   const Interval G = of(gamma, bits) * S, B = of(beta, bits) * S;
   auto nu = [&](const Interval& x) { return G + u(x, 0); };
 
+  // The root on the arc from ends[j] to the next (a period on after the last), by root(lo, hi),
+  // back in [cut, cut + 1).
+  auto on_circle = [&](const std::vector<Root>& ends, std::size_t j, auto root) {
+    const std::size_t k = (j + 1) % ends.size();
+    Interval x = root(ends[j].x.upper(), (ends[k].x + Interval::integer(k == 0 ? 1 : 0, bits)).lower());
+    if (k == 0 && x.lower() >= cut + 1) x = x - Interval::integer(1, bits);
+    if (x.upper() >= cut + 1) throw Undecided("undecided at this precision: " + where + ": an event at the cut");
+    return x;
+  };
+
   // Contact boundaries: one on each monotone arc of u whose ends (extrema, flats) have certain
   // opposite signs of ν. A minimum with ν undecided (n touching zero, as at γ = −min w) is taken
   // as contact: max(ν, 0) − ν ≤ δ there, and δ widens the areas below. Contact exists where ν > 0
@@ -552,11 +562,10 @@ FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rationa
     const std::size_t k = (j + 1) % extrema.size();
     const Sign a = at_extremum[j], b = at_extremum[k];
     if (a == Sign::undecided || b == Sign::undecided || a == b) continue;
-    const mpfr lo = extrema[j].x.upper(), hi = (extrema[k].x + Interval::integer(k == 0 ? 1 : 0, bits)).lower();
     const bool rising = a == Sign::negative;
-    Interval x = arc_root(nu, f1, rising, lo, hi, bits, where + ": a contact boundary");
-    if (k == 0 && x.lower() >= cut + 1) x = x - Interval::integer(1, bits);
-    if (x.upper() >= cut + 1) throw Undecided("undecided at this precision: " + where + ": a contact boundary at the cut");
+    const Interval x = on_circle(extrema, j, [&](const mpfr& lo, const mpfr& hi) {
+      return arc_root(nu, f1, rising, lo, hi, bits, where + ": a contact boundary");
+    });
     events.push_back({rising ? Event::up : Event::down, x, -(B * x)});
   }
   e.jumping = !events.empty();
@@ -566,11 +575,10 @@ FourierEnclosure enclose_fourier(const FourierShape& shape, const exact::Rationa
     const std::size_t k = (j + 1) % d.bends.size();
     const Sign a = decide(d.slopes[j] - B, "beta against a local extremum of n'"), b = decide(d.slopes[k] - B, "beta against a local extremum of n'");
     if (a == b) continue;
-    const mpfr lo = d.bends[j].x.upper(), hi = (d.bends[k].x + Interval::integer(k == 0 ? 1 : 0, bits)).lower();
-    Interval x = arc_root([&](const Interval& y) { return u(y, 1) - B; }, f2, a == Sign::negative, lo, hi, bits,
-                          where + ": a turning point (n' = beta)");
-    if (k == 0 && x.lower() >= cut + 1) x = x - Interval::integer(1, bits);
-    if (x.upper() >= cut + 1) throw Undecided("undecided at this precision: " + where + ": a turning point at the cut");
+    const Interval x = on_circle(d.bends, j, [&](const mpfr& lo, const mpfr& hi) {
+      return arc_root([&](const Interval& y) { return u(y, 1) - B; }, f2, a == Sign::negative, lo, hi, bits,
+                      where + ": a turning point (n' = beta)");
+    });
     const Interval v = nu(x);
     const Sign sv = v.sign();
     if (sv == Sign::negative) continue;
