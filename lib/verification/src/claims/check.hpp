@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/ladder.hpp"
+#include "vibrofric/core/enclosure.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/solver.hpp"
@@ -235,6 +237,38 @@ inline std::vector<Real> gammas_figure() {
   return reals({"1", "0.8", "0.6", "0.4", "0.2", "0", "-0.2", "-0.4", "-0.6", "-0.8", "-0.999"});
 }
 
+// The claims' enclosed waves (sine, power:p): at rational β, γ, with the bits of `digits` plus 40,
+// doubled where a comparison is undecided (enclosure.hpp).
+struct Enclosed {
+  const char* name;
+  std::optional<exact::Rational> p;  // power:p; none: the sine
+  mpfr_prec_t bits;
+  certified::SineEnclosure at(const exact::Rational& beta, const exact::Rational& gamma) const {
+    for (mpfr_prec_t b = bits; b <= max_certify_bits; b *= 2) {
+      try {
+        return p ? certified::enclose_power(*p, beta, gamma, b) : certified::enclose_sine(beta, gamma, b);
+      } catch (const certified::Undecided&) {
+      }
+    }
+    throw SolverError(std::string(name) + ", beta = " + beta.str() + ", gamma = " + gamma.str() + ": no enclosure decides it");
+  }
+};
+inline std::vector<Enclosed> enclosed_waves(int digits) {
+  const auto bits = static_cast<mpfr_prec_t>(digits * 3.3219280948873623) + 40;
+  return {{"sine", std::nullopt, bits}, {"power:2", exact::Rational(2), bits}, {"power:3", exact::Rational(3), bits}};
+}
+// x ∈ a and x ∈ b for some x, both narrower than 10^−digits relative to max(1, |a|): the enclosures
+// prove |a − b| below 2·10^−digits.
+inline bool overlap_within(const Interval& a, const Interval& b, int digits) {
+  const mpfr tol = pow(mpfr(10), -digits) * std::max(mpfr(1), abs(a.upper()));
+  return intersection(a, b).has_value() && a.width() < tol && b.width() < tol;
+}
+
+inline exact::Rational rational_of(const mpfr& x) {
+  exact::Rational q;
+  mpfr_get_q(q.backend().data(), x.backend().data());
+  return q;
+}
 // Check functions, one per catalogue entry (exact.cpp, power.cpp, harmonic.cpp, static.cpp, curved.cpp).
 ClaimCheck eq6(int digits);
 ClaimCheck eq13(int digits);

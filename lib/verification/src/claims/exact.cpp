@@ -3,8 +3,6 @@
 // the solver at the reference point the claim names; then all but the β_c table again, certified
 // (claims.hpp): exactly in rationals (core/exact.hpp) and by enclosures (core/enclosure.hpp).
 #include "check.hpp"
-#include "vibrofric/api/certify.hpp"
-#include "vibrofric/core/enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 
@@ -38,42 +36,10 @@ void certify_exactly(Check& c, const std::vector<const char*>& betas, const std:
     c.certified("exact rationals (core/exact.hpp): every case of the grid, its decimals taken exactly, equals the closed form");
 }
 
-// The claims' enclosed waves (sine, power:p): at rational β, γ, with the bits of `digits` plus 40,
-// doubled where a comparison is undecided (enclosure.hpp).
-struct Enclosed {
-  const char* name;
-  std::optional<Q> p;  // power:p; none: the sine
-  mpfr_prec_t bits;
-  certified::SineEnclosure at(const Q& beta, const Q& gamma) const {
-    for (mpfr_prec_t b = bits; b <= max_certify_bits; b *= 2) {
-      try {
-        return p ? certified::enclose_power(*p, beta, gamma, b) : certified::enclose_sine(beta, gamma, b);
-      } catch (const certified::Undecided&) {
-      }
-    }
-    throw SolverError(std::string(name) + ", beta = " + beta.str() + ", gamma = " + gamma.str() + ": no enclosure decides it");
-  }
-};
-std::vector<Enclosed> enclosed_waves(int digits) {
-  const auto bits = static_cast<mpfr_prec_t>(digits * 3.3219280948873623) + 40;
-  return {{"sine", std::nullopt, bits}, {"power:2", Q(2), bits}, {"power:3", Q(3), bits}};
-}
 const std::pair<const char*, exact::Wave (*)()> kExactWaves[] = {
     {"triangle", exact::triangle}, {"sawtooth-right", exact::sawtooth_right}, {"sawtooth-left", exact::sawtooth_left},
     {"square", exact::square}};
 
-// x ∈ a and x ∈ b for some x, both narrower than 10^−digits relative to max(1, |a|): the enclosures
-// prove |a − b| below 2·10^−digits.
-bool overlap_within(const Interval& a, const Interval& b, int digits) {
-  const mpfr tol = pow(mpfr(10), -digits) * std::max(mpfr(1), abs(a.upper()));
-  return intersection(a, b).has_value() && a.width() < tol && b.width() < tol;
-}
-
-Q rational_of(const mpfr& x) {
-  Q q;
-  mpfr_get_q(q.backend().data(), x.backend().data());
-  return q;
-}
 }  // namespace
 
 ClaimCheck eq6(int digits) {
