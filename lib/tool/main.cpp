@@ -75,6 +75,13 @@ const char* const kWaves =
     "  \"File formats\"). User waves are normalised to zero mean and max - min = 2\n"
     "  (--diagnostics shows how).\n";
 
+const char* const kRig =
+    "rig dynamics (model.md): --kappa K --omega W [--zeta Z] replace the paper's quasi-static spring by\n"
+    "  a body of mass m on a system spring k_s (damper c): K = k_s/k_x, W = sqrt(k_x/m)/(2 pi f),\n"
+    "  Z = c/(2 sqrt(m k_s)); flat punch; sine, Fourier and piecewise-linear waves. mu prints the\n"
+    "  stick, slip and flight fractions, the body's amplitude, the largest backward slip and the\n"
+    "  largest Floquet multiplier after the value.\n";
+
 const char* const kProfiles =
     "profiles P (model.md MDR): flat (the flat punch), sphere, cone, power:N (N >= 1, sigma = x^N),\n"
     "  wearflat:LAMBDA (sphere with a wear flat, LAMBDA = b^2/(R A) > 0), profile:FILE (lines\n"
@@ -131,6 +138,8 @@ struct Flags {
   unsigned threads = 0;
   std::optional<int> points, harmonics;
   std::optional<std::string> output, claim;
+  // Rig dynamics (model.md): κ, Ω, ζ as typed
+  std::optional<std::string> kappa, omega, zeta;
   std::map<std::string, std::string> texts;  // as typed, by flag name: the flags without a reader
 };
 
@@ -297,6 +306,25 @@ void profile_named(Flags& f, const std::string& t) {
   f.profile_text = t;
 }
 void format_of_point(Flags& f, const std::string& t) { f.format = format_named(t); }
+// Rig dynamics (model.md, "Rig dynamics"): the body's mass and the apparatus' stiffness.
+const std::vector<FlagSpec> kRigFlags{
+    {"kappa", "K", "rig dynamics: system stiffness over contact stiffness, k_s/k_x > 0 (with --omega)", "quasi-static (none)",
+     [](Flags& f, const std::string& t) {
+       check_decimal(t, "--kappa");
+       f.kappa = t;
+     }},
+    {"omega", "W", "rig dynamics: contact frequency over excitation frequency, sqrt(k_x/m)/(2 pi f) > 0 (with --kappa)", "",
+     [](Flags& f, const std::string& t) {
+       check_decimal(t, "--omega");
+       f.omega = t;
+     }},
+    {"zeta", "Z", "rig dynamics: damping ratio of the system spring, c/(2 sqrt(m k_s)) >= 0", "0",
+     [](Flags& f, const std::string& t) {
+       check_decimal(t, "--zeta");
+       f.zeta = t;
+     }},
+};
+
 const FlagSpec kCertifyFlag{
     "certify", "", "flat punch: print the exact value (piecewise-linear waves) or an enclosure (sine, "
                    "power:P, Fourier series) and prove that the printed value is its correct rounding "
@@ -340,15 +368,15 @@ const std::vector<CommandSpec>& commands() {
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
         {"format", "F", "text | csv | json", "text", format_of_point},
         kCertifyFlag},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
-       std::string(kWaves) + kProfiles,
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags},
+       std::string(kWaves) + kProfiles + kRig,
        run_mu},
       {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
        {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", decimal_beta},
         {"profile", "P", "flat only: in a curved contact the outer springs always jump", "flat", profile_named},
         {"format", "F", "text | csv | json", "text", format_of_point},
         kCertifyFlag},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags},
        kWaves,
        run_psi},
       {"sweep", "sweep --wave W --beta RANGE --gamma G1,G2,...|RANGE [--profile P]: rows streamed in order",
@@ -370,8 +398,8 @@ const std::vector<CommandSpec>& commands() {
          [](Flags& f, const std::string& t) { f.threads = static_cast<unsigned>(integer(t, "--threads", 0, max_threads)); }},
         {"format", "F", "csv | json", "csv", format_of_rows},
         kCertifyFlag},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
-       std::string(kWaves) + kProfiles,
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags},
+       std::string(kWaves) + kProfiles + kRig,
        run_sweep},
       {"physical", "physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA] --v0 M/S --f HZ\n"
                    "                          (--A M | --unit U) (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",
@@ -563,6 +591,21 @@ BatchOptions batch_options(const Flags& f) {
   o.profile = f.profile;
   o.escalate = !f.no_escalate;
   o.solver = f.solver;
+  if (f.kappa || f.omega || f.zeta) {
+    if (f.command == "psi")
+      throw InputError("--kappa, --omega, --zeta do not apply to psi: Psi (Eq. 12) belongs to the quasi-static model (use mu)");
+    if (!f.kappa || !f.omega)
+      throw InputError(std::string("missing --") + (f.kappa ? "omega" : "kappa") +
+                       ": rig dynamics needs --kappa and --omega (--zeta is optional)");
+    if (f.certify) throw InputError("--certify: certified values exist for the quasi-static model only, not with --kappa/--omega");
+    if (f.no_escalate) throw InputError("--no-escalate: rig dynamics is always computed in mpfr at two precisions");
+    o.rig = RigSpec{*f.kappa, *f.omega, f.zeta.value_or("0")};
+    check_rig(*o.rig);
+    if (o.profile.kind != ProfileKind::flat)
+      throw InputError("--kappa/--omega with --profile " + detail::visible(f.profile_text.value_or("")) +
+                       ": the springs of a curved contact share the body, so the MDR row does not decouple "
+                       "(rig dynamics: the flat punch only)");
+  }
   return o;
 }
 
@@ -647,6 +690,36 @@ std::string rounding_name(const Precision& p) {
                                     : "to the nearest " + number_type_name(p.type);
 }
 
+// mu with --kappa/--omega: the value, then the periodic state's fractions and sizes.
+int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, const Precision& precision, Format format) {
+  const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver);
+  char floquet[32];
+  std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
+  const std::vector<std::pair<std::string, std::string>> fields{
+      {"stick_fraction", r.stick_fraction}, {"slip_fraction", r.slip_fraction},
+      {"backward_slip_fraction", r.backward_fraction}, {"flight_fraction", r.flight_fraction},
+      {"amplitude", r.amplitude}, {"largest_backward_slip", r.largest_backward_slip},
+      {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error}};
+  if (format == Format::text) {
+    std::cout << r.mu << '\n';
+    for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
+    return 0;
+  }
+  std::vector<std::string> names{"wave", "beta", "gamma", "kappa", "omega", "zeta", "mu_over_mu0"};
+  std::vector<std::string> values{wave.name, p.beta, p.gamma, opt.rig->kappa, opt.rig->omega, opt.rig->zeta, r.mu};
+  for (const auto& [name, value] : fields) {
+    names.push_back(name);
+    values.push_back(value);
+  }
+  if (format == Format::csv) {
+    write_csv_row(names);
+    write_csv_row(values);
+  } else {
+    std::cout << json_record(names, values).dump(1) << '\n';
+  }
+  return 0;
+}
+
 int run_point(const Flags& f, Quantity q) {
   const WaveSpec wave = read_wave(f);
   const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : std::string()};
@@ -658,6 +731,7 @@ int run_point(const Flags& f, Quantity q) {
   const Format format = f.format.value_or(Format::text);
   const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   const Precision precision = precision_of(f);
+  if (opt.rig) return print_rig(wave, p, opt, precision, format);
   const std::string value = evaluate(wave, q, {p}, precision, opt).front();
   std::optional<Certificate> cert;
   if (certifier) cert = certified(*certifier, q, p, precision, value);
@@ -750,6 +824,7 @@ int run_sweep(const Flags& f) {
   if (curved) names.push_back("profile");
   names.push_back("beta");
   if (q == Quantity::mu) names.push_back("gamma");
+  if (opt.rig) names.insert(names.end(), {"kappa", "omega", "zeta"});
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   if (certifier)
@@ -783,6 +858,7 @@ int run_sweep(const Flags& f) {
     if (curved) r.push_back(opt.profile.name);
     r.push_back(pt.beta);
     if (q == Quantity::mu) r.push_back(pt.gamma);
+    if (opt.rig) r.insert(r.end(), {opt.rig->kappa, opt.rig->omega, opt.rig->zeta});
     r.push_back(value.text);
     if (certifier)
       for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), certifier->encloses()))

@@ -2107,6 +2107,57 @@ def certify_tests():
         ["maybe"], ["certify"])
 
 
+def rig_tests():
+    """Rig dynamics (--kappa, --omega, --zeta; model.md): refusals, and the printed digits against the
+    same algorithm at much higher precision."""
+    tri = ["mu", "--wave", "tri", "--beta", "2", "--gamma", "-0.4"]
+    bad("rig: psi has no dynamics", ["psi", "--wave", "sine", "--beta", "1", "--kappa", "1", "--omega", "2"],
+        [], ["psi", "quasi-static"])
+    bad("rig: --kappa without --omega", tri + ["--kappa", "1"], [], ["--omega"])
+    bad("rig: --zeta alone", tri + ["--zeta", "0.1"], [], ["--kappa"])
+    bad("rig: kappa = 0", tri + ["--kappa", "0", "--omega", "1"], ["0"], ["kappa", "> 0"])
+    bad("rig: omega < 0", tri + ["--kappa", "1", "--omega", "-2"], ["-2"], ["omega", "> 0"])
+    bad("rig: zeta < 0", tri + ["--kappa", "1", "--omega", "2", "--zeta", "-0.1"], ["-0.1"], ["zeta", ">= 0"])
+    bad("rig: zeta nan", tri + ["--kappa", "1", "--omega", "2", "--zeta", "nan"], ["nan"], ["zeta"])
+    bad("rig: power:P has no closed-form motion", ["mu", "--wave", "power:3", "--beta", "1", "--gamma", "0.5",
+                                                   "--kappa", "1", "--omega", "2"], ["power:3"], ["closed form"])
+    bad("rig: a curved profile", tri + ["--kappa", "1", "--omega", "2", "--profile", "sphere"], ["sphere"],
+        ["does not decouple"])
+    bad("rig: with --certify", tri + ["--kappa", "1", "--omega", "2", "--certify"], [], ["--certify"])
+    bad("rig: no contact", ["mu", "--wave", "sine", "--beta", "1", "--gamma", "-1", "--kappa", "1", "--omega", "2"],
+        ["-1"], ["gamma"])
+
+    def digits_against_more_digits():
+        for args in (["--wave", "tri", "--beta", "2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10", "--zeta", "0.1"],
+                     ["--wave", "sine", "--beta", "0.5", "--gamma", "2", "--kappa", "1", "--omega", "2", "--zeta", "0.02"],
+                     ["--wave", "square", "--beta", "1.2", "--gamma", "1.25", "--kappa", "0.6", "--omega", "4", "--zeta", "0.05"],
+                     ["--wave", "sine", "--beta", "1", "--gamma", "0.5", "--kappa", "1", "--omega", "1"]):
+            ref = F(ok_run(["mu"] + args + ["--digits", "60"]).splitlines()[0])
+            dbl = ok_run(["mu"] + args + ["--type", "double"]).splitlines()
+            if float(dbl[0]) != float(ref):
+                raise Fail("mu %s --type double: %s, the 60-digit value rounds to %r" % (" ".join(args), dbl[0], float(ref)))
+            d20 = ok_run(["mu"] + args + ["--digits", "20"]).splitlines()[0]
+            expect_digits(d20, ref, 20, "mu %s --digits 20" % " ".join(args))
+            out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+            total = F(out["stick_fraction"]) + F(out["slip_fraction"]) + F(out["flight_fraction"])
+            if abs(total - 1) > F("1e-15") or out["mu_over_mu0"] != d20 or not 0 <= float(out["floquet_multiplier"]) < 1:
+                raise Fail("mu %s --format json: %r" % (" ".join(args), out))
+    case("rig: double and 20 digits are the 60-digit value rounded; fractions add up to 1", digits_against_more_digits)
+
+    def sweep_rows():
+        rows = ok_run(["sweep", "--wave", "tri", "--beta", "1:2:2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10",
+                       "--zeta", "0.1", "--type", "double"]).splitlines()
+        if rows[0] != "wave,beta,gamma,kappa,omega,zeta,mu_over_mu0" or len(rows) != 3:
+            raise Fail("sweep with --kappa: %r" % rows)
+        for row in rows[1:]:
+            f = row.split(",")
+            one = ok_run(["mu", "--wave", "tri", "--beta", f[1], "--gamma", "-0.4", "--kappa", "3", "--omega", "10",
+                          "--zeta", "0.1", "--type", "double"]).splitlines()[0]
+            if f[3:6] != ["3", "10", "0.1"] or f[6] != one:
+                raise Fail("sweep row %r against mu %s" % (row, one))
+    case("rig: sweep rows name the rig and equal mu's values", sweep_rows)
+
+
 def collect():
     bad_input_tests()
     format_tests()
@@ -2118,6 +2169,7 @@ def collect():
     claim_detail_tests()
     range_and_fit_detail_tests()
     certify_tests()
+    rig_tests()
 
 
 collect()

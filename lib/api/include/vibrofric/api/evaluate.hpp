@@ -17,6 +17,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/api/rig.hpp"
 #include "vibrofric/core/solver.hpp"
 
 namespace vibrofric {
@@ -74,6 +75,9 @@ struct BatchOptions {
   // evaluate_stream: a point's error (bad input, no contact, the solver's) goes to the sink in
   // StreamValue::error, and the points after it are computed, instead of ending the stream.
   bool deliver_errors = false;
+  // Rig dynamics (rig.hpp, model.md): μ̄/μ0 of a body of mass m on a system spring instead of the
+  // paper's quasi-static model (none: the paper's model, unchanged). Flat punch and μ only.
+  std::optional<RigSpec> rig;
 };
 
 // Formatted values, in the order of `points`. Throws the error of the first failing point

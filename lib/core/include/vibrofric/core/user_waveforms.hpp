@@ -171,6 +171,9 @@ class FourierSeries final : public Waveform<Real> {
   bool has_antiderivative() const override { return true; }
   Real antiderivative(std::size_t, const Real& phi) const override { return derivative(phi, -1); }
   unsigned max_harmonic() const { return max_k_; }
+  // w = Σ_k a_k cos 2πkφ + b_k sin 2πkφ, k = 1 … max_harmonic() (normalised).
+  const Real& cos_coefficient(unsigned k) const { return a_[k]; }
+  const Real& sin_coefficient(unsigned k) const { return b_[k]; }
 
  private:
   // d^order w / dφ^order, order ∈ {−1 (antiderivative), 0, 1, 2, 3}; cos/sin of 2πkφ by the

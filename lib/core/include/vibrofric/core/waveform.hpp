@@ -380,6 +380,7 @@ class PiecewiseLinear : public Waveform<Real> {
     const Real d = phi - p.begin;
     return abs(p.slope) * d * d * rounded / 2 + abs(value) * (d_exact ? 1 : 2);
   }
+  const Piece& piece(std::size_t i) const { return pieces_[i]; }
   std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
     const Piece& p = pieces_[i];
     if (p.slope == 0) return std::nullopt;

@@ -416,10 +416,28 @@ class PointEvaluator {
   // precision that decides its `digits` digits.
   Real value(const Point& p) {
     check_(p);
+    if (options_.rig) return rig(p);
     if constexpr (is_runtime_precision_v<Real>)
       return evaluate_point<Real>(waves_, spec_, q_, p, digits_, options_.solver);
     else
       return evaluate_fixed(waves_, wider_, fallback_, spec_, q_, p, options_);
+  }
+  // Rig dynamics: the value decided in mpfr, rounded to the type (exactly its value for fixed types).
+  Real rig(const Point& p) const {
+    if (q_ == Quantity::psi)
+      throw InputError("rig dynamics gives mu only: Psi (Eq. 12) belongs to the quasi-static model");
+    if (options_.profile.kind != ProfileKind::flat)
+      throw InputError("rig dynamics with profile " + options_.profile.name +
+                       ": the springs of a curved contact share the body, so the MDR row does not decouple "
+                       "(the flat punch only)");
+    Precision precision{NumberType::mpfr, digits_};
+    if constexpr (std::is_same_v<Real, double>) precision.type = NumberType::float64;
+    if constexpr (std::is_same_v<Real, long double>) precision.type = NumberType::float80;
+    if constexpr (std::is_same_v<Real, bin50>) precision.type = NumberType::bin50;
+    if constexpr (std::is_same_v<Real, bin100>) precision.type = NumberType::bin100;
+    const mpfr v = rig_value(spec_, p, *options_.rig, precision, options_.solver);
+    if constexpr (is_runtime_precision_v<Real>) return v;
+    else return rounded<Real>(v);
   }
   StreamValue operator()(const Point& p) {
     const Real v = value(p);

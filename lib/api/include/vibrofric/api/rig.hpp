@@ -1,0 +1,51 @@
+// Rig dynamics at a requested precision (model.md, "Rig dynamics: mass and system stiffness"):
+// μ̄/μ0 of the periodic state of a body of mass m on a system spring, with what a tribologist
+// checks of it, from decimal inputs to decimal text. The core's RigSolver (core/dynamics.hpp)
+// computes in mpfr at two working precisions; the printed digits are those both agree on.
+#pragma once
+#include <string>
+
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/core/numbers.hpp"
+#include "vibrofric/core/solver.hpp"
+
+namespace vibrofric {
+
+struct Point;
+struct Precision;
+struct BatchOptions;
+
+// The rig's dimensionless parameters as typed: κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)).
+struct RigSpec {
+  std::string kappa, omega, zeta = "0";
+};
+
+// One point's periodic state. Each number is printed with the significant digits (at most the
+// request's) on which the two working precisions agree.
+struct RigReport {
+  std::string mu;  // μ̄/μ0, as evaluate() prints it
+  std::string stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // of the period
+  std::string amplitude;              // (max − min)/2 of X − βφ, in units of μ0 k_z A/k_x
+  std::string largest_backward_slip;  // of the contact point in one phase, same units
+  std::string relative_error;         // estimate: the two precisions apart
+  double floquet = 0;                 // largest modulus of the one-period map's multipliers
+  int working_digits = 0;             // the higher of the two precisions
+};
+
+// κ, Ω, ζ checked (finite decimals, κ > 0, Ω > 0, ζ ≥ 0): InputError quoting the text otherwise.
+void check_rig(const RigSpec& rig);
+
+// InputError for bad input, Ψ, a curved profile (the MDR springs share the body: the row does
+// not decouple) or a wave without a closed-form motion (power:p); SolverError where no periodic
+// state is found, two are, or the precisions do not agree.
+RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+                       const Options& solver = {});
+
+namespace detail {
+// The value evaluate() prints for `precision` under options.rig: correctly rounded to the type (or
+// to the digits for mpfr) wherever the two precisions' difference is a true bound of the error.
+mpfr rig_value(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+               const Options& solver, RigReport* report = nullptr);
+}  // namespace detail
+
+}  // namespace vibrofric

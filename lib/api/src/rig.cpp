@@ -1,0 +1,147 @@
+// Rig dynamics from decimal text (rig.hpp): the core's RigSolver in mpfr at two working
+// precisions, printed where they agree.
+#include "vibrofric/api/rig.hpp"
+
+#include <cmath>
+
+#include "vibrofric/api/decimal.hpp"
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "vibrofric/core/dynamics.hpp"
+#include "vibrofric/core/exact.hpp"
+
+namespace vibrofric {
+
+namespace {
+
+exact::Rational rig_number(const std::string& text, const char* name, bool zero_allowed) {
+  const exact::Rational v = exact::decimal(text, name);
+  if (zero_allowed ? v < 0 : v <= 0)
+    throw InputError(std::string(name) + " = " + detail::visible(text) + ": expected a decimal " +
+                     (zero_allowed ? ">= 0" : "> 0"));
+  return v;
+}
+
+// k with Ω²κ = k² exactly (the undamped slip resonance of harmonic k), else 0.
+unsigned resonance(const RigSpec& rig) {
+  const exact::Rational q = rig_number(rig.omega, "omega", false) * rig_number(rig.omega, "omega", false) *
+                            rig_number(rig.kappa, "kappa", false);
+  if (rig_number(rig.zeta, "zeta", true) != 0) return 0;
+  if (denominator(q) != 1) return 0;
+  const boost::multiprecision::mpz_int n = numerator(q);
+  const boost::multiprecision::mpz_int k = sqrt(n);
+  if (k * k != n || k > 1000000) return 0;
+  return static_cast<unsigned>(k);
+}
+
+struct Solved {
+  mpfr mu, stick, slip, backward, flight, amplitude, back, relative_error;
+  double floquet;
+};
+
+Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsigned resonant, int digits,
+                const Options& opt) {
+  PrecisionScope scope(static_cast<unsigned>(digits));
+  const auto w = make_waveform<mpfr>(wave);
+  const mpfr beta = p.beta_value ? mpfr(*p.beta_value) : parse_real<mpfr>(p.beta, "beta");
+  const mpfr gamma = p.gamma_value ? mpfr(*p.gamma_value) : parse_real<mpfr>(p.gamma, "gamma");
+  const RigParameters<mpfr> params{mpfr(rig.kappa), mpfr(rig.omega), mpfr(rig.zeta), resonant};
+  const RigResult<mpfr> r = solve_rig(*w, beta, gamma, params, opt);
+  return {r.mu, r.stick_fraction, r.slip_fraction, r.backward_fraction, r.flight_fraction, r.amplitude,
+          r.largest_backward_slip, r.relative_error, r.floquet};
+}
+
+// The digits of x (at most `most`) on which a and b agree.
+std::string agreed(const mpfr& a, const mpfr& b, int most) {
+  if (a == 0 && b == 0) return "0";
+  for (int d = most; d > 1; --d)
+    if (format_significant(a, d) == format_significant(b, d)) return format_significant(b, d);
+  return format_significant(b, 1);
+}
+
+// Whether every value of [lo, hi] prints (or rounds to the type) alike.
+bool decides(const mpfr& lo, const mpfr& hi, const Precision& precision, int digits) {
+  switch (precision.type) {
+    case NumberType::float64: return detail::rounded<double>(lo) == detail::rounded<double>(hi);
+    case NumberType::float80: return detail::rounded<long double>(lo) == detail::rounded<long double>(hi);
+    case NumberType::bin50: return detail::rounded<bin50>(lo) == detail::rounded<bin50>(hi);
+    case NumberType::bin100: return detail::rounded<bin100>(lo) == detail::rounded<bin100>(hi);
+    default: return format_significant(lo, digits) == format_significant(hi, digits);
+  }
+}
+
+}  // namespace
+
+void check_rig(const RigSpec& rig) {
+  rig_number(rig.kappa, "kappa", false);
+  rig_number(rig.omega, "omega", false);
+  rig_number(rig.zeta, "zeta", true);
+}
+
+namespace detail {
+
+mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const Precision& precision,
+               const Options& opt, RigReport* report) {
+  check_rig(rig);
+  const unsigned resonant = resonance(rig);
+  const int digits = output_digits(precision);
+  // Two precisions: the lower's difference from the higher estimates the higher's error.
+  int low = digits + 10, high = digits + 22;
+  Solved a = solve_at(wave, p, rig, resonant, low, opt);
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    Solved b = solve_at(wave, p, rig, resonant, high, opt);
+    PrecisionScope scope(static_cast<unsigned>(high));
+    using std::abs;
+    const mpfr delta = 2 * (abs(mpfr(a.mu - b.mu)) + abs(mpfr(b.relative_error * b.mu)));
+    const mpfr lo = b.mu - delta, hi = b.mu + delta;
+    if (decides(lo, hi, precision, digits)) {
+      if (report) {
+        const int most = std::min(digits, 17);
+        report->mu = format_significant(b.mu, digits);
+        report->stick_fraction = agreed(a.stick, b.stick, most);
+        report->slip_fraction = agreed(a.slip, b.slip, most);
+        report->backward_fraction = agreed(a.backward, b.backward, most);
+        report->flight_fraction = agreed(a.flight, b.flight, most);
+        report->amplitude = agreed(a.amplitude, b.amplitude, most);
+        report->largest_backward_slip = agreed(a.back, b.back, most);
+        report->relative_error = format_significant(mpfr(b.mu == 0 ? delta : mpfr(delta / abs(b.mu))), 2);
+        report->floquet = b.floquet;
+        report->working_digits = high;
+      }
+      return b.mu;
+    }
+    if (attempt == 3)
+      throw SolverError("rig dynamics: mu did not settle to " + std::to_string(digits) + " digits (" +
+                        format_significant(a.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
+                        format_significant(b.mu, digits + 2) + " at " + std::to_string(high) + ")");
+    a = std::move(b);
+    low = high;
+    high += std::max(12, high / 2);
+  }
+  return mpfr(0);
+}
+
+}  // namespace detail
+
+RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+                       const Options& solver) {
+  if (precision.type == NumberType::mpfr && (precision.digits < min_digits || precision.digits > max_digits))
+    throw InputError("digits = " + std::to_string(precision.digits) + ": expected " + std::to_string(min_digits) +
+                     " to " + std::to_string(max_digits));
+  detail::ContactCheck check(wave, Quantity::mu);
+  check(point);
+  RigReport report;
+  const mpfr v = detail::rig_value(wave, point, rig, precision, solver, &report);
+  // The text evaluate() prints: the value rounded to the type, its significant digits.
+  const int digits = output_digits(precision);
+  switch (precision.type) {
+    case NumberType::float64: report.mu = format_significant(detail::rounded<double>(v), digits); break;
+    case NumberType::float80: report.mu = format_significant(detail::rounded<long double>(v), digits); break;
+    case NumberType::bin50: report.mu = format_significant(detail::rounded<bin50>(v), digits); break;
+    case NumberType::bin100: report.mu = format_significant(detail::rounded<bin100>(v), digits); break;
+    case NumberType::mpfr: report.mu = format_significant(v, digits); break;
+  }
+  return report;
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,902 @@
+// Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"): a body of mass m on a system
+// spring k_s (damper c) pulled at v0, carrying the contact spring k_x whose massless contact point
+// obeys Amontons. With Y = X − βφ (the body's lag behind the drive) every mode is one linear ODE
+//
+//     Y'' + c Y' + K Y = F(φ),   c = 4πζΩ√κ,   ω = 2πΩ,
+//     stick:  K = ω²(κ + 1), F = −ω²(βφ − X_c)       (s = X − X_c)
+//     slip:   K = ω²κ,       F = ∓ω² n(φ)            (s = ±n, forward / backward)
+//     flight: K = ω²κ,       F = 0                   (s = 0)
+//
+// solved in closed form between events (the wave on each piece is a line plus harmonics: the sine,
+// Fourier series and piecewise-linear waves). Events (stick → slip where |s| = n, slip → stick
+// where X_c' passes zero, contact loss and touch-down at the contact boundaries) are bracketed on a
+// grid finer than every oscillation of the piece and refined by toms748; jumps and kinks of n are
+// segment ends where the sweeping-process rules of model.md are applied. The periodic steady state
+// is found by shooting: Newton on the one-period map of (Y, Y', s), from two starts.
+//
+// Not for: power:p and other waves without a closed-form motion; curved contacts (the MDR row of
+// springs shares one body, so the springs do not decouple).
+#pragma once
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
+#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/core/waveform.hpp"
+
+namespace vibrofric {
+
+template <class Real>
+struct RigParameters {
+  Real kappa;  // κ = k_s/k_x
+  Real omega;  // Ω = √(k_x/m)/(2πf)
+  Real zeta = 0;  // ζ = c/(2√(m k_s))
+  // Harmonic k with Ω²κ = k² exactly (decided by the caller from the inputs as typed), else 0:
+  // slip then forces the undamped oscillator at its own frequency and the motion grows secularly.
+  unsigned resonant_harmonic = 0;
+};
+
+enum class RigMode { stick, forward_slip, backward_slip, flight };
+
+// One span of the periodic state with a single mode and a single closed form.
+template <class Real>
+struct RigSpan {
+  RigMode mode;
+  Real begin, end;
+  Real y0, v0, s0;  // Y, Y', s at begin
+  std::size_t segment;  // of the Contact: the piece of the wave and its contact status
+};
+
+template <class Real>
+struct RigResult {
+  Real mu;               // μ̄/μ0 = ∫s / ∫n
+  Real retained_area;    // ∫₀¹ s dφ
+  Real normal_area;      // ∫₀¹ n dφ
+  Real stick_fraction = 0, slip_fraction = 0, flight_fraction = 0;  // of the period
+  Real backward_fraction = 0;  // part of slip_fraction slipping backward
+  Real amplitude;        // (max Y − min Y)/2: the body's oscillation about the drive, units μ0 k_z A/k_x
+  Real largest_backward_slip = 0;  // largest distance the contact point moves back in one phase
+  Real jump_dissipation = 0;  // ½(s₋² − s₊²) summed over the instant slips at jumps of n
+  Real state_y, state_v, state_s;  // the periodic state at φ = 0 (before a jump there)
+  Real relative_error;   // estimate: the two shooting starts' μ̄ apart, plus Newton's last step
+  double floquet = 0;    // largest modulus of the one-period map's multipliers
+  std::size_t newton_steps = 0;
+  std::size_t events = 0;  // per period
+  std::vector<RigSpan<Real>> spans;
+};
+
+namespace detail {
+
+// The wave on one piece: w(φ) = p0 + p1 (φ − origin) + Σ_k a_k cos 2πkφ + b_k sin 2πkφ.
+template <class Real>
+struct WaveForm {
+  Real origin = 0, p0 = 0, p1 = 0;
+  const std::vector<Real>* a = nullptr;  // index k, k = 1 … size − 1
+  const std::vector<Real>* b = nullptr;
+};
+
+template <class Real>
+class RigWave {
+ public:
+  explicit RigWave(const Waveform<Real>& w) : w_(w) {
+    if (auto* pl = dynamic_cast<const PiecewiseLinear<Real>*>(&w)) {
+      for (std::size_t i = 0; i < w.piece_count(); ++i) {
+        const auto& p = pl->piece(i);
+        forms_.push_back({p.begin, p.anchor, p.slope, nullptr, nullptr});
+      }
+      return;
+    }
+    if (dynamic_cast<const Sine<Real>*>(&w)) {
+      a_ = {Real(0), Real(0)};
+      b_ = {Real(0), Real(1)};
+    } else if (auto* f = dynamic_cast<const FourierSeries<Real>*>(&w)) {
+      a_.assign(f->max_harmonic() + 1, Real(0));
+      b_.assign(f->max_harmonic() + 1, Real(0));
+      for (unsigned k = 1; k <= f->max_harmonic(); ++k) {
+        a_[k] = f->cos_coefficient(k);
+        b_[k] = f->sin_coefficient(k);
+      }
+    } else {
+      throw InputError("rig dynamics needs the motion between events in closed form: the sine, "
+                       "Fourier series and piecewise-linear waves (triangle, sawtooth, square, samples); "
+                       "wave " + w.name() + " is none of them");
+    }
+    for (std::size_t i = 0; i < w.piece_count(); ++i) forms_.push_back({Real(0), Real(0), Real(0), &a_, &b_});
+  }
+  const WaveForm<Real>& form(std::size_t piece) const { return forms_[piece]; }
+  unsigned harmonics() const { return a_.empty() ? 0 : static_cast<unsigned>(a_.size() - 1); }
+  const Waveform<Real>& wave() const { return w_; }
+
+ private:
+  const Waveform<Real>& w_;
+  std::vector<Real> a_, b_;
+  std::vector<WaveForm<Real>> forms_;
+};
+
+// w and its first two derivatives from a WaveForm.
+template <class Real>
+std::array<Real, 3> wave_derivatives(const WaveForm<Real>& f, const Real& phi) {
+  std::array<Real, 3> r{f.p0 + f.p1 * (phi - f.origin), f.p1, Real(0)};
+  if (!f.a) return r;
+  const Real two_pi = boost::math::constants::two_pi<Real>();
+  const auto [s1, c1] = sin_cos(Real(two_pi * phi));
+  Real c = c1, s = s1;
+  for (std::size_t k = 1; k < f.a->size(); ++k) {
+    if (k > 1) {
+      const Real cn = c * c1 - s * s1;
+      s = s * c1 + c * s1;
+      c = cn;
+    }
+    const Real nu = two_pi * static_cast<unsigned>(k);
+    const Real& A = (*f.a)[k];
+    const Real& B = (*f.b)[k];
+    if (A == 0 && B == 0) continue;
+    r[0] += A * c + B * s;
+    r[1] += nu * (B * c - A * s);
+    r[2] -= nu * nu * (A * c + B * s);
+  }
+  return r;
+}
+
+// ∫_a^b w dφ from a WaveForm.
+template <class Real>
+Real wave_integral(const WaveForm<Real>& f, const Real& a, const Real& b) {
+  const Real da = a - f.origin, db = b - f.origin;
+  Real r = f.p0 * (b - a) + f.p1 * (db * db - da * da) / 2;
+  if (!f.a) return r;
+  const Real two_pi = boost::math::constants::two_pi<Real>();
+  for (std::size_t k = 1; k < f.a->size(); ++k) {
+    const Real& A = (*f.a)[k];
+    const Real& B = (*f.b)[k];
+    if (A == 0 && B == 0) continue;
+    const Real nu = two_pi * static_cast<unsigned>(k);
+    const auto [sa, ca] = sin_cos(Real(nu * a));
+    const auto [sb, cb] = sin_cos(Real(nu * b));
+    r += (A * (sb - sa) - B * (cb - ca)) / nu;
+  }
+  return r;
+}
+
+// The closed-form motion on one span: Y = Yp + Y_h, Yp = q0 + q1 (φ − a) + Σ harmonic responses.
+template <class Real>
+class Motion {
+ public:
+  // F = f0 + f1 (φ − a) + scale·(Σ_k a_k cos + b_k sin) + scale·(p0 + p1 (φ − origin)) of `form`.
+  Motion(const Real& c, const Real& K, const Real& a, const Real& y, const Real& v, Real f0, Real f1,
+         const WaveForm<Real>* form, const Real& scale, unsigned resonant)
+      : c_(c), K_(K), a_(a) {
+    if (form) {
+      f0 += scale * (form->p0 + form->p1 * (a - form->origin));
+      f1 += scale * form->p1;
+      if (form->a) {
+        const Real two_pi = boost::math::constants::two_pi<Real>();
+        for (std::size_t k = 1; k < form->a->size(); ++k) {
+          const Real A = scale * (*form->a)[k], B = scale * (*form->b)[k];
+          if (A == 0 && B == 0) continue;
+          const Real nu = two_pi * static_cast<unsigned>(k);
+          Harmonic h{nu, 0, 0, false};
+          if (c == 0 && resonant == k) {
+            // y'' + ν²y = A cos νφ + B sin νφ: y = φ (P cos νφ + Q sin νφ), P = −B/(2ν), Q = A/(2ν).
+            h.resonant = true;
+            h.P = -B / (2 * nu);
+            h.Q = A / (2 * nu);
+          } else {
+            const Real d = K - nu * nu, e = c * nu, D = d * d + e * e;
+            if (D == 0) throw SolverError("rig dynamics: harmonic " + std::to_string(k) + " at resonance undecided");
+            h.P = (d * A - e * B) / D;
+            h.Q = (e * A + d * B) / D;
+          }
+          harmonics_.push_back(h);
+        }
+      }
+    }
+    q1_ = f1 / K;
+    q0_ = (f0 - c * q1_) / K;
+    const auto p = particular(a);
+    y0_ = y - p[0];
+    v0_ = v - p[1];
+    h_ = c / 2;
+    m2_ = h_ * h_ - K;
+    using std::sqrt;
+    if (m2_ < 0) root_ = sqrt(Real(-m2_));
+    if (m2_ > 0) root_ = sqrt(m2_);
+    f0_ = f0;
+    f1_ = f1;
+  }
+
+  // Y, Y' at φ.
+  std::array<Real, 2> operator()(const Real& phi) const {
+    const auto p = particular(phi);
+    const auto [EC, ES] = basis(Real(phi - a_));
+    const Real w = v0_ + h_ * y0_;
+    return {p[0] + y0_ * EC + w * ES, p[1] - h_ * (y0_ * EC + w * ES) + y0_ * m2_ * ES + w * EC};
+  }
+  // ∫_a^b F dφ over this span's forcing (poly and harmonics).
+  Real forcing_integral(const Real& b) const {
+    const Real t = b - a_;
+    Real r = f0_ * t + f1_ * t * t / 2;
+    for (const auto& h : harmonics_) {
+      // ∫ F_k = ∫ (K − ν²)Yp_k + c Yp_k' (non-resonant) — use the response directly: F_k = Yp'' + cYp' + KYp.
+      const auto ya = response(h, a_), yb = response(h, b);
+      const Real iy = integral(h, a_, b);
+      r += (yb[1] - ya[1]) + c_ * (yb[0] - ya[0]) + K_ * iy;
+    }
+    return r;
+  }
+  const Real& K() const { return K_; }
+  const Real& c() const { return c_; }
+  // The fastest angular rate in this motion (for the event grid).
+  Real rate() const {
+    using std::sqrt;
+    Real r = sqrt(K_) + h_;
+    for (const auto& h : harmonics_) r = std::max(r, h.nu);
+    return r;
+  }
+
+ private:
+  struct Harmonic {
+    Real nu, P, Q;
+    bool resonant;
+  };
+  std::array<Real, 2> response(const Harmonic& h, const Real& phi) const {
+    const auto [s, c] = sin_cos(Real(h.nu * phi));
+    const Real y = h.P * c + h.Q * s, dy = h.nu * (h.Q * c - h.P * s);
+    if (!h.resonant) return {y, dy};
+    return {phi * y, y + phi * dy};
+  }
+  // ∫_a^b of a harmonic response.
+  Real integral(const Harmonic& h, const Real& a, const Real& b) const {
+    const auto [sa, ca] = sin_cos(Real(h.nu * a));
+    const auto [sb, cb] = sin_cos(Real(h.nu * b));
+    const Real n = h.nu;
+    if (!h.resonant) return (h.P * (sb - sa) - h.Q * (cb - ca)) / n;
+    // ∫ φ (P cos νφ + Q sin νφ) = φ (P sin − Q cos)/ν + (P cos + Q sin)/ν²
+    return (b * (h.P * sb - h.Q * cb) - a * (h.P * sa - h.Q * ca)) / n +
+           (h.P * (cb - ca) + h.Q * (sb - sa)) / (n * n);
+  }
+  std::array<Real, 2> particular(const Real& phi) const {
+    std::array<Real, 2> r{q0_ + q1_ * (phi - a_), q1_};
+    for (const auto& h : harmonics_) {
+      const auto y = response(h, phi);
+      r[0] += y[0];
+      r[1] += y[1];
+    }
+    return r;
+  }
+  // e^{−ht}·C(t), e^{−ht}·S(t) with C(0) = 1, C'(0) = 0, S(0) = 0, S'(0) = 1 for y'' = m2 y.
+  std::pair<Real, Real> basis(const Real& t) const {
+    using std::cos;
+    using std::cosh;
+    using std::exp;
+    using std::sinh;
+    const Real E = exp(Real(-h_ * t));
+    if (m2_ < 0) {
+      const auto [s, c] = sin_cos(Real(root_ * t));
+      return {E * c, E * s / root_};
+    }
+    if (m2_ == 0) return {E, E * t};
+    const Real mt = root_ * t;
+    if (mt <= 1) return {E * cosh(mt), E * sinh(mt) / root_};
+    // e^{(μ − h)t} with μ − h = −K/(μ + h) (no cancellation), and e^{−(μ + h)t}.
+    const Real ep = exp(Real(-K_ / (root_ + h_) * t)), em = exp(Real(-(root_ + h_) * t));
+    return {(ep + em) / 2, (ep - em) / (2 * root_)};
+  }
+
+  Real c_, K_, a_;
+  Real q0_ = 0, q1_ = 0, f0_ = 0, f1_ = 0;
+  Real y0_ = 0, v0_ = 0, h_ = 0, m2_ = 0, root_ = 0;
+  std::vector<Harmonic> harmonics_;
+};
+
+}  // namespace detail
+
+template <class Real>
+class RigSolver {
+ public:
+  struct State {
+    Real y, v, s;
+  };
+
+  RigSolver(const Waveform<Real>& w, const Real& beta, const Real& gamma, const RigParameters<Real>& p,
+            const Options& opt = {})
+      : wave_(w), contact_(w, gamma, opt), beta_(beta), gamma_(gamma), p_(p) {
+    using std::sqrt;
+    if (!(p.kappa > 0) || !(p.omega > 0) || !(p.zeta >= 0))
+      throw DomainError("rig dynamics: expected kappa > 0, omega > 0, zeta >= 0");
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    omega2_ = two_pi * p.omega * (two_pi * p.omega);
+    c_ = 2 * two_pi * p.zeta * p.omega * sqrt(p.kappa);
+    stats_.max_iterations = root_budget<Real>(opt);
+    // Exact resonance: K = ω²κ is taken as ν² itself, as the caller decided Ω²κ = k² exactly.
+    K_slip_ = p.resonant_harmonic ? Real(two_pi * p.resonant_harmonic * (two_pi * p.resonant_harmonic))
+                                  : Real(omega2_ * p.kappa);
+    K_stick_ = omega2_ * (p.kappa + 1);
+    normal_area_ = 0;
+    for (const auto& g : contact_.segments())
+      if (g.contact) normal_area_ += gamma * (g.v - g.u) + detail::wave_integral(rig_wave().form(g.piece), g.u, g.v);
+  }
+
+  // The one-period map from the state at φ = 0⁻ (the end of the previous period).
+  State period(const State& in, RigResult<Real>* record = nullptr) const {
+    Run run{in.y, in.v, in.s, RigMode::flight, record};
+    const auto& segs = contact_.segments();
+    // The mode at 0⁻, from the state against n at the period's end.
+    const auto& last = segs.back();
+    run.mode = initial_mode(run, last);
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      run.segment = i;
+      enter(run, i == 0 ? last : segs[i - 1], segs[i]);
+      traverse(run, segs[i]);
+    }
+    return {run.y, run.v, run.s};
+  }
+
+  // Y, Y' and s at φ ∈ [span.begin, span.end] of a recorded span (the closed form it was solved with).
+  std::array<Real, 3> at(const RigSpan<Real>& span, const Real& phi) const {
+    const Segment& g = contact_.segments()[span.segment];
+    const Run r{span.y0, span.v0, span.s0, span.mode, nullptr};
+    const auto yv = motion(r, g, span.begin)(phi);
+    switch (span.mode) {
+      case RigMode::stick: return {yv[0], yv[1], Real(span.s0 + (yv[0] - span.y0) + beta_ * (phi - span.begin))};
+      case RigMode::forward_slip: return {yv[0], yv[1], n_at(g, phi)};
+      case RigMode::backward_slip: return {yv[0], yv[1], Real(-n_at(g, phi))};
+      default: return {yv[0], yv[1], Real(0)};
+    }
+  }
+  // n and n' at φ in a recorded span.
+  std::array<Real, 2> normal(const RigSpan<Real>& span, const Real& phi) const {
+    std::array<Real, 3> d;
+    n_at(contact_.segments()[span.segment], phi, &d);
+    return {d[0], d[1]};
+  }
+  // c and ω² of the body's equation (Y'' + cY' + … = −ω² s + …).
+  const Real& damping() const { return c_; }
+  const Real& omega_squared() const { return omega2_; }
+
+  RigResult<Real> solve() const {
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    // Start 1: the quasi-static state of the series stiffness (the Ω → ∞ limit).
+    const Real beta_eff = beta_ * p_.kappa / (p_.kappa + 1);
+    State qs{0, 0, 0};
+    {
+      const Result<Real> r = vibrofric::solve(contact_, beta_eff);
+      const Real phi0 = 1 - std::numeric_limits<Real>::epsilon();
+      qs.s = tangential_force(wave_, r, beta_eff, gamma_, phi0);
+      qs.y = -qs.s / p_.kappa;
+    }
+    std::size_t steps1 = 0, steps2 = 0;
+    double floquet1 = 0, floquet2 = 0;
+    Real last1 = 0, last2 = 0;
+    const State a = shoot(qs, steps1, floquet1, last1);
+    const State b = shoot(State{0, 0, 0}, steps2, floquet2, last2);
+    RigResult<Real> res, other;
+    res.retained_area = other.retained_area = 0;
+    period(a, &res);
+    period(b, &other);
+    res.normal_area = other.normal_area = normal_area_;
+    res.mu = res.retained_area / normal_area_;
+    other.mu = other.retained_area / normal_area_;
+    using std::abs;
+    const Real diff = abs(Real(res.mu - other.mu));
+    const Real scale = std::max(Real(1), abs(res.mu));
+    // Two starts, two periodic states: a multiplicity the shooting cannot resolve by itself.
+    using std::sqrt;
+    if (diff > sqrt(eps) * scale)
+      throw SolverError("rig dynamics: two periodic states from two starts (mu = " + detail::short_str(res.mu) +
+                        " from the quasi-static state, " + detail::short_str(other.mu) + " from rest)");
+    res.state_y = a.y;
+    res.state_v = a.v;
+    res.state_s = a.s;
+    res.newton_steps = steps1;
+    res.floquet = floquet1;
+    res.relative_error = (diff + abs(last1) + 16 * eps * abs(res.mu)) / abs(res.mu);
+    return res;
+  }
+
+ private:
+  struct Run {
+    Real y, v, s;
+    RigMode mode;
+    RigResult<Real>* record;
+    Real ymin = std::numeric_limits<Real>::infinity(), ymax = -std::numeric_limits<Real>::infinity();
+    std::size_t segment = 0;
+    Real back = 0;  // distance the contact point has moved back in the current backward phase
+  };
+  using Segment = typename Contact<Real>::Segment;
+
+  Real n_at(const Segment& g, const Real& phi, std::array<Real, 3>* d = nullptr) const {
+    if (!g.contact) {
+      if (d) *d = {Real(0), Real(0), Real(0)};
+      return Real(0);
+    }
+    auto w = detail::wave_derivatives(form_(g), phi);
+    w[0] += gamma_;
+    if (d) *d = w;
+    return w[0];
+  }
+  const detail::WaveForm<Real>& form_(const Segment& g) const { return rig_wave().form(g.piece); }
+  const detail::RigWave<Real>& rig_wave() const {
+    if (!rw_) rw_.emplace(wave_);
+    return *rw_;
+  }
+
+  RigMode initial_mode(Run& r, const Segment& last) const {
+    const Real n = last.contact ? last.nv : Real(0);
+    const Real dn = last.contact ? last.dnv : Real(0);
+    if (!(n > 0)) {
+      r.s = 0;
+      return RigMode::flight;
+    }
+    if (r.s >= n) {
+      r.s = n;
+      return r.v + beta_ - dn > 0 ? RigMode::forward_slip : RigMode::stick;
+    }
+    if (r.s <= -n) {
+      r.s = -n;
+      return r.v + beta_ + dn < 0 ? RigMode::backward_slip : RigMode::stick;
+    }
+    return RigMode::stick;
+  }
+
+  void dissipate(Run& r, const Real& s_new) const {
+    if (r.record) r.record->jump_dissipation += (r.s * r.s - s_new * s_new) / 2;
+    r.s = s_new;
+  }
+
+  // The sweeping-process rules of model.md at the start of segment g (after segment prev).
+  void enter(Run& r, const Segment& prev, const Segment& g) const {
+    const Real n = g.contact ? g.nu : Real(0), dn = g.contact ? g.dnu : Real(0);
+    const Real xdot = r.v + beta_;
+    if (!g.contact || (n == 0 && !(dn > 0))) {
+      if (r.s != 0) dissipate(r, Real(0));
+      r.mode = RigMode::flight;
+      return;
+    }
+    if (r.mode == RigMode::flight) {
+      if (n > 0) {  // an upward jump out of the air: the contact re-forms stress-free and sticks
+        r.mode = RigMode::stick;
+        return;
+      }
+      // touch-down on a rising flank (n = 0, n' > 0)
+      using std::abs;
+      r.mode = abs(xdot) <= dn ? RigMode::stick : xdot > 0 ? RigMode::forward_slip : RigMode::backward_slip;
+      return;
+    }
+    const Real nprev = prev.contact ? prev.nv : Real(0);
+    (void)nprev;
+    if (r.mode == RigMode::forward_slip) {
+      if (n > r.s) {  // an upward jump ends slip
+        r.mode = RigMode::stick;
+        return;
+      }
+      if (n < r.s) dissipate(r, n);
+      if (!(xdot - dn > 0)) r.mode = RigMode::stick;
+      return;
+    }
+    if (r.mode == RigMode::backward_slip) {
+      if (n > -r.s) {
+        r.mode = RigMode::stick;
+        return;
+      }
+      if (n < -r.s) dissipate(r, Real(-n));
+      if (!(xdot + dn < 0)) r.mode = RigMode::stick;
+      return;
+    }
+    // stick: a downward jump below |s| projects s and slips.
+    if (r.s > n) {
+      dissipate(r, n);
+      r.mode = xdot - dn > 0 ? RigMode::forward_slip : RigMode::stick;
+    } else if (r.s < -n) {
+      dissipate(r, Real(-n));
+      r.mode = xdot + dn < 0 ? RigMode::backward_slip : RigMode::stick;
+    }
+  }
+
+  detail::Motion<Real> motion(const Run& r, const Segment& g, const Real& a) const {
+    switch (r.mode) {
+      case RigMode::stick: {
+        // F = −ω²(βφ − X_c) with βa − X_c = s_a − Y_a.
+        return detail::Motion<Real>(c_, K_stick_, a, r.y, r.v, Real(-omega2_ * (r.s - r.y)), Real(-omega2_ * beta_),
+                                    nullptr, Real(0), 0);
+      }
+      case RigMode::forward_slip:
+      case RigMode::backward_slip: {
+        const Real sign = r.mode == RigMode::forward_slip ? Real(-1) : Real(1);
+        return detail::Motion<Real>(c_, K_slip_, a, r.y, r.v, Real(sign * omega2_ * gamma_), Real(0), &form_(g),
+                                    Real(sign * omega2_), p_.resonant_harmonic);
+      }
+      default:
+        return detail::Motion<Real>(c_, K_slip_, a, r.y, r.v, Real(0), Real(0), nullptr, Real(0), 0);
+    }
+  }
+
+  // g(φ) < 0 while the mode holds; its derivative for the touching test.
+  std::pair<Real, Real> event(const Run& r, const Segment& g, const detail::Motion<Real>& m, const Real& a,
+                              const Real& phi) const {
+    const auto yv = m(phi);
+    std::array<Real, 3> d;
+    n_at(g, phi, &d);
+    switch (r.mode) {
+      case RigMode::stick: {
+        const Real s = r.s + (yv[0] - r.y) + beta_ * (phi - a);
+        const Real ds = yv[1] + beta_;
+        using std::abs;
+        return s >= 0 ? std::pair<Real, Real>{s - d[0], ds - d[1]} : std::pair<Real, Real>{-s - d[0], -ds - d[1]};
+      }
+      case RigMode::forward_slip: {
+        // X_c' = Y' + β − n' > 0 while slipping; (X_c')' = Y'' − n''.
+        const Real acc = accel(m, yv, g, phi, Real(-1));
+        return {-(yv[1] + beta_ - d[1]), -(acc - d[2])};
+      }
+      case RigMode::backward_slip: {
+        const Real acc = accel(m, yv, g, phi, Real(1));
+        return {yv[1] + beta_ + d[1], acc + d[2]};
+      }
+      default:
+        return {Real(-1), Real(0)};
+    }
+  }
+  // Y'' = F − cY' − KY in slip (s = ±n).
+  Real accel(const detail::Motion<Real>& m, const std::array<Real, 2>& yv, const Segment& g, const Real& phi,
+             const Real& sign) const {
+    const Real n = n_at(g, phi);
+    return sign * omega2_ * n - m.c() * yv[1] - m.K() * yv[0];
+  }
+
+  void traverse(Run& r, const Segment& g) const {
+    Real a = g.u;
+    const Real end = g.v;
+    auto f = [&](const detail::Motion<Real>& m, const Real& x) { return event(r, g, m, a, x); };
+    for (int guard = 0; guard < 64; ++guard) {
+      const detail::Motion<Real> m = motion(r, g, a);
+      Real stop = end;
+      bool fired = false;
+      if (r.mode != RigMode::flight && end > a) {
+        // Grid: 16 points per period of the fastest oscillation in the span, at least 4.
+        using std::ceil;
+        const Real two_pi = boost::math::constants::two_pi<Real>();
+        const Real rate = std::max(m.rate(), Real(two_pi * rig_wave().harmonics()));
+        const Real per = ceil(Real(rate * (end - a) / two_pi * 16));
+        if (per > 5e7) throw SolverError("rig dynamics: more than 5e7 event-grid points in one span");
+        const std::size_t steps = std::max<std::size_t>(4, static_cast<std::size_t>(per) + 1);
+        Real x0 = a;
+        auto [g0, d0] = f(m, a);
+        // The span may start on the event that began it (g = 0 up to rounding, and g' too at a
+        // slip → stick event): the first crossing is searched just inside, and where g ≥ 0 at every
+        // point down to the start the new mode ends at once.
+        const bool at_event = !(g0 < 0);
+        if (at_event) g0 = Real(-1);
+        for (std::size_t j = 1; j <= steps && !fired; ++j) {
+          Real x1 = j == steps ? end : Real(a + (end - a) * static_cast<unsigned>(j) / static_cast<unsigned>(steps));
+          auto [g1, d1] = f(m, x1);
+          if (g1 >= 0) {
+            Real lo = x0, glo = g0;
+            if (at_event && x0 == a) {
+              // a point of (a, x1) where g < 0, halving toward a; the first root lies above it
+              bool found = false;
+              Real hi = x1;
+              for (int k = 0; k < 200 && !found; ++k) {
+                const Real x = a + (hi - a) / 2;
+                if (!(x > a) || !(x < hi)) break;
+                const Real gx = f(m, x).first;
+                if (gx < 0) {
+                  lo = x;
+                  glo = gx;
+                  found = true;
+                } else {
+                  hi = x;
+                }
+              }
+              if (!found) {
+                stop = a;
+                fired = true;
+                break;
+              }
+              x1 = hi;
+              g1 = f(m, hi).first;
+            }
+            stop = detail::bracketed_root<Real>([&](const Real& x) { return f(m, x).first; }, lo, x1, glo, g1,
+                                                "rig dynamics event", stats_);
+            fired = true;
+            break;
+          }
+          if (d0 > 0 && d1 < 0 && !(at_event && x0 == a)) {
+            // a local maximum between grid points: does it reach 0?
+            Real lo = x0, hi = x1;
+            for (int it = 0; it < 400; ++it) {
+              const Real c2 = (lo + hi) / 2;
+              if (!(c2 > lo) || !(c2 < hi)) break;
+              if (f(m, c2).second > 0) lo = c2; else hi = c2;
+            }
+            const Real xm = (lo + hi) / 2;
+            const Real gm = f(m, xm).first;
+            if (gm >= 0) {
+              stop = detail::bracketed_root<Real>([&](const Real& x) { return f(m, x).first; }, x0, xm, g0, gm,
+                                                  "rig dynamics event", stats_);
+              fired = true;
+              break;
+            }
+          }
+          if (r.record) track(r, m, x0, x1);
+          x0 = x1;
+          g0 = g1;
+          d0 = d1;
+        }
+        if (fired && r.record && stop > x0) track(r, m, x0, stop);
+      }
+      finish(r, g, m, a, stop);
+      if (!fired) return;
+      // the event at `stop`: stick → slip (|s| = n) or slip → stick (X_c' = 0)
+      if (r.record) ++r.record->events;
+      if (r.mode == RigMode::stick) {
+        const Real n = n_at(g, stop);
+        r.mode = r.s >= 0 ? RigMode::forward_slip : RigMode::backward_slip;
+        r.s = r.s >= 0 ? n : Real(-n);
+      } else {
+        r.mode = RigMode::stick;
+      }
+      a = stop;
+      if (!(a < end)) return;
+    }
+    throw SolverError("rig dynamics: more than 64 events in one piece of the wave");
+  }
+
+  // Y's extremes between two grid points (for the amplitude).
+  void track(Run& r, const detail::Motion<Real>& m, const Real& x0, const Real& x1) const {
+    const auto y0 = m(x0), y1 = m(x1);
+    r.ymin = std::min({r.ymin, y0[0], y1[0]});
+    r.ymax = std::max({r.ymax, y0[0], y1[0]});
+    if ((y0[1] > 0) != (y1[1] > 0) && y0[1] != 0 && y1[1] != 0) {
+      const Real x = detail::bracketed_root<Real>([&](const Real& x) { return m(x)[1]; }, x0, x1, y0[1], y1[1],
+                                                  "rig dynamics: extremum of the body's lag", stats_);
+      const Real y = m(x)[0];
+      r.ymin = std::min(r.ymin, y);
+      r.ymax = std::max(r.ymax, y);
+    }
+  }
+
+  // Advance the state to `stop` in the current mode and record the span.
+  void finish(Run& r, const Segment& g, const detail::Motion<Real>& m, const Real& a, const Real& stop) const {
+    const auto yv = m(stop);
+    const Real t = stop - a;
+    Real s_end;
+    Real area = 0;
+    switch (r.mode) {
+      case RigMode::stick:
+        s_end = r.s + (yv[0] - r.y) + beta_ * t;
+        if (r.record) {
+          // ∫Y from the ODE: K∫Y = ∫F − [Y'] − c[Y]; s = Y + (s_a − Y_a) + β(φ − a).
+          const Real iy = (m.forcing_integral(stop) - (yv[1] - r.v) - c_ * (yv[0] - r.y)) / m.K();
+          area = iy + (r.s - r.y) * t + beta_ * t * t / 2;
+        }
+        break;
+      case RigMode::forward_slip:
+      case RigMode::backward_slip: {
+        const Real n = n_at(g, stop);
+        s_end = r.mode == RigMode::forward_slip ? n : Real(-n);
+        if (r.record) {
+          const Real in = gamma_ * t + detail::wave_integral(form_(g), a, stop);
+          area = r.mode == RigMode::forward_slip ? in : Real(-in);
+        }
+        break;
+      }
+      default:
+        s_end = 0;
+    }
+    if (r.mode != RigMode::backward_slip) r.back = 0;
+    if (r.record && stop > a) {
+      auto& res = *r.record;
+      res.spans.push_back({r.mode, a, stop, r.y, r.v, r.s, r.segment});
+      res.retained_area += area;
+      switch (r.mode) {
+        case RigMode::stick: res.stick_fraction += t; break;
+        case RigMode::flight: res.flight_fraction += t; break;
+        case RigMode::backward_slip:
+          res.backward_fraction += t;
+          res.slip_fraction += t;
+          // X_c = X − s moves back by −(ΔY + βt − Δs) over the span.
+          r.back -= (yv[0] - r.y) + beta_ * t - (s_end - r.s);
+          if (r.back > res.largest_backward_slip) res.largest_backward_slip = r.back;
+          break;
+        default: res.slip_fraction += t;
+      }
+      if (r.mode == RigMode::flight) {
+        // flight: Y's extremes by the same grid
+        using std::ceil;
+        const std::size_t steps = std::max<std::size_t>(
+            4, static_cast<std::size_t>(ceil(m.rate() * t / boost::math::constants::two_pi<Real>() * 16)) + 1);
+        Real x0 = a;
+        for (std::size_t j = 1; j <= steps; ++j) {
+          const Real x1 = j == steps ? stop : Real(a + t * static_cast<unsigned>(j) / static_cast<unsigned>(steps));
+          track(r, m, x0, x1);
+          x0 = x1;
+        }
+      }
+      r.ymin = std::min(r.ymin, yv[0]);
+      r.ymax = std::max(r.ymax, yv[0]);
+      res.amplitude = (r.ymax - r.ymin) / 2;
+    }
+    r.y = yv[0];
+    r.v = yv[1];
+    r.s = s_end;
+  }
+
+  // Newton on P(u) − u = 0 with a finite-difference Jacobian, after a few periods of transient.
+  State shoot(State u, std::size_t& steps, double& floquet, Real& last_step) const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    for (int k = 0; k < 4; ++k) u = period(u);
+    auto residual = [&](const State& x, State& px) {
+      px = period(x);
+      return std::array<Real, 3>{px.y - x.y, px.v - x.v, px.s - x.s};
+    };
+    auto norm = [](const std::array<Real, 3>& r) {
+      using std::abs;
+      return std::max({abs(r[0]), abs(r[1]), abs(r[2])});
+    };
+    State pu;
+    auto r = residual(u, pu);
+    Real nr = norm(r);
+    std::array<std::array<Real, 3>, 3> J{};
+    const int max_steps = 60;
+    int neutral = 0, restarts = 0;
+    // Jacobian of P by central differences (step ε^(1/3) relative).
+    auto jacobian = [&]() {
+      using std::cbrt;
+      const Real h0 = cbrt(eps);
+      for (int j = 0; j < 3; ++j) {
+        State up = u, um = u;
+        Real* cp = j == 0 ? &up.y : j == 1 ? &up.v : &up.s;
+        Real* cm = j == 0 ? &um.y : j == 1 ? &um.v : &um.s;
+        const Real h = h0 * std::max(Real(1), abs(*cp));
+        *cp += h;
+        *cm -= h;
+        const State pp = period(up), pm = period(um);
+        J[0][j] = (pp.y - pm.y) / (2 * h);
+        J[1][j] = (pp.v - pm.v) / (2 * h);
+        J[2][j] = (pp.s - pm.s) / (2 * h);
+      }
+    };
+    for (int it = 0; it < max_steps; ++it) {
+      const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
+      if (nr <= 64 * eps * scale) {
+        if (it == 0) jacobian();
+        steps = static_cast<std::size_t>(it);
+        floquet = largest_multiplier(J, u);
+        last_step = nr;
+        return u;
+      }
+      jacobian();
+      // Solve (J − I) δ = −r.
+      std::array<std::array<Real, 4>, 3> M;
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) M[i][j] = J[i][j] - (i == j ? 1 : 0);
+        M[i][3] = -r[i];
+      }
+      for (int c = 0; c < 3; ++c) {
+        int piv = c;
+        for (int i = c + 1; i < 3; ++i)
+          if (abs(M[i][c]) > abs(M[piv][c])) piv = i;
+        std::swap(M[c], M[piv]);
+        if (M[c][c] == 0) break;
+        for (int i = c + 1; i < 3; ++i) {
+          const Real f = M[i][c] / M[c][c];
+          for (int j = c; j < 4; ++j) M[i][j] -= f * M[c][j];
+        }
+      }
+      if (M[0][0] == 0 || M[1][1] == 0 || M[2][2] == 0) {
+        // A neutral direction of J (a whole period of stick from a transient start, where any X_c
+        // would repeat): no Newton step; let the dynamics move the state on.
+        if (++neutral > 8) throw SolverError("rig dynamics: no periodic state found (the one-period map stays neutral)");
+        for (int k = 0; k < 8; ++k) u = period(u);
+        r = residual(u, pu);
+        nr = norm(r);
+        continue;
+      }
+      std::array<Real, 3> d;
+      for (int i = 2; i >= 0; --i) {
+        Real acc = M[i][3];
+        for (int j = i + 1; j < 3; ++j) acc -= M[i][j] * d[j];
+        d[i] = acc / M[i][i];
+      }
+      // Damped step: halve until the residual decreases.
+      Real lambda = 1;
+      bool improved = false;
+      for (int h = 0; h < 12; ++h) {
+        const State trial{u.y + lambda * d[0], u.v + lambda * d[1], u.s + lambda * d[2]};
+        State pt;
+        const auto rt = residual(trial, pt);
+        const Real nt = norm(rt);
+        if (nt < nr) {
+          u = trial;
+          r = rt;
+          nr = nt;
+          improved = true;
+          break;
+        }
+        lambda /= 2;
+      }
+      if (!improved) {
+        if (nr <= sqrt(eps) * scale) {  // rounding floor reached above 64 eps: accept, report it
+          steps = static_cast<std::size_t>(it);
+          floquet = largest_multiplier(J, u);
+          last_step = nr;
+          return u;
+        }
+        // Far from the state, where the map's pieces (its mode sequences) change within the
+        // step: move on with the dynamics and try again.
+        if (++restarts > 12)
+          throw SolverError("rig dynamics: no periodic state found (Newton on the one-period map stalled at residual " +
+                            detail::short_str(nr) + ")");
+        for (int k = 0; k < 16; ++k) u = period(u);
+        r = residual(u, pu);
+        nr = norm(r);
+      }
+    }
+    throw SolverError("rig dynamics: no periodic state found in " + std::to_string(max_steps) +
+                      " Newton steps (residual " + detail::short_str(nr) + ")");
+  }
+
+  // Largest |λ| of the 3×3 Jacobian (in double: a stability indicator, not a result digit).
+  static double largest_multiplier(const std::array<std::array<Real, 3>, 3>& J, const State&) {
+    double m[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(J[i][j]);
+    const double tr = m[0][0] + m[1][1] + m[2][2];
+    const double m2 = m[0][0] * m[1][1] - m[0][1] * m[1][0] + m[0][0] * m[2][2] - m[0][2] * m[2][0] +
+                      m[1][1] * m[2][2] - m[1][2] * m[2][1];
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    // λ³ − tr λ² + m2 λ − det: one real root by bisection, then the quadratic.
+    auto p = [&](double x) { return ((x - tr) * x + m2) * x - det; };
+    double bound = 1 + std::max({std::abs(tr), std::abs(m2), std::abs(det)});
+    double lo = -bound, hi = bound;
+    for (int it = 0; it < 200; ++it) {
+      const double mid = (lo + hi) / 2;
+      if ((p(mid) > 0) == (p(hi) > 0)) hi = mid; else lo = mid;
+    }
+    const double r = (lo + hi) / 2;
+    // λ² + (r − tr) λ + (m2 + r(r − tr)) = 0
+    const double b = r - tr, c = m2 + r * (r - tr);
+    const double disc = b * b - 4 * c;
+    double big = std::abs(r);
+    if (disc >= 0) {
+      big = std::max({big, std::abs((-b + std::sqrt(disc)) / 2), std::abs((-b - std::sqrt(disc)) / 2)});
+    } else {
+      big = std::max(big, std::sqrt(std::max(0.0, c)));
+    }
+    return big;
+  }
+
+  const Waveform<Real>& wave_;
+  Contact<Real> contact_;
+  Real beta_, gamma_;
+  RigParameters<Real> p_;
+  Real omega2_, c_, K_slip_, K_stick_, normal_area_;
+  mutable std::optional<detail::RigWave<Real>> rw_;
+  mutable detail::RootStats stats_;
+};
+
+// μ̄/μ0 and the periodic state of the rig (model.md, "Rig dynamics").
+template <class Real>
+RigResult<Real> solve_rig(const Waveform<Real>& w, const Real& beta, const Real& gamma, const RigParameters<Real>& p,
+                          const Options& opt = {}) {
+  detail::check_beta(w, beta);
+  detail::check_contact(w, gamma);
+  try {
+    const RigSolver<Real> solver(w, beta, gamma, p, opt);
+    return solver.solve();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context<Real>(w, beta, &gamma) + ": " + e.what());
+  }
+}
+
+}  // namespace vibrofric

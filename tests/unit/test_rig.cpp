@@ -1,0 +1,204 @@
+// Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"; core/dynamics.hpp): the
+// event-driven solver against an independent time-stepping peer (rig_peer.hpp), the limits of
+// model.md, the energy balance and the mean force, the exact resonance, and the same algorithm at
+// much higher precision.
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+#include <cmath>
+
+#include "rig_peer.hpp"
+#include "vibrofric/core/dynamics.hpp"
+
+namespace vibrofric {
+namespace {
+
+template <class Real>
+std::unique_ptr<Waveform<Real>> wave_named(const std::string& name) {
+  if (name == "sine") return std::make_unique<Sine<Real>>();
+  if (name == "triangle") return make_triangle<Real>();
+  if (name == "square") return make_square<Real>();
+  if (name == "sawtooth-right") return make_sawtooth_right<Real>();
+  return make_sawtooth_left<Real>();
+}
+
+struct Case {
+  const char* wave;
+  long double beta, gamma, kappa, omega, zeta;
+};
+
+// Cases that exercise each rule of the sweeping process (model.md): touch-down after flight
+// (triangle and sine, jumping), kinks of n in contact (triangle, γ > 1), a downward jump of n below
+// |s| (square and sawtooth-right, γ > 1: instant slip), an upward jump ending slip (square),
+// backward slip (light damping, soft system).
+const Case kCases[] = {
+    {"triangle", 2, -0.4L, 3, 10, 0.1L},      {"sine", 0.5L, 2, 1, 2, 0.02L},
+    {"sine", 1, 0.5L, 1, 1.5L, 0.05L},        {"triangle", 1, 1.5L, 0.5L, 3, 0.05L},
+    {"square", 1.2L, 1.25L, 0.6L, 4, 0.05L},  {"sawtooth-right", 0.8L, 1.2L, 1, 3, 0.1L},
+    {"sawtooth-left", 0.3L, 0.2L, 2, 2, 0.2L}, {"sine", 0.2L, 1.2L, 0.3L, 0.7L, 0.02L},
+};
+
+// The peer converges to the event-driven value: its error shrinks as the step does (at least
+// first order: O(h) where n jumps between grid points), and at 2^15 steps a period it is within
+// 40 h of it (the measured constants are below 1).
+TEST(RigDynamics, TimeSteppingPeerConvergesToTheEventDrivenSolver) {
+  for (const Case& c : kCases) {
+    SCOPED_TRACE(std::string(c.wave) + " beta " + std::to_string(static_cast<double>(c.beta)) + " gamma " +
+                 std::to_string(static_cast<double>(c.gamma)));
+    const auto w = wave_named<long double>(c.wave);
+    const RigResult<long double> r = solve_rig<long double>(*w, c.beta, c.gamma, {c.kappa, c.omega, c.zeta, 0});
+    const auto n = [&](long double phi) {
+      const long double v = c.gamma + (*w)(phi - std::floor(phi));
+      return v > 0 ? v : 0.0L;
+    };
+    long double previous = 0;
+    for (std::size_t steps : {std::size_t(1) << 11, std::size_t(1) << 13, std::size_t(1) << 15}) {
+      const auto p = test::rig_peer<long double>(n, c.beta, c.kappa, c.omega, c.zeta, steps, 4000, 1e-13L);
+      const long double err = std::fabs(p.mu - r.mu);
+      if (previous > 1e-12L) {
+        EXPECT_LT(err, previous / 3) << steps << " steps";
+      }
+      previous = err;
+      if (steps == (std::size_t(1) << 15)) {
+        EXPECT_LT(err, 40.0L / steps);
+        // fractions are counted per step by the peer: within a few steps
+        EXPECT_NEAR(static_cast<double>(p.flight_fraction), static_cast<double>(r.flight_fraction), 4.0 / steps);
+        EXPECT_NEAR(static_cast<double>(p.stick_fraction), static_cast<double>(r.stick_fraction), 64.0 / steps);
+      }
+    }
+    EXPECT_NEAR(static_cast<double>(r.stick_fraction + r.slip_fraction + r.flight_fraction), 1.0, 1e-15);
+  }
+}
+
+// Ω → ∞ (continuous n): μ̄ → g_w(βκ/(1 + κ), γ) as O(1/Ω) (model.md measured 1.67e-6 at 1e4 for the
+// triangle, β = 2, γ = −0.4, κ = 3, ζ = 0.1), and κ → ∞ after it gives g_w(β, γ).
+TEST(RigDynamics, MasslessLimitIsTheSeriesStiffnessAtOrderOneOverOmega) {
+  const auto w = make_triangle<double>();
+  const double beta = 2, gamma = -0.4, kappa = 3, zeta = 0.1;
+  const double qs = solve(*w, beta * kappa / (1 + kappa), gamma).mu;
+  double previous = 0;
+  for (double omega : {1e3, 1e4}) {
+    const double d = solve_rig(*w, beta, gamma, RigParameters<double>{kappa, omega, zeta, 0}).mu - qs;
+    EXPECT_GT(d, 0);
+    EXPECT_NEAR(d * omega, 1.67e-2, 0.03e-2) << "Omega " << omega;  // the measured constant
+    if (previous > 0) {
+      EXPECT_NEAR(previous / d, 10, 0.5);
+    }
+    previous = d;
+  }
+  // κ → ∞ at Ω = 1e3: toward g_w(β, γ) as the series stiffness tends to k_x.
+  const double g = solve(*w, beta, gamma).mu;
+  double gap = 1;
+  for (double k : {10.0, 100.0, 1000.0}) {
+    const double m = solve_rig(*w, beta, gamma, RigParameters<double>{k, 1e3, zeta, 0}).mu;
+    const double qk = solve(*w, beta * k / (1 + k), gamma).mu;
+    EXPECT_LT(std::fabs(m - qk), 3e-5) << k;
+    EXPECT_LT(std::fabs(m - g), gap) << k;
+    gap = std::fabs(m - g);
+  }
+  EXPECT_LT(gap, 1e-3);
+}
+
+// Where n jumps down in contact (square wave, γ > 1) the limit does not hold: the force drop rings
+// the body with an amplitude independent of Ω (model.md: −1.28e-2 at Ω = 1e4, β = 1.2, γ = 1.25,
+// κ = 0.6, ζ = 0.05, measured independently).
+TEST(RigDynamics, DownwardJumpInContactKeepsMuOffTheQuasiStaticValue) {
+  const auto w = make_square<double>();
+  const double beta = 1.2, gamma = 1.25, kappa = 0.6, zeta = 0.05;
+  const double qs = solve(*w, beta * kappa / (1 + kappa), gamma).mu;
+  const double d3 = solve_rig(*w, beta, gamma, RigParameters<double>{kappa, 1e3, zeta, 0}).mu - qs;
+  const double d4 = solve_rig(*w, beta, gamma, RigParameters<double>{kappa, 1e4, zeta, 0}).mu - qs;
+  EXPECT_NEAR(d4, -1.28e-2, 0.005e-2);
+  EXPECT_NEAR(d3, d4, 1e-3);  // not shrinking with Ω
+}
+
+// Energy per period (model.md): the drive's work β∫s equals the contact's dissipation ∫ s X_c'
+// over slip plus the instant slips at jumps of n plus the damper's (c/ω²)∫(X' − β)², and the
+// system spring carries the friction on average: ∫s = −κ∫(X − βφ). Integrated by tanh-sinh from
+// the solver's closed forms, not from its areas.
+TEST(RigDynamics, EnergyBalanceAndMeanForceHoldToWorkingPrecision) {
+  using Real = long double;
+  for (const Case& c : kCases) {
+    SCOPED_TRACE(std::string(c.wave) + " gamma " + std::to_string(static_cast<double>(c.gamma)));
+    const auto w = wave_named<Real>(c.wave);
+    const RigSolver<Real> solver(*w, c.beta, c.gamma, {c.kappa, c.omega, c.zeta, 0});
+    const RigResult<Real> r = solver.solve();
+    boost::math::quadrature::tanh_sinh<Real> ts;
+    Real contact = 0, damper = 0, mean_y = 0, s_area = 0;
+    for (const auto& span : r.spans) {
+      // split each span into pieces shorter than an oscillation of the body
+      const int pieces = 1 + static_cast<int>((span.end - span.begin) * 4 * c.omega * std::sqrt(1 + c.kappa));
+      for (int k = 0; k < pieces; ++k) {
+        const Real a = span.begin + (span.end - span.begin) * k / pieces;
+        const Real b = k + 1 == pieces ? span.end : span.begin + (span.end - span.begin) * (k + 1) / pieces;
+        if (!(b - a > 64 * std::numeric_limits<Real>::epsilon())) continue;  // tanh-sinh needs room
+        damper += ts.integrate([&](Real x) { const Real v = solver.at(span, x)[1]; return v * v; }, a, b);
+        mean_y += ts.integrate([&](Real x) { return solver.at(span, x)[0]; }, a, b);
+        s_area += ts.integrate([&](Real x) { return solver.at(span, x)[2]; }, a, b);
+        if (span.mode == RigMode::forward_slip || span.mode == RigMode::backward_slip)
+          contact += ts.integrate([&](Real x) {
+            const auto st = solver.at(span, x);
+            const auto nn = solver.normal(span, x);
+            const Real ds = span.mode == RigMode::forward_slip ? nn[1] : -nn[1];
+            return st[2] * (st[1] + c.beta - ds);  // s·X_c', X_c' = X' − s'
+          }, a, b);
+      }
+    }
+    const Real work = c.beta * r.retained_area;
+    const Real dissipated = contact + r.jump_dissipation + solver.damping() / solver.omega_squared() * damper;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    EXPECT_NEAR(static_cast<double>((work - dissipated) / work), 0, static_cast<double>(4096 * eps));
+    EXPECT_NEAR(static_cast<double>((s_area - r.retained_area) / r.retained_area), 0, static_cast<double>(1024 * eps));
+    EXPECT_NEAR(static_cast<double>((r.retained_area + c.kappa * mean_y) / r.retained_area), 0,
+                static_cast<double>(4096 * eps));
+    EXPECT_GE(contact, 0);
+  }
+}
+
+// The same algorithm at much higher precision: the long double results of every case agree with the
+// 60-digit ones to the relative error the solver estimates (and within 1e5 eps: the event grid and
+// Newton's last step).
+TEST(RigDynamics, LongDoubleAgreesWithSixtyDigits) {
+  PrecisionScope scope(60);
+  for (const Case& c : kCases) {
+    SCOPED_TRACE(std::string(c.wave) + " gamma " + std::to_string(static_cast<double>(c.gamma)));
+    const auto wl = wave_named<long double>(c.wave);
+    const auto wm = wave_named<mpfr>(c.wave);
+    const auto rl = solve_rig<long double>(*wl, c.beta, c.gamma, {c.kappa, c.omega, c.zeta, 0});
+    const auto rm = solve_rig<mpfr>(*wm, mpfr(c.beta), mpfr(c.gamma), {mpfr(c.kappa), mpfr(c.omega), mpfr(c.zeta), 0});
+    const long double eps = std::numeric_limits<long double>::epsilon();
+    const long double rel = std::fabs(static_cast<long double>((mpfr(rl.mu) - rm.mu) / rm.mu));
+    EXPECT_LT(rel, 1e5L * eps);
+    EXPECT_LT(std::fabs(static_cast<long double>(rm.amplitude) - rl.amplitude), 1e5L * eps * rl.amplitude + 1e-30L);
+    EXPECT_LT(rm.relative_error, mpfr("1e-50"));
+  }
+}
+
+// Exact resonance (ζ = 0, Ω²κ = 1: slip forces the undamped oscillator at its own frequency, the
+// particular solution grows secularly): continuous with its neighbours on both sides.
+TEST(RigDynamics, ExactResonanceLiesBetweenItsNeighbours) {
+  PrecisionScope scope(40);
+  const auto w = std::make_unique<Sine<mpfr>>();
+  const mpfr beta(1), gamma("0.5"), kappa(1);
+  const mpfr at = solve_rig<mpfr>(*w, beta, gamma, {kappa, mpfr(1), mpfr(0), 1}).mu;
+  const mpfr below = solve_rig<mpfr>(*w, beta, gamma, {kappa, mpfr("0.99999999"), mpfr(0), 0}).mu;
+  const mpfr above = solve_rig<mpfr>(*w, beta, gamma, {kappa, mpfr("1.00000001"), mpfr(0), 0}).mu;
+  EXPECT_TRUE((below < at && at < above) || (above < at && at < below));
+  // linear in δΩ to first order: the midpoint of the neighbours is within O(δ²)
+  using std::abs;
+  EXPECT_LT(abs(mpfr((below + above) / 2 - at)), mpfr("1e-12"));
+}
+
+TEST(RigDynamics, RefusesWavesWithoutAClosedFormMotionAndBadParameters) {
+  Power<double> p(3, "power:3");
+  EXPECT_THROW(solve_rig<double>(p, 1, 0.5, {1, 1, 0, 0}), InputError);
+  const auto w = make_triangle<double>();
+  EXPECT_THROW(solve_rig<double>(*w, 1, 0.5, {0, 1, 0, 0}), DomainError);
+  EXPECT_THROW(solve_rig<double>(*w, 1, 0.5, {1, -1, 0, 0}), DomainError);
+  EXPECT_THROW(solve_rig<double>(*w, 1, 0.5, {1, 1, -0.1, 0}), DomainError);
+  EXPECT_THROW(solve_rig<double>(*w, 1, -1.5, {1, 1, 0, 0}), DomainError);
+}
+
+}  // namespace
+}  // namespace vibrofric
