@@ -1443,12 +1443,13 @@ def failure_tests():
 WAVE = ["--wave", "--column", "--periods", "--diagnostics"]
 PRECISION = ["--digits", "--type", "--no-escalate"]
 SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
+RIG = ["--kappa", "--omega", "--zeta"]  # psi lists them to refuse them with the reason
 HELP_FLAGS = {
-    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER,
+    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG,
            {"--profile": "flat", "--format": "text", "--digits": "50", "--type": "mpfr", "--area": "auto",
             "--max-levels": "15"}),
-    "psi": (["--beta", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER, {"--format": "text"}),
-    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format", "--certify"] + WAVE + PRECISION + SOLVER,
+    "psi": (["--beta", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG, {"--format": "text"}),
+    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG,
               {"--quantity": "mu", "--threads": "0", "--format": "csv"}),
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--format"]
