@@ -899,4 +899,9 @@ RigResult<Real> solve_rig(const Waveform<Real>& w, const Real& beta, const Real&
   }
 }
 
+// mpfr is compiled once, in lib/core/src/dynamics_mpfr.cpp (the API's type); others where used.
+extern template class RigSolver<mpfr>;
+extern template RigResult<mpfr> solve_rig<mpfr>(const Waveform<mpfr>&, const mpfr&, const mpfr&,
+                                                const RigParameters<mpfr>&, const Options&);
+
 }  // namespace vibrofric
