@@ -35,20 +35,20 @@ unsigned resonance(const RigSpec& rig) {
 }
 
 struct Solved {
-  mpfr mu, stick, slip, backward, flight, amplitude, back, relative_error;
-  double floquet;
+  RigResult<mpfr> r;
+  int digits;
 };
 
+// The rig at `digits` digits: both starts (seed null), or from a lower precision's state.
 Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsigned resonant, int digits,
-                const Options& opt) {
+                const Options& opt, const Solved* seed) {
   PrecisionScope scope(static_cast<unsigned>(digits));
   const auto w = make_waveform<mpfr>(wave);
   const mpfr beta = p.beta_value ? mpfr(*p.beta_value) : parse_real<mpfr>(p.beta, "beta");
   const mpfr gamma = p.gamma_value ? mpfr(*p.gamma_value) : parse_real<mpfr>(p.gamma, "gamma");
   const RigParameters<mpfr> params{mpfr(rig.kappa), mpfr(rig.omega), mpfr(rig.zeta), resonant};
-  const RigResult<mpfr> r = solve_rig(*w, beta, gamma, params, opt);
-  return {r.mu, r.stick_fraction, r.slip_fraction, r.backward_fraction, r.flight_fraction, r.amplitude,
-          r.largest_backward_slip, r.relative_error, r.floquet};
+  if (seed) return {solve_rig(*w, beta, gamma, params, seed->r, opt), digits};
+  return {solve_rig(*w, beta, gamma, params, opt), digits};
 }
 
 // The digits of x (at most `most`) on which a and b agree.
@@ -87,33 +87,33 @@ mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const P
   const int digits = output_digits(precision);
   // Two precisions: the lower's difference from the higher estimates the higher's error.
   int low = digits + 10, high = digits + 22;
-  Solved a = solve_at(wave, p, rig, resonant, low, opt);
+  Solved a = solve_at(wave, p, rig, resonant, low, opt, nullptr);
   for (int attempt = 0; attempt < 4; ++attempt) {
-    Solved b = solve_at(wave, p, rig, resonant, high, opt);
+    Solved b = solve_at(wave, p, rig, resonant, high, opt, &a);
     PrecisionScope scope(static_cast<unsigned>(high));
     using std::abs;
-    const mpfr delta = 2 * (abs(mpfr(a.mu - b.mu)) + abs(mpfr(b.relative_error * b.mu)));
-    const mpfr lo = b.mu - delta, hi = b.mu + delta;
+    const mpfr delta = 2 * (abs(mpfr(a.r.mu - b.r.mu)) + abs(mpfr(b.r.relative_error * b.r.mu)));
+    const mpfr lo = b.r.mu - delta, hi = b.r.mu + delta;
     if (decides(lo, hi, precision, digits)) {
       if (report) {
         const int most = std::min(digits, 17);
-        report->mu = format_significant(b.mu, digits);
-        report->stick_fraction = agreed(a.stick, b.stick, most);
-        report->slip_fraction = agreed(a.slip, b.slip, most);
-        report->backward_fraction = agreed(a.backward, b.backward, most);
-        report->flight_fraction = agreed(a.flight, b.flight, most);
-        report->amplitude = agreed(a.amplitude, b.amplitude, most);
-        report->largest_backward_slip = agreed(a.back, b.back, most);
-        report->relative_error = format_significant(mpfr(b.mu == 0 ? delta : mpfr(delta / abs(b.mu))), 2);
-        report->floquet = b.floquet;
+        report->mu = format_significant(b.r.mu, digits);
+        report->stick_fraction = agreed(a.r.stick_fraction, b.r.stick_fraction, most);
+        report->slip_fraction = agreed(a.r.slip_fraction, b.r.slip_fraction, most);
+        report->backward_fraction = agreed(a.r.backward_fraction, b.r.backward_fraction, most);
+        report->flight_fraction = agreed(a.r.flight_fraction, b.r.flight_fraction, most);
+        report->amplitude = agreed(a.r.amplitude, b.r.amplitude, most);
+        report->largest_backward_slip = agreed(a.r.largest_backward_slip, b.r.largest_backward_slip, most);
+        report->relative_error = format_significant(mpfr(b.r.mu == 0 ? delta : mpfr(delta / abs(b.r.mu))), 2);
+        report->floquet = a.r.floquet;
         report->working_digits = high;
       }
-      return b.mu;
+      return b.r.mu;
     }
     if (attempt == 3)
       throw SolverError("rig dynamics: mu did not settle to " + std::to_string(digits) + " digits (" +
-                        format_significant(a.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
-                        format_significant(b.mu, digits + 2) + " at " + std::to_string(high) + ")");
+                        format_significant(a.r.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
+                        format_significant(b.r.mu, digits + 2) + " at " + std::to_string(high) + ")");
     a = std::move(b);
     low = high;
     high += std::max(12, high / 2);

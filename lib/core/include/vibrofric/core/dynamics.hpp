@@ -66,6 +66,7 @@ struct RigResult {
   Real state_y, state_v, state_s;  // the periodic state at φ = 0 (before a jump there)
   Real relative_error;   // estimate: the two shooting starts' μ̄ apart, plus Newton's last step
   double floquet = 0;    // largest modulus of the one-period map's multipliers
+  std::array<std::array<double, 3>, 3> jacobian{};  // of the one-period map of (Y, Y', s), near the state
   std::size_t newton_steps = 0;
   std::size_t events = 0;  // per period
   std::vector<RigSpan<Real>> spans;
@@ -229,6 +230,24 @@ class Motion {
     }
     return r;
   }
+  // Bounds of |Y'| and |Y''| on [φ, end of span] (φ ≤ 1): the particular solution's plus the
+  // homogeneous part's, whose envelope e^{−ht} (e^{−(h−μ)t} overdamped) only decays:
+  // |e^{−ht}C|, |e^{−ht}S|·max(1, ω) ≤ env; |(e^{−ht}C)'| ≤ √K·env, |(e^{−ht}S)'| ≤ √K/ω·env
+  // underdamped (h·env and env critically, h·env and h/μ·env overdamped); Y_h'' = −cY_h' − KY_h.
+  Real slope_bound(const Real& phi) const {
+    using std::abs;
+    Real b = abs(q1_);
+    for (const auto& h : harmonics_) b += (abs(h.P) + abs(h.Q)) * h.nu * (h.resonant ? Real(1 + h.nu) : Real(1));
+    return b + envelope(phi) * homogeneous_slope();
+  }
+  Real curvature_bound(const Real& phi) const {
+    using std::abs;
+    Real b = 0;
+    for (const auto& h : harmonics_) b += (abs(h.P) + abs(h.Q)) * h.nu * (h.resonant ? Real(2 + h.nu) : h.nu);
+    const Real w = abs(Real(v0_ + h_ * y0_)), y = abs(y0_);
+    const Real S = m2_ < 0 && root_ > 1 ? Real(1 / root_) : Real(1);
+    return b + envelope(phi) * (c_ * homogeneous_slope() + K_ * (y + w * S));
+  }
   const Real& K() const { return K_; }
   const Real& c() const { return c_; }
   // The fastest angular rate in this motion (for the event grid).
@@ -286,6 +305,21 @@ class Motion {
     // e^{(μ − h)t} with μ − h = −K/(μ + h) (no cancellation), and e^{−(μ + h)t}.
     const Real ep = exp(Real(-K_ / (root_ + h_) * t)), em = exp(Real(-(root_ + h_) * t));
     return {(ep + em) / 2, (ep - em) / (2 * root_)};
+  }
+
+  Real envelope(const Real& phi) const {
+    using std::exp;
+    const Real t = phi > a_ ? Real(phi - a_) : Real(0);
+    if (m2_ > 0) return exp(Real(-K_ / (root_ + h_) * t));
+    return exp(Real(-h_ * t));
+  }
+  Real homogeneous_slope() const {
+    using std::abs;
+    using std::sqrt;
+    const Real w = abs(Real(v0_ + h_ * y0_)), y = abs(y0_);
+    if (m2_ < 0) return sqrt(K_) * (y + w / root_);
+    if (m2_ == 0) return h_ * y + w;
+    return h_ * (y + w / root_);
   }
 
   Real c_, K_, a_;
@@ -374,6 +408,7 @@ class RigSolver {
     double floquet1 = 0, floquet2 = 0;
     Real last1 = 0, last2 = 0;
     const State a = shoot(qs, steps1, floquet1, last1);
+    const auto J1 = jacobian_;
     const State b = shoot(State{0, 0, 0}, steps2, floquet2, last2);
     RigResult<Real> res, other;
     res.retained_area = other.retained_area = 0;
@@ -395,7 +430,34 @@ class RigSolver {
     res.state_s = a.s;
     res.newton_steps = steps1;
     res.floquet = floquet1;
+    res.jacobian = J1;
     res.relative_error = (diff + abs(last1) + 16 * eps * abs(res.mu)) / abs(res.mu);
+    return res;
+  }
+
+  // The periodic state from one found at a lower precision (its state and the map's Jacobian):
+  // chord iterations u ← u − (J − I)⁻¹(P(u) − u), each one period, which gain the lower
+  // precision's digits again per step; Newton from the seed where they do not contract.
+  RigResult<Real> solve(const Real& y, const Real& v, const Real& s, const std::array<std::array<double, 3>, 3>& J) const {
+    using std::abs;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    State u{y, v, s};
+    Real last = 0;
+    std::size_t steps = 0;
+    double floquet = 0;
+    if (!chord(u, J, last, steps)) u = shoot(State{y, v, s}, steps, floquet, last, false);
+    RigResult<Real> res;
+    res.retained_area = 0;
+    period(u, &res);
+    res.normal_area = normal_area_;
+    res.mu = res.retained_area / normal_area_;
+    res.state_y = u.y;
+    res.state_v = u.v;
+    res.state_s = u.s;
+    res.newton_steps = steps;
+    res.jacobian = J;
+    res.floquet = largest_multiplier(J);
+    res.relative_error = (abs(last) + 16 * eps * abs(res.mu)) / abs(res.mu);
     return res;
   }
 
@@ -410,6 +472,19 @@ class RigSolver {
   };
   using Segment = typename Contact<Real>::Segment;
 
+  // A bound of |n'| (order 1) or |n''| (order 2) on segment g: |p1| + Σ (2πk)^order (|a_k| + |b_k|).
+  Real slope_bound(const Segment& g, int order) const {
+    if (!g.contact) return Real(0);
+    using std::abs;
+    const auto& f = form_(g);
+    Real b = order == 1 ? Real(abs(f.p1)) : Real(0);
+    if (f.a)
+      for (std::size_t k = 1; k < f.a->size(); ++k) {
+        const Real nu = boost::math::constants::two_pi<Real>() * static_cast<unsigned>(k);
+        b += (order == 1 ? nu : Real(nu * nu)) * (abs((*f.a)[k]) + abs((*f.b)[k]));
+      }
+    return b;
+  }
   Real n_at(const Segment& g, const Real& phi, std::array<Real, 3>* d = nullptr) const {
     if (!g.contact) {
       if (d) *d = {Real(0), Real(0), Real(0)};
@@ -565,6 +640,15 @@ class RigSolver {
         const Real per = ceil(Real(rate * (end - a) / two_pi * 16));
         if (per > 5e7) throw SolverError("rig dynamics: more than 5e7 event-grid points in one span");
         const std::size_t steps = std::max<std::size_t>(4, static_cast<std::size_t>(per) + 1);
+        // In stick, g = |s| − n has |g'| ≤ G = max|Y'| + β + max|n'|: no root lies within
+        // |g(x)|/G of a point x, which lets the search stride over the long stick phases of a fast
+        // body (Ω ≫ 1) instead of resolving each of its oscillations.
+        // In slip, g = ∓(Y' + β ∓ n') has |g'| ≤ max|Y''| + max|n''|.
+        const Real n1 = slope_bound(g, 1), n2 = slope_bound(g, 2);
+        auto G = [&](const Real& x) {
+          return r.mode == RigMode::stick ? Real(m.slope_bound(x) + beta_ + n1) : Real(m.curvature_bound(x) + n2);
+        };
+        const Real cell = (end - a) / static_cast<unsigned>(steps);
         Real x0 = a;
         auto [g0, d0] = f(m, a);
         // The span may start on the event that began it (g = 0 up to rounding, and g' too at a
@@ -572,8 +656,16 @@ class RigSolver {
         // point down to the start the new mode ends at once.
         const bool at_event = !(g0 < 0);
         if (at_event) g0 = Real(-1);
-        for (std::size_t j = 1; j <= steps && !fired; ++j) {
-          Real x1 = j == steps ? end : Real(a + (end - a) * static_cast<unsigned>(j) / static_cast<unsigned>(steps));
+        while (!fired && x0 < end) {
+          Real x1 = x0 + cell;
+          // (on the recorded period also no farther than Y can reach a new extreme)
+          if (g0 < 0 && !(at_event && x0 == a)) {
+            using std::abs;
+            Real clear = abs(g0) / G(x0) * Real(0.9375);
+            if (r.record) clear = std::min(clear, unremarkable(r, m, x0));
+            if (clear > cell) x1 = x0 + clear;
+          }
+          if (!(x1 < end) || end - x1 < cell / 1024) x1 = end;
           auto [g1, d1] = f(m, x1);
           if (g1 >= 0) {
             Real lo = x0, glo = g0;
@@ -647,6 +739,19 @@ class RigSolver {
     throw SolverError("rig dynamics: more than 64 events in one piece of the wave");
   }
 
+  // How far beyond x0 Y has no extreme outside those seen (for the amplitude's grid): where Y'
+  // cannot vanish (|Y'(x0)|/max|Y''|: an extreme is then an end, which track() sees), or Y stays
+  // inside [min, max] seen (the room over max|Y'|).
+  Real unremarkable(const Run& r, const detail::Motion<Real>& m, const Real& x0) const {
+    using std::abs;
+    const auto yv = m(x0);
+    const Real B1 = m.slope_bound(x0), B2 = m.curvature_bound(x0);
+    Real clear = B2 > 0 ? Real(abs(yv[1]) / B2) : Real(1);
+    const Real room = std::min(Real(r.ymax - yv[0]), Real(yv[0] - r.ymin));
+    if (room > 0 && B1 > 0) clear = std::max(clear, Real(room / B1));
+    return clear * Real(0.9375);
+  }
+
   // Y's extremes between two grid points (for the amplitude).
   void track(Run& r, const detail::Motion<Real>& m, const Real& x0, const Real& x1) const {
     const auto y0 = m(x0), y1 = m(x1);
@@ -707,13 +812,17 @@ class RigSolver {
         default: res.slip_fraction += t;
       }
       if (r.mode == RigMode::flight) {
-        // flight: Y's extremes by the same grid
+        // flight: Y's extremes on a grid of 16 points per oscillation, striding where |Y'| cannot
+        // reach 0 (|Y'(x)|/max|Y''|)
+        using std::abs;
         using std::ceil;
-        const std::size_t steps = std::max<std::size_t>(
-            4, static_cast<std::size_t>(ceil(m.rate() * t / boost::math::constants::two_pi<Real>() * 16)) + 1);
+        const Real cell = t / (ceil(Real(m.rate() * t / boost::math::constants::two_pi<Real>() * 16)) + 1);
         Real x0 = a;
-        for (std::size_t j = 1; j <= steps; ++j) {
-          const Real x1 = j == steps ? stop : Real(a + t * static_cast<unsigned>(j) / static_cast<unsigned>(steps));
+        while (x0 < stop) {
+          Real x1 = x0 + cell;
+          const Real clear = unremarkable(r, m, x0);
+          if (clear > cell) x1 = x0 + clear;
+          if (!(x1 < stop) || stop - x1 < cell / 1024) x1 = stop;
           track(r, m, x0, x1);
           x0 = x1;
         }
@@ -728,11 +837,12 @@ class RigSolver {
   }
 
   // Newton on P(u) − u = 0 with a finite-difference Jacobian, after a few periods of transient.
-  State shoot(State u, std::size_t& steps, double& floquet, Real& last_step) const {
+  State shoot(State u, std::size_t& steps, double& floquet, Real& last_step, bool transient = true) const {
     using std::abs;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    for (int k = 0; k < 4; ++k) u = period(u);
+    if (transient)
+      for (int k = 0; k < 4; ++k) u = period(u);
     auto residual = [&](const State& x, State& px) {
       px = period(x);
       return std::array<Real, 3>{px.y - x.y, px.v - x.v, px.s - x.s};
@@ -769,7 +879,7 @@ class RigSolver {
       if (nr <= 64 * eps * scale) {
         if (it == 0) jacobian();
         steps = static_cast<std::size_t>(it);
-        floquet = largest_multiplier(J, u);
+        floquet = store(J);
         last_step = nr;
         return u;
       }
@@ -826,7 +936,7 @@ class RigSolver {
       if (!improved) {
         if (nr <= sqrt(eps) * scale) {  // rounding floor reached above 64 eps: accept, report it
           steps = static_cast<std::size_t>(it);
-          floquet = largest_multiplier(J, u);
+          floquet = store(J);
           last_step = nr;
           return u;
         }
@@ -844,11 +954,67 @@ class RigSolver {
                       " Newton steps (residual " + detail::short_str(nr) + ")");
   }
 
+  // Chord iterations from u with a fixed J (see solve(y, v, s, J)); false where they do not contract.
+  bool chord(State& u, const std::array<std::array<double, 3>, 3>& Jd, Real& last, std::size_t& steps) const {
+    using std::abs;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    Real previous = -1;
+    for (int it = 0; it < 40; ++it) {
+      const State pu = period(u);
+      const std::array<Real, 3> r{pu.y - u.y, pu.v - u.v, pu.s - u.s};
+      const Real nr = std::max({abs(r[0]), abs(r[1]), abs(r[2])});
+      const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
+      if (nr <= 64 * eps * scale) {
+        last = nr;
+        steps = static_cast<std::size_t>(it);
+        return true;
+      }
+      if (previous >= 0 && !(nr < previous / 4)) return false;
+      previous = nr;
+      std::array<std::array<Real, 4>, 3> M;
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) M[i][j] = Real(Jd[i][j]) - (i == j ? 1 : 0);
+        M[i][3] = -r[i];
+      }
+      std::array<Real, 3> d;
+      if (!solve3(M, d)) return false;
+      u = State{u.y + d[0], u.v + d[1], u.s + d[2]};
+    }
+    return false;
+  }
+  // Gaussian elimination with partial pivoting of a 3×3 system [A | b]; false if singular.
+  static bool solve3(std::array<std::array<Real, 4>, 3>& M, std::array<Real, 3>& d) {
+    using std::abs;
+    for (int c = 0; c < 3; ++c) {
+      int piv = c;
+      for (int i = c + 1; i < 3; ++i)
+        if (abs(M[i][c]) > abs(M[piv][c])) piv = i;
+      std::swap(M[c], M[piv]);
+      if (M[c][c] == 0) return false;
+      for (int i = c + 1; i < 3; ++i) {
+        const Real f = M[i][c] / M[c][c];
+        for (int j = c; j < 4; ++j) M[i][j] -= f * M[c][j];
+      }
+    }
+    for (int i = 2; i >= 0; --i) {
+      Real acc = M[i][3];
+      for (int j = i + 1; j < 3; ++j) acc -= M[i][j] * d[j];
+      d[i] = acc / M[i][i];
+    }
+    return true;
+  }
+  // Keeps J (in double) for the result and returns its largest multiplier.
+  double store(const std::array<std::array<Real, 3>, 3>& J) const {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) jacobian_[i][j] = static_cast<double>(J[i][j]);
+    return largest_multiplier(jacobian_);
+  }
+
   // Largest |λ| of the 3×3 Jacobian (in double: a stability indicator, not a result digit).
-  static double largest_multiplier(const std::array<std::array<Real, 3>, 3>& J, const State&) {
+  static double largest_multiplier(const std::array<std::array<double, 3>, 3>& J) {
     double m[3][3];
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) m[i][j] = static_cast<double>(J[i][j]);
+      for (int j = 0; j < 3; ++j) m[i][j] = J[i][j];
     const double tr = m[0][0] + m[1][1] + m[2][2];
     const double m2 = m[0][0] * m[1][1] - m[0][1] * m[1][0] + m[0][0] * m[2][2] - m[0][2] * m[2][0] +
                       m[1][1] * m[2][2] - m[1][2] * m[2][1];
@@ -882,6 +1048,7 @@ class RigSolver {
   RigParameters<Real> p_;
   Real omega2_, c_, K_slip_, K_stick_, normal_area_;
   mutable std::optional<detail::RigWave<Real>> rw_;
+  mutable std::array<std::array<double, 3>, 3> jacobian_{};
   mutable detail::RootStats stats_;
 };
 
@@ -899,9 +1066,25 @@ RigResult<Real> solve_rig(const Waveform<Real>& w, const Real& beta, const Real&
   }
 }
 
+// The same from a state found at a lower precision (RigSolver::solve(y, v, s, J)).
+template <class Real>
+RigResult<Real> solve_rig(const Waveform<Real>& w, const Real& beta, const Real& gamma, const RigParameters<Real>& p,
+                          const RigResult<Real>& seed, const Options& opt = {}) {
+  detail::check_beta(w, beta);
+  detail::check_contact(w, gamma);
+  try {
+    const RigSolver<Real> solver(w, beta, gamma, p, opt);
+    return solver.solve(Real(seed.state_y), Real(seed.state_v), Real(seed.state_s), seed.jacobian);
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context<Real>(w, beta, &gamma) + ": " + e.what());
+  }
+}
+
 // mpfr is compiled once, in lib/core/src/dynamics_mpfr.cpp (the API's type); others where used.
 extern template class RigSolver<mpfr>;
 extern template RigResult<mpfr> solve_rig<mpfr>(const Waveform<mpfr>&, const mpfr&, const mpfr&,
                                                 const RigParameters<mpfr>&, const Options&);
+extern template RigResult<mpfr> solve_rig<mpfr>(const Waveform<mpfr>&, const mpfr&, const mpfr&,
+                                                const RigParameters<mpfr>&, const RigResult<mpfr>&, const Options&);
 
 }  // namespace vibrofric
