@@ -199,6 +199,7 @@ struct Evaluation {
   bool nan_on_error = false;
   bool certify = false;
   std::string profile_text;  // as given, for messages
+  std::optional<RigSpec> rig;  // kappa, omega, zeta (rig dynamics)
 };
 
 Precision to_precision(const std::optional<int>& digits, const py::object& type) {
@@ -520,6 +521,7 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   options.profile = e.profile;
   options.threads = e.threads;
   options.escalate = e.escalate;
+  options.rig = e.rig;
   if (e.max_iterations) {
     if (*e.max_iterations < 1 || *e.max_iterations > root_iterations_limit)
       throw InputError("max_iterations = " + std::to_string(*e.max_iterations) + ": expected 1 to " +
@@ -594,7 +596,7 @@ unsigned to_threads(const py::object& x) {
   return static_cast<unsigned>(*t);
 }
 
-constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
+constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False, kappa=None, omega=None, zeta=None)
 
 The macroscopic coefficient of friction mu/mu0 = int s dphi / int n dphi (Eq. 15; Eqs. 9, 13 of
 the paper) for sliding velocity beta (Eq. 5) and mean indentation gamma = u/A (Eq. 14), in the
@@ -619,6 +621,11 @@ threads   worker threads for the batch; 0: all cores. The GIL is released while 
 max_iterations  root-finder budget per event (default 200 + working bits).
 escalate  double and fixed types: recompute in mpfr where the type's rounding is not enough.
 strings   return the library's decimal strings for every type.
+kappa, omega, zeta  rig dynamics (the tool's --kappa, --omega, --zeta; model.md): a body of mass m
+          on a system spring k_s with damping c instead of the paper's quasi-static spring;
+          kappa = k_s/k_x > 0, omega = sqrt(k_x/m)/(2 pi f) > 0, zeta = c/(2 sqrt(m k_s)) >= 0
+          (default 0). Scalars (decimal strings or floats); flat punch; sine, Fourier and
+          piecewise-linear waves.
 
 Scalar arguments give a scalar. Raises ValueError (bad input, gamma without contact, beta <= 0)
 and vibrofric.SolverError (the solver did not converge), for an array the first failing
@@ -1186,9 +1193,20 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       "mu",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& profile,
          const py::object& digits, const py::object& type, const py::object& threads, const py::object& max_iterations,
-         bool escalate, bool strings, bool nan_on_error, bool certify) {
+         bool escalate, bool strings, bool nan_on_error, bool certify, const py::object& kappa,
+         const py::object& omega, const py::object& zeta) {
         Evaluation e;
         e.quantity = Quantity::mu;
+        if (!kappa.is_none() || !omega.is_none() || !zeta.is_none()) {
+          if (kappa.is_none() || omega.is_none())
+            throw InputError(std::string("missing ") + (kappa.is_none() ? "kappa" : "omega") +
+                             ": rig dynamics needs kappa and omega (zeta is optional)");
+          if (certify) throw InputError("certify: certified values exist for the quasi-static model only, not with kappa/omega");
+          if (!escalate) throw InputError("escalate=False: rig dynamics is always computed in mpfr at two precisions");
+          e.rig = RigSpec{scalar_text(kappa, "kappa"), scalar_text(omega, "omega"),
+                          zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta")};
+          check_rig(*e.rig);
+        }
         e.nan_on_error = nan_on_error;
         e.certify = certify;
         e.digits = optional_int(digits, "digits");
@@ -1203,7 +1221,8 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "profile"_a = "flat", "digits"_a = py::none(),
       "type"_a = py::none(), "threads"_a = 0, "max_iterations"_a = py::none(), "escalate"_a = true,
-      "strings"_a = false, "nan_on_error"_a = false, "certify"_a = false, mu_doc);
+      "strings"_a = false, "nan_on_error"_a = false, "certify"_a = false, "kappa"_a = py::none(),
+      "omega"_a = py::none(), "zeta"_a = py::none(), mu_doc);
 
   m.def(
       "psi",

@@ -1,0 +1,61 @@
+"""Rig dynamics from Python (kappa, omega, zeta; model.md): the tool's digits, the quasi-static
+model untouched without them, arrays, and the refusals."""
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import vibrofric
+
+TOOL = os.environ.get("VIBROFRIC_TOOL")
+RIG = dict(kappa="3", omega="10", zeta="0.1")
+
+
+def tool(*args):
+    return subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()[0]
+
+
+@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+def test_the_tools_digits():
+    args = ["mu", "--wave", "triangle", "--beta", "2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10", "--zeta", "0.1"]
+    assert vibrofric.mu("triangle", 2, -0.4, digits=25, strings=True, **RIG) == tool(*args, "--digits", "25")
+    assert vibrofric.mu("triangle", 2, -0.4, **RIG) == float(tool(*args, "--type", "double"))
+
+
+def test_without_the_rig_the_paper_and_with_it_another_value():
+    plain = vibrofric.mu("triangle", 2, -0.4)
+    assert plain == vibrofric.mu("triangle", 2, -0.4, kappa=None, omega=None)
+    # the series stiffness k_s k_x/(k_s + k_x) lowers beta to 1.5; the body's mass adds 2.0e-3 at omega = 10
+    series = vibrofric.mu("triangle", 1.5, -0.4)
+    assert 1.5e-3 < vibrofric.mu("triangle", 2, -0.4, **RIG) - series < 2.5e-3
+
+
+def test_arrays_broadcast_like_mu():
+    values = vibrofric.mu("sine", [0.5, 1.0], 2.0, kappa=1, omega=2, zeta=0.02)
+    assert values.shape == (2,)
+    assert values[0] == vibrofric.mu("sine", 0.5, 2.0, kappa=1, omega=2, zeta=0.02)
+
+
+@pytest.mark.parametrize("kw, words", [
+    (dict(kappa=1), ("omega",)),
+    (dict(omega=1, zeta=0.1), ("kappa",)),
+    (dict(kappa=0, omega=1), ("kappa", "> 0")),
+    (dict(kappa=1, omega=-1), ("omega", "> 0")),
+    (dict(kappa=1, omega=1, zeta=-0.5), ("zeta", ">= 0")),
+    (dict(kappa=1, omega=1, zeta=float("nan")), ("zeta",)),
+    (dict(kappa=1, omega=1, profile="sphere"), ("does not decouple",)),
+    (dict(kappa=1, omega=1, certify=True), ("certify",)),
+])
+def test_refusals_are_one_line(kw, words):
+    with pytest.raises(ValueError) as info:
+        vibrofric.mu("sine", 1.0, 0.5, **kw)
+    msg = str(info.value)
+    assert "\n" not in msg
+    for w in words:
+        assert w in msg, (w, msg)
+
+
+def test_power_has_no_closed_form_motion():
+    with pytest.raises(ValueError, match="closed form"):
+        vibrofric.mu("power:3", 1.0, 0.5, kappa=1, omega=2)
