@@ -785,7 +785,7 @@ std::string wave_repr(const PyWave& w) {
   return "<vibrofric.Wave " + s.name + ">";
 }
 
-constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
+constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
 
 The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
 (mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given
@@ -798,6 +798,9 @@ E1, E2 Pa > 0; nu1, nu2 in (-1, 0.5]; G1, G2 Pa (default E/(2(1 + nu))); v0 m/s;
 half their peak-to-peak, returned as A_m); mu0 > 0; exactly one of u_mean (m, mean indentation) and F_N (N, mean load).
 shape 'flat' (radius m), 'sphere' (R m), 'cone' (half_angle degrees), 'wearflat' (R, flat_radius m)
 or 'profile:FILE' (heights in m). Numbers as for mu() (floats by their shortest decimal text).
+mass kg and k_system N/m (both, flat punch; damping N s/m optional): rig dynamics (model.md), a body
+of mass m on the apparatus' spring; then kappa, omega, zeta and the rig's stick, slip and flight
+fractions and Floquet multiplier follow contact_fraction.
 
 Returns a dict with exactly the tool's output names, in its order: shape, A_m (given unit),
 E_star_Pa, G_star_Pa, k_z_N_per_m and k_x_N_per_m (flat) or contact_radius_max_m (curved), lambda
@@ -1083,7 +1086,8 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
          const py::object& nu2, const py::object& v0, const py::object& f, const py::object& A, const py::object& mu0,
          const py::object& u_mean, const py::object& F_N, const py::object& G1, const py::object& G2,
          const py::object& shape, const py::object& radius, const py::object& R, const py::object& half_angle,
-         const py::object& flat_radius, const py::object& unit, const py::object& digits, const py::object& type,
+         const py::object& flat_radius, const py::object& unit, const py::object& mass, const py::object& k_system,
+         const py::object& damping, const py::object& digits, const py::object& type,
          const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
         const WaveSpec w = to_wave(wave);
         if (!unit.is_none() && !py::isinstance<py::str>(unit))
@@ -1097,7 +1101,7 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
             {"E1", &E1},   {"nu1", &nu1},       {"E2", &E2},   {"nu2", &nu2},   {"G1", &G1},
             {"G2", &G2},   {"v0", &v0},         {"f", &f},     {"A", &A},       {"u_mean", &u_mean},
             {"F_N", &F_N}, {"mu0", &mu0},       {"radius", &radius}, {"R", &R}, {"half_angle", &half_angle},
-            {"flat_radius", &flat_radius}};
+            {"flat_radius", &flat_radius}, {"mass", &mass}, {"k_system", &k_system}, {"damping", &damping}};
         auto request_of = [&](const std::map<std::string, py::object>& values) {
           PhysicalRequest request;
           request.shape.text = shape.cast<std::string>();
@@ -1165,7 +1169,8 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       "wave"_a, py::kw_only(), "E1"_a, "nu1"_a, "E2"_a, "nu2"_a, "v0"_a, "f"_a, "A"_a = py::none(), "mu0"_a,
       "u_mean"_a = py::none(), "F_N"_a = py::none(), "G1"_a = py::none(), "G2"_a = py::none(), "shape"_a = "flat",
       "radius"_a = py::none(), "R"_a = py::none(), "half_angle"_a = py::none(), "flat_radius"_a = py::none(),
-      "unit"_a = py::none(), "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
+      "unit"_a = py::none(), "mass"_a = py::none(), "k_system"_a = py::none(), "damping"_a = py::none(),
+      "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
       "strings"_a = false, "nan_on_error"_a = false, physical_doc);
 
   m.def(

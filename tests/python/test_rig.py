@@ -59,3 +59,17 @@ def test_refusals_are_one_line(kw, words):
 def test_power_has_no_closed_form_motion():
     with pytest.raises(ValueError, match="closed form"):
         vibrofric.mu("power:3", 1.0, 0.5, kappa=1, omega=2)
+
+
+@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+def test_physical_with_a_mass_is_the_tools():
+    kw = dict(E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, radius=1e-3, v0=1e-3, f=20000, A=2e-6, u_mean=1e-6, mu0=0.3)
+    out = vibrofric.physical("sine", mass=0.01, k_system=1e7, damping=5, strings=True, **kw)
+    args = ["physical", "--wave", "sine"] + [x for k, v in kw.items() for x in ("--" + k.replace("_", "-"), repr(v))]
+    lines = subprocess.run([TOOL, *args, "--mass", "0.01", "--k-system", "10000000.0", "--damping", "5", "--type", "double"],
+                           check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()
+    printed = dict(line.split(" = ") for line in lines)
+    for name in ("kappa", "omega", "zeta", "mu_over_mu0", "stick_fraction", "flight_fraction"):
+        assert out[name] == printed[name], name
+    with pytest.raises(ValueError, match="k_system"):
+        vibrofric.physical("sine", mass=0.01, **kw)

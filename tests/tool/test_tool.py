@@ -1452,7 +1452,7 @@ HELP_FLAGS = {
     "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG,
               {"--quantity": "mu", "--threads": "0", "--format": "csv"}),
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
-                  "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--format"]
+                  "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
     "trace": (["--beta", "--gamma", "--points", "--digits"] + WAVE, {"--points": "1000", "--digits": "17"}),
     "fit": (["--harmonics", "--output"] + WAVE, {}),
@@ -2157,6 +2157,33 @@ def rig_tests():
             if f[3:6] != ["3", "10", "0.1"] or f[6] != one:
                 raise Fail("sweep row %r against mu %s" % (row, one))
     case("rig: sweep rows name the rig and equal mu's values", sweep_rows)
+
+    rig_physical = ["physical", "--wave", "sine", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33",
+                    "--radius", "1e-3", "--v0", "1e-3", "--f", "20000", "--A", "2e-6", "--u-mean", "1e-6", "--mu0", "0.3"]
+
+    def physical_rig():
+        out = json.loads(ok_run(rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "5", "--format", "json"]))
+        import math
+        k_x = float(out["k_x_N_per_m"])
+        for name, want in (("kappa", 1e7 / k_x), ("omega", math.sqrt(k_x / 0.01) / (2 * math.pi * 20000)),
+                           ("zeta", 5 / (2 * math.sqrt(0.01 * 1e7)))):
+            if abs(float(out[name]) / want - 1) > 1e-14:
+                raise Fail("physical --mass: %s = %s, expected %r" % (name, out[name], want))
+        one = ok_run(["mu", "--wave", "sine", "--beta", out["beta"], "--gamma", out["gamma"], "--kappa", out["kappa"],
+                      "--omega", out["omega"], "--zeta", out["zeta"], "--digits", "20"]).splitlines()[0]
+        if abs(F(one) / F(out["mu_over_mu0"]) - 1) > F("1e-15"):
+            raise Fail("physical --mass: mu_over_mu0 %s against mu with its kappa, omega, zeta: %s" % (out["mu_over_mu0"], one))
+        plain = json.loads(ok_run(rig_physical + ["--format", "json"]))
+        if "kappa" in plain or plain["mu_over_mu0"] == out["mu_over_mu0"]:
+            raise Fail("physical without --mass: %r" % plain)
+    case("rig: physical --mass --k-system gives kappa, omega, zeta and mu's value", physical_rig)
+    bad("rig: physical --mass alone", rig_physical + ["--mass", "0.01"], [], ["--k-system"])
+    bad("rig: physical --damping < 0", rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "-1"],
+        ["-1"], ["--damping"])
+    bad("rig: physical --mass on a sphere",
+        ["physical", "--wave", "sine", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33", "--shape", "sphere",
+         "--R", "3e-3", "--v0", "1e-3", "--f", "20000", "--A", "2e-6", "--u-mean", "1e-6", "--mu0", "0.3", "--mass", "0.01",
+         "--k-system", "1e7"], ["sphere"], ["does not decouple"])
 
 
 def collect():

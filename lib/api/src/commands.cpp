@@ -22,7 +22,8 @@ std::vector<std::pair<const char*, InputText*>> PhysicalRequest::inputs() {
           {"G1", &G1},         {"G2", &G2},          {"v0", &v0},   {"f", &f},
           {"A", &A},           {"u_mean", &u_mean},  {"F_N", &F_N}, {"mu0", &mu0},
           {"shape", &shape},   {"radius", &radius},  {"R", &R},     {"half_angle", &half_angle},
-          {"flat_radius", &flat_radius}, {"unit", &unit}};
+          {"flat_radius", &flat_radius}, {"unit", &unit}, {"mass", &mass}, {"k_system", &k_system},
+          {"damping", &damping}};
 }
 
 namespace {
@@ -96,6 +97,14 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
 }
 
 namespace {
+// evaluate_one's value and text under a rig, with the rig's report.
+Evaluated rig_evaluated(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+                        const Options& solver, RigReport& report) {
+  const mpfr v = detail::rig_value(wave, point, rig, precision, solver, &report);
+  report.mu = detail::rig_text(v, precision);
+  return {report.mu, v};
+}
+
 PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
                             std::vector<std::string>* warnings) {
   using Input = InputText;
@@ -161,6 +170,28 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   auto g = physical_groups(in);
   BatchOptions options = base;
   options.profile = ProfileSpec{};
+  // Rig dynamics (model.md): the body's mass and the apparatus' stiffness, on the punch (k_x, Eq. 1).
+  const bool rig = r.mass.given() || r.k_system.given() || r.damping.given();
+  if (rig) {
+    if (!r.mass.given() || !r.k_system.given())
+      throw InputError("missing " + (r.mass.given() ? r.k_system.name : r.mass.name) + ": rig dynamics needs " +
+                       r.mass.name + " and " + r.k_system.name + " (" + r.damping.name + " is optional)");
+    if (kind != "flat")
+      throw InputError(r.mass.name + " with " + r.shape.name + " " + detail::visible(shape) +
+                       ": the springs of a curved contact share the body, so the MDR row does not decouple "
+                       "(rig dynamics: the flat punch only)");
+    const mpfr m = positive(r.mass), ks = positive(r.k_system);
+    const mpfr c = opt(r.damping);
+    if (r.damping.given() && !(c >= 0)) throw InputError(r.damping.name + " = " + *r.damping.text + ": expected a value >= 0");
+    RigSpec spec;
+    spec.kappa_value = mpfr(ks / g.k_x);
+    spec.omega_value = mpfr(sqrt(mpfr(g.k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * in.f));
+    spec.zeta_value = mpfr(c / (2 * sqrt(mpfr(m * ks))));
+    spec.kappa = format_significant(*spec.kappa_value, 17);
+    spec.omega = format_significant(*spec.omega_value, 17);
+    spec.zeta = format_significant(*spec.zeta_value, 17);
+    options.rig = spec;
+  }
   mpfr length = 1;
   std::optional<mpfr> lambda;
   if (kind == "sphere") {
@@ -261,7 +292,9 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   // requested digits.
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
-  const Evaluated ratio = evaluate_one(wave, Quantity::mu, point, fine, options);
+  RigReport report;
+  const Evaluated ratio = options.rig ? rig_evaluated(wave, point, *options.rig, fine, options.solver, report)
+                                      : evaluate_one(wave, Quantity::mu, point, fine, options);
   const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(ratio.value, digits) : ratio.text;
   const mpfr mu = ratio.value * in.mu0;
   mpfr edge;
@@ -351,7 +384,21 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   else
     field("beta_c", "inf");  // an upward jump of n: stick at every beta
   line("contact_fraction", contact_fraction);
-  if (kind == "flat") line("stick_fraction", stick_fraction);
+  if (options.rig) {
+    // the rig's periodic state: its own fractions, and the frequency ratios it was computed with
+    line("kappa", *options.rig->kappa_value);
+    line("omega", *options.rig->omega_value);
+    line("zeta", *options.rig->zeta_value);
+    field("stick_fraction", report.stick_fraction);
+    field("slip_fraction", report.slip_fraction);
+    field("backward_slip_fraction", report.backward_fraction);
+    field("flight_fraction", report.flight_fraction);
+    char floquet[32];
+    std::snprintf(floquet, sizeof floquet, "%.6g", report.floquet);
+    field("floquet_multiplier", floquet);
+  } else if (kind == "flat") {
+    line("stick_fraction", stick_fraction);
+  }
   return rec;
 }
 }  // namespace

@@ -24,6 +24,7 @@ exact::Rational rig_number(const std::string& text, const char* name, bool zero_
 
 // k with Ω²κ = k² exactly (the undamped slip resonance of harmonic k), else 0.
 unsigned resonance(const RigSpec& rig) {
+  if (rig.kappa_value || rig.omega_value || rig.zeta_value) return 0;
   const exact::Rational q = rig_number(rig.omega, "omega", false) * rig_number(rig.omega, "omega", false) *
                             rig_number(rig.kappa, "kappa", false);
   if (rig_number(rig.zeta, "zeta", true) != 0) return 0;
@@ -46,7 +47,9 @@ Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsign
   const auto w = make_waveform<mpfr>(wave);
   const mpfr beta = p.beta_value ? mpfr(*p.beta_value) : parse_real<mpfr>(p.beta, "beta");
   const mpfr gamma = p.gamma_value ? mpfr(*p.gamma_value) : parse_real<mpfr>(p.gamma, "gamma");
-  const RigParameters<mpfr> params{mpfr(rig.kappa), mpfr(rig.omega), mpfr(rig.zeta), resonant};
+  const auto value = [](const std::optional<mpfr>& v, const std::string& text) { return v ? mpfr(*v) : mpfr(text); };
+  const RigParameters<mpfr> params{value(rig.kappa_value, rig.kappa), value(rig.omega_value, rig.omega),
+                                   value(rig.zeta_value, rig.zeta), resonant};
   if (seed) return {solve_rig(*w, beta, gamma, params, seed->r, opt), digits};
   return {solve_rig(*w, beta, gamma, params, opt), digits};
 }
@@ -73,6 +76,13 @@ bool decides(const mpfr& lo, const mpfr& hi, const Precision& precision, int dig
 }  // namespace
 
 void check_rig(const RigSpec& rig) {
+  if (rig.kappa_value || rig.omega_value || rig.zeta_value) {
+    if (!(rig.kappa_value && *rig.kappa_value > 0) || !(rig.omega_value && *rig.omega_value > 0) ||
+        !(rig.zeta_value && *rig.zeta_value >= 0))
+      throw InputError("rig dynamics: expected kappa > 0, omega > 0 and zeta >= 0 (kappa = " + rig.kappa +
+                       ", omega = " + rig.omega + ", zeta = " + rig.zeta + ")");
+    return;
+  }
   rig_number(rig.kappa, "kappa", false);
   rig_number(rig.omega, "omega", false);
   rig_number(rig.zeta, "zeta", true);
@@ -131,17 +141,20 @@ RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& 
   detail::ContactCheck check(wave, Quantity::mu);
   check(point);
   RigReport report;
-  const mpfr v = detail::rig_value(wave, point, rig, precision, solver, &report);
-  // The text evaluate() prints: the value rounded to the type, its significant digits.
+  report.mu = detail::rig_text(detail::rig_value(wave, point, rig, precision, solver, &report), precision);
+  return report;
+}
+
+std::string detail::rig_text(const mpfr& v, const Precision& precision) {
   const int digits = output_digits(precision);
   switch (precision.type) {
-    case NumberType::float64: report.mu = format_significant(detail::rounded<double>(v), digits); break;
-    case NumberType::float80: report.mu = format_significant(detail::rounded<long double>(v), digits); break;
-    case NumberType::bin50: report.mu = format_significant(detail::rounded<bin50>(v), digits); break;
-    case NumberType::bin100: report.mu = format_significant(detail::rounded<bin100>(v), digits); break;
-    case NumberType::mpfr: report.mu = format_significant(v, digits); break;
+    case NumberType::float64: return format_significant(detail::rounded<double>(v), digits);
+    case NumberType::float80: return format_significant(detail::rounded<long double>(v), digits);
+    case NumberType::bin50: return format_significant(detail::rounded<bin50>(v), digits);
+    case NumberType::bin100: return format_significant(detail::rounded<bin100>(v), digits);
+    case NumberType::mpfr: break;
   }
-  return report;
+  return format_significant(v, digits);
 }
 
 }  // namespace vibrofric

@@ -42,6 +42,10 @@ struct PhysicalRequest {
   // Instead of A, for a samples wave: the unit of its value column (m, mm, um, µm, nm); A is then
   // half the record's peak-to-peak, printed as A_m after the shape.
   InputText unit{{}, "unit"};
+  // Rig dynamics (model.md), flat punch: the body's mass (kg), the apparatus' stiffness (N/m) and
+  // an optional damper (N s/m); then κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)) are printed
+  // and μ is the rig's.
+  InputText mass{{}, "mass"}, k_system{{}, "k_system"}, damping{{}, "damping"};
 
   // Every input with its member's name, in this order, for a front end that fills them by name.
   std::vector<std::pair<const char*, InputText*>> inputs();

@@ -3,6 +3,7 @@
 // checks of it, from decimal inputs to decimal text. The core's RigSolver (core/dynamics.hpp)
 // computes in mpfr at two working precisions; the printed digits are those both agree on.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -18,6 +19,9 @@ struct BatchOptions;
 // The rig's dimensionless parameters as typed: κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)).
 struct RigSpec {
   std::string kappa, omega, zeta = "0";
+  // Computed values (physical's, from a mass and stiffnesses): then these, rounded once, and the
+  // texts only name them in messages; no exact resonance is decided.
+  std::optional<mpfr> kappa_value, omega_value, zeta_value;
 };
 
 // One point's periodic state. Each number is printed with the significant digits (at most the
@@ -46,6 +50,8 @@ namespace detail {
 // to the digits for mpfr) wherever the two precisions' difference is a true bound of the error.
 mpfr rig_value(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
                const Options& solver, RigReport* report = nullptr);
+// The text evaluate() prints for that value: rounded to the type, its significant digits.
+std::string rig_text(const mpfr& value, const Precision& precision);
 }  // namespace detail
 
 }  // namespace vibrofric
