@@ -190,6 +190,54 @@ TEST(RigDynamics, ExactResonanceLiesBetweenItsNeighbours) {
   EXPECT_LT(abs(mpfr((below + above) / 2 - at)), mpfr("1e-12"));
 }
 
+// Part II's abstract: "the limiting cases of a very stiff and a very soft system reproduce earlier
+// results". In our numbers both reproduce Part I (the paper's g_w(β, γ), the contact spring pulled
+// at v0): a stiff system (κ → ∞ at fixed Ω) as O(1/κ), a soft one carrying a heavy body (κ → 0,
+// then Ω → 0: the body slides at v0) as O(Ω²). Sine and triangle, β = 1, γ = 1/2, ζ = 0.1.
+TEST(RigDynamics, PartTwoStiffAndSoftLimitsReproduceThePapersModel) {
+  for (const char* name : {"sine", "triangle"}) {
+    SCOPED_TRACE(name);
+    const auto w = wave_named<double>(name);
+    const double g = solve(*w, 1.0, 0.5).mu;
+    double previous = 0;
+    for (double k : {1e2, 1e3, 1e4}) {  // stiff
+      const double d = std::fabs(solve_rig(*w, 1.0, 0.5, RigParameters<double>{k, 2, 0.1, 0}).mu - g);
+      if (previous > 0) {
+        EXPECT_NEAR(previous / d, 10, 1.5) << "kappa " << k;
+      }
+      previous = d;
+    }
+    EXPECT_LT(previous, 1e-4);
+    previous = 0;
+    for (double omega : {0.1, 0.03, 0.01}) {  // soft (κ = 1e-4), ever heavier
+      const double d = std::fabs(solve_rig(*w, 1.0, 0.5, RigParameters<double>{1e-4, omega, 0.1, 0}).mu - g);
+      if (previous > 0) {
+        const double order = std::log(previous / d) / std::log(omega == 0.03 ? 0.1 / 0.03 : 3.0);
+        EXPECT_NEAR(order, 2, 0.25) << "omega " << omega;
+      }
+      previous = d;
+    }
+    EXPECT_LT(previous, 5e-5);
+  }
+}
+
+// Part II's abstract: "a new resonant case eliminates the critical sliding velocity". Above β_c
+// the quasi-static μ̄ is μ0 exactly (Eq. 6); at the undamped resonance Ω²κ = 1 (sine, γ = 1/2)
+// μ̄ stays far below at β = 100 and 1000 (about 0.30 and 0.32): no critical velocity up to there.
+// Damping restores one: with ζ = 0.02 the reduction is gone by β = 1000 (μ̄ = 1 exactly).
+TEST(RigDynamics, PartTwoUndampedResonanceReducesFrictionFarAboveTheCriticalVelocity) {
+  const auto w = std::make_unique<Sine<double>>();
+  for (double beta : {100.0, 1000.0}) {
+    EXPECT_EQ(solve(*w, beta, 0.5).mu, 1.0);
+    const double mu = solve_rig(*w, beta, 0.5, RigParameters<double>{1, 1, 0, 1}).mu;
+    EXPECT_LT(mu, 0.4) << beta;
+  }
+  EXPECT_LT(solve_rig(*w, 100.0, 0.5, RigParameters<double>{1, 1, 0.02, 0}).mu, 0.95);
+  const auto damped = solve_rig(*w, 1000.0, 0.5, RigParameters<double>{1, 1, 0.02, 0});
+  EXPECT_LT(damped.stick_fraction, 1e-15);  // s = n throughout the contact (up to rounding): μ̄ = μ0
+  EXPECT_NEAR(damped.mu, 1.0, 1e-14);
+}
+
 TEST(RigDynamics, RefusesWavesWithoutAClosedFormMotionAndBadParameters) {
   Power<double> p(3, "power:3");
   EXPECT_THROW(solve_rig<double>(p, 1, 0.5, {1, 1, 0, 0}), InputError);
