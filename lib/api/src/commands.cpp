@@ -389,10 +389,15 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     line("kappa", *options.rig->kappa_value);
     line("omega", *options.rig->omega_value);
     line("zeta", *options.rig->zeta_value);
-    field("stick_fraction", report.stick_fraction);
-    field("slip_fraction", report.slip_fraction);
-    field("backward_slip_fraction", report.backward_fraction);
-    field("flight_fraction", report.flight_fraction);
+    // the report's digits (those both precisions agree on, of the finer request) to the request's
+    const auto fraction = [&](const char* name, const std::string& text) {
+      const std::string shorter = format_significant(mpfr(text), digits);
+      field(name, text.size() < shorter.size() ? text : shorter);
+    };
+    fraction("stick_fraction", report.stick_fraction);
+    fraction("slip_fraction", report.slip_fraction);
+    fraction("backward_slip_fraction", report.backward_fraction);
+    fraction("flight_fraction", report.flight_fraction);
     char floquet[32];
     std::snprintf(floquet, sizeof floquet, "%.6g", report.floquet);
     field("floquet_multiplier", floquet);
