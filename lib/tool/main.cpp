@@ -693,6 +693,17 @@ std::string rounding_name(const Precision& p) {
                                     : "to the nearest " + number_type_name(p.type);
 }
 
+// One point's record as CSV (a header and a row) or JSON (an object); status 0.
+int write_record(const std::vector<std::string>& names, const std::vector<std::string>& values, Format format) {
+  if (format == Format::csv) {
+    write_csv_row(names);
+    write_csv_row(values);
+  } else {
+    std::cout << json_record(names, values).dump(1) << '\n';
+  }
+  return 0;
+}
+
 // mu with --kappa/--omega: the value, then the periodic state's fractions and sizes.
 int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, const Precision& precision, Format format) {
   const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver);
@@ -714,13 +725,7 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
     names.push_back(name);
     values.push_back(value);
   }
-  if (format == Format::csv) {
-    write_csv_row(names);
-    write_csv_row(values);
-  } else {
-    std::cout << json_record(names, values).dump(1) << '\n';
-  }
-  return 0;
+  return write_record(names, values, format);
 }
 
 int run_point(const Flags& f, Quantity q) {
@@ -766,13 +771,7 @@ int run_point(const Flags& f, Quantity q) {
       values.push_back(v);
     }
   }
-  if (format == Format::csv) {
-    write_csv_row(names);
-    write_csv_row(values);
-  } else {
-    std::cout << json_record(names, values).dump(1) << '\n';
-  }
-  return 0;
+  return write_record(names, values, format);
 }
 
 int run_mu(const Flags& f) { return run_point(f, Quantity::mu); }
