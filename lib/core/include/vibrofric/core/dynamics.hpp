@@ -628,7 +628,13 @@ class RigSolver {
     Real a = g.u;
     const Real end = g.v;
     auto f = [&](const detail::Motion<Real>& m, const Real& x) { return event(r, g, m, a, x); };
-    for (int guard = 0; guard < 64; ++guard) {
+    // Stick and slip alternate at most a few times per oscillation of the body (K_stick is its
+    // fastest): more events than that is chattering, an error.
+    using std::ceil;
+    using std::sqrt;
+    const Real oscillations = ceil(Real((sqrt(K_stick_) + c_ / 2) * (end - a) / boost::math::constants::two_pi<Real>()));
+    const long most = 64 + 8 * static_cast<long>(std::min(oscillations, Real(1e7)));
+    for (long guard = 0; guard < most; ++guard) {
       const detail::Motion<Real> m = motion(r, g, a);
       Real stop = end;
       bool fired = false;
@@ -736,7 +742,7 @@ class RigSolver {
       a = stop;
       if (!(a < end)) return;
     }
-    throw SolverError("rig dynamics: more than 64 events in one piece of the wave");
+    throw SolverError("rig dynamics: more than " + std::to_string(most) + " events in one piece of the wave (chattering)");
   }
 
   // How far beyond x0 Y has no extreme outside those seen (for the amplitude's grid): where Y'
@@ -854,8 +860,29 @@ class RigSolver {
     State pu;
     auto r = residual(u, pu);
     Real nr = norm(r);
+    // While the map contracts fast (residual at least halved a period) its own iteration is the
+    // surest way in, also where the state sits on a kink of the map (s clamped to ±n at φ = 0,
+    // where difference quotients straddle the kink and Newton wanders).
+    for (int k = 0; k < 200; ++k) {
+      const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
+      if (nr <= 64 * eps * scale) break;
+      State next;
+      const auto rn = residual(pu, next);
+      const Real nn = norm(rn);
+      u = pu;
+      pu = next;
+      r = rn;
+      const bool fast = nn <= nr / 2;
+      nr = nn;
+      if (!fast) break;
+    }
     std::array<std::array<Real, 3>, 3> J{};
-    const int max_steps = 60;
+    // Whole periods of stick (a start far below the state: s climbs by about β a period, and
+    // the map is neutral in s meanwhile) may last up to 2 max n/β periods: rounds of 8 periods.
+    using std::ceil;
+    const Real climb = ceil(Real(2 * (gamma_ + wave_.maximum()) / beta_ / 8));
+    const int neutral_rounds = 8 + static_cast<int>(std::min(climb, Real(2000)));
+    const int max_steps = 60 + neutral_rounds;
     int neutral = 0, restarts = 0;
     // Jacobian of P by central differences (step ε^(1/3) relative).
     auto jacobian = [&]() {
@@ -904,7 +931,8 @@ class RigSolver {
       if (M[0][0] == 0 || M[1][1] == 0 || M[2][2] == 0) {
         // A neutral direction of J (a whole period of stick from a transient start, where any X_c
         // would repeat): no Newton step; let the dynamics move the state on.
-        if (++neutral > 8) throw SolverError("rig dynamics: no periodic state found (the one-period map stays neutral)");
+        if (++neutral > neutral_rounds)
+          throw SolverError("rig dynamics: no periodic state found (the one-period map stays neutral)");
         for (int k = 0; k < 8; ++k) u = period(u);
         r = residual(u, pu);
         nr = norm(r);
@@ -918,11 +946,21 @@ class RigSolver {
       }
       // Damped step: halve until the residual decreases.
       Real lambda = 1;
+      // Far from the state a full step can land anywhere (the map is only piecewise smooth):
+      // at most the state's own size plus one, and a trial the map cannot follow is a bad step.
       bool improved = false;
+      const Real size = std::max({abs(d[0]), abs(d[1]) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(d[2])});
+      if (size > scale + 1) lambda = (scale + 1) / size;
       for (int h = 0; h < 12; ++h) {
         const State trial{u.y + lambda * d[0], u.v + lambda * d[1], u.s + lambda * d[2]};
         State pt;
-        const auto rt = residual(trial, pt);
+        std::array<Real, 3> rt;
+        try {
+          rt = residual(trial, pt);
+        } catch (const SolverError&) {
+          lambda /= 2;
+          continue;
+        }
         const Real nt = norm(rt);
         if (nt < nr) {
           u = trial;
@@ -960,7 +998,12 @@ class RigSolver {
     const Real eps = std::numeric_limits<Real>::epsilon();
     Real previous = -1;
     for (int it = 0; it < 40; ++it) {
-      const State pu = period(u);
+      State pu;
+      try {
+        pu = period(u);
+      } catch (const SolverError&) {
+        return false;
+      }
       const std::array<Real, 3> r{pu.y - u.y, pu.v - u.v, pu.s - u.s};
       const Real nr = std::max({abs(r[0]), abs(r[1]), abs(r[2])});
       const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
