@@ -10,7 +10,8 @@
 //
 // Cost bound (legitimately slow requests, not bugs, skipped): `verify`; --digits above 200 (60
 // with quadrature); more than 40 β points or 8 γ values; --points above 2000; --max-levels above
-// 10; --threads above 4. Wave files: "@F" and "@S" in an argument stand for fourier:FILE and
+// 10; --threads above 4; a rig flag (--kappa, --omega, --zeta, --mass, --k-system, --damping) of
+// 100 or more, or with --digits above 60 or a samples wave. Wave files: "@F" and "@S" in an argument stand for fourier:FILE and
 // samples:FILE of two small files made at start-up; any other file name is skipped (the fuzzer
 // must not read /dev/zero or the disk).
 #include <sys/mman.h>
@@ -93,7 +94,7 @@ bool too_expensive(const std::vector<std::string>& args) {
   // `fit --output FILE` writes a file: the fuzzer must not touch the disk.
   for (const auto& a : args)
     if (a.rfind("--output", 0) == 0) return true;
-  bool quadrature = false;
+  bool quadrature = false, rig = false, samples = false;
   long digits = 50;
   for (std::size_t i = 2; i < args.size(); ++i) {
     if (args[i].rfind("--", 0) != 0) continue;
@@ -111,19 +112,27 @@ bool too_expensive(const std::vector<std::string>& args) {
     if (name == "max-levels" && n > 10) return true;
     if (name == "threads" && n > 4) return true;
     if (name == "area" && value == "quadrature") quadrature = true;
+    // rig dynamics: the event grid grows with the body's frequency, omega·sqrt(1 + kappa) (and the
+    // damper's rate); a measured sample of 200 pieces costs a second a point
+    if (name == "kappa" || name == "omega" || name == "zeta" || name == "mass" || name == "k-system" || name == "damping") {
+      rig = true;
+      const double v = std::strtod(value.c_str(), nullptr);
+      if (!(v < 100)) return true;  // NaN and huge values included
+    }
+    if (name == "wave" && value.rfind("samples:", 0) == 0) samples = true;
     if (name == "gamma" && std::count(value.begin(), value.end(), ',') > 8) return true;
     if (name == "beta") {
       const auto colon = value.rfind(':');
       if (colon != std::string::npos && as_int(value.substr(colon + 1)) > 40) return true;
     }
   }
-  return quadrature && digits > 60;
+  return (quadrature && digits > 60) || (rig && (digits > 60 || samples));
 }
 
 // SolverError messages of the library (the `what` of every throw site), after "vibrofric: error: ".
 bool solver_message(const std::string& m) {
   for (const char* prefix : {"wave ", "Fourier waveform ", "extremum of the Fourier waveform", "inflection of the Fourier waveform",
-                             "acos(", "waveform ", "tanh-sinh", "no progress", "claims: "})
+                             "acos(", "waveform ", "tanh-sinh", "no progress", "claims: ", "rig dynamics: "})
     if (m.rfind(prefix, 0) == 0) return true;
   return false;
 }
