@@ -1208,8 +1208,10 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
                              ": rig dynamics needs kappa and omega (zeta is optional)");
           if (certify) throw InputError("certify: certified values exist for the quasi-static model only, not with kappa/omega");
           if (!escalate) throw InputError("escalate=False: rig dynamics is always computed in mpfr at two precisions");
-          e.rig = RigSpec{scalar_text(kappa, "kappa"), scalar_text(omega, "omega"),
-                          zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta")};
+          e.rig.emplace();
+          e.rig->kappa = scalar_text(kappa, "kappa");
+          e.rig->omega = scalar_text(omega, "omega");
+          e.rig->zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
           check_rig(*e.rig);
         }
         e.nan_on_error = nan_on_error;
@@ -1218,6 +1220,10 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
         e.type = type;
         e.profile = to_profile(profile);
         e.profile_text = py_repr(profile);
+        if (e.rig && e.profile.kind != ProfileKind::flat)
+          throw InputError("kappa/omega with profile = " + e.profile_text +
+                           ": the springs of a curved contact share the body, so the MDR row does not decouple "
+                           "(rig dynamics: the flat punch only)");
         e.threads = to_threads(threads);
         if (auto mi = optional_int(max_iterations, "max_iterations")) e.max_iterations = *mi;
         e.escalate = escalate;

@@ -79,8 +79,9 @@ const char* const kRig =
     "rig dynamics (model.md): --kappa K --omega W [--zeta Z] replace the paper's quasi-static spring by\n"
     "  a body of mass m on a system spring k_s (damper c): K = k_s/k_x, W = sqrt(k_x/m)/(2 pi f),\n"
     "  Z = c/(2 sqrt(m k_s)); flat punch; sine, Fourier and piecewise-linear waves. mu prints the\n"
-    "  stick, slip and flight fractions, the body's amplitude, the largest backward slip and the\n"
-    "  largest Floquet multiplier after the value.\n";
+    "  stick, slip and flight fractions (they add to 1; backward_slip_fraction is the part of the\n"
+    "  slip that goes backward), the body's amplitude, the largest backward slip and the largest\n"
+    "  Floquet multiplier (0: below what difference quotients resolve) after the value.\n";
 
 const char* const kProfiles =
     "profiles P (model.md MDR): flat (the flat punch), sphere, cone, power:N (N >= 1, sigma = x^N),\n"
@@ -602,7 +603,10 @@ BatchOptions batch_options(const Flags& f) {
                        ": rig dynamics needs --kappa and --omega (--zeta is optional)");
     if (f.certify) throw InputError("--certify: certified values exist for the quasi-static model only, not with --kappa/--omega");
     if (f.no_escalate) throw InputError("--no-escalate: rig dynamics is always computed in mpfr at two precisions");
-    o.rig = RigSpec{*f.kappa, *f.omega, f.zeta.value_or("0")};
+    o.rig.emplace();
+    o.rig->kappa = *f.kappa;
+    o.rig->omega = *f.omega;
+    o.rig->zeta = f.zeta.value_or("0");
     check_rig(*o.rig);
     if (o.profile.kind != ProfileKind::flat)
       throw InputError("--kappa/--omega with --profile " + detail::visible(f.profile_text.value_or("")) +

@@ -35,6 +35,12 @@ unsigned resonance(const RigSpec& rig) {
   return static_cast<unsigned>(k);
 }
 
+// "wave W, beta = B, gamma = G, kappa = K, omega = O, zeta = Z: ", as typed (computed values by their texts).
+std::string rig_context(const WaveSpec& wave, const Point& p, const RigSpec& rig) {
+  return "wave " + wave.name + ", beta = " + p.beta + ", gamma = " + p.gamma + ", kappa = " + rig.kappa +
+         ", omega = " + rig.omega + ", zeta = " + rig.zeta + ": ";
+}
+
 struct Solved {
   RigResult<mpfr> r;
   int digits;
@@ -50,8 +56,15 @@ Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsign
   const auto value = [](const std::optional<mpfr>& v, const std::string& text) { return v ? mpfr(*v) : mpfr(text); };
   const RigParameters<mpfr> params{value(rig.kappa_value, rig.kappa), value(rig.omega_value, rig.omega),
                                    value(rig.zeta_value, rig.zeta), resonant};
-  if (seed) return {solve_rig(*w, beta, gamma, params, seed->r, opt), digits};
-  return {solve_rig(*w, beta, gamma, params, opt), digits};
+  try {
+    if (seed) return {solve_rig(*w, beta, gamma, params, seed->r, opt), digits};
+    return {solve_rig(*w, beta, gamma, params, opt), digits};
+  } catch (const SolverError& e) {
+    // The point as typed, the rig's parameters too (the core names β and γ by their binary values).
+    const std::string what = e.what();
+    const auto at = what.find("rig dynamics");
+    throw SolverError(rig_context(wave, p, rig) + (at == std::string::npos ? what : what.substr(at)));
+  }
 }
 
 // The digits of x (at most `most`) on which a and b agree.
@@ -121,7 +134,7 @@ mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const P
       return b.r.mu;
     }
     if (attempt == 3)
-      throw SolverError("rig dynamics: mu did not settle to " + std::to_string(digits) + " digits (" +
+      throw SolverError(rig_context(wave, p, rig) + "rig dynamics: mu did not settle to " + std::to_string(digits) + " digits (" +
                         format_significant(a.r.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
                         format_significant(b.r.mu, digits + 2) + " at " + std::to_string(high) + ")");
     a = std::move(b);

@@ -456,7 +456,7 @@ class RigSolver {
     res.state_s = u.s;
     res.newton_steps = steps;
     res.jacobian = J;
-    res.floquet = largest_multiplier(J);
+    res.floquet = resolved_multiplier(J);
     res.relative_error = (abs(last) + 16 * eps * abs(res.mu)) / abs(res.mu);
     return res;
   }
@@ -525,26 +525,27 @@ class RigSolver {
   }
 
   // The sweeping-process rules of model.md at the start of segment g (after segment prev).
-  void enter(Run& r, const Segment& prev, const Segment& g) const {
+  void enter(Run& r, const Segment& /*prev*/, const Segment& g) const {
     const Real n = g.contact ? g.nu : Real(0), dn = g.contact ? g.dnu : Real(0);
     const Real xdot = r.v + beta_;
-    if (!g.contact || (n == 0 && !(dn > 0))) {
+    if (!g.contact) {
       if (r.s != 0) dissipate(r, Real(0));
       r.mode = RigMode::flight;
       return;
     }
-    if (r.mode == RigMode::flight) {
-      if (n > 0) {  // an upward jump out of the air: the contact re-forms stress-free and sticks
-        r.mode = RigMode::stick;
-        return;
-      }
-      // touch-down on a rising flank (n = 0, n' > 0)
+    if (n == 0) {
+      // Touch-down at a contact boundary, or n touching zero inside the contact (a minimum of
+      // γ + w at 0: no flight, but |s| ≤ n = 0 there): the contact forms stress-free, and sticks
+      // if |X'| ≤ n', else slips the way X' goes.
+      if (r.s != 0) dissipate(r, Real(0));
       using std::abs;
       r.mode = abs(xdot) <= dn ? RigMode::stick : xdot > 0 ? RigMode::forward_slip : RigMode::backward_slip;
       return;
     }
-    const Real nprev = prev.contact ? prev.nv : Real(0);
-    (void)nprev;
+    if (r.mode == RigMode::flight) {  // an upward jump out of the air: the contact re-forms stress-free and sticks
+      r.mode = RigMode::stick;
+      return;
+    }
     if (r.mode == RigMode::forward_slip) {
       if (n > r.s) {  // an upward jump ends slip
         r.mode = RigMode::stick;
@@ -1050,7 +1051,20 @@ class RigSolver {
   double store(const std::array<std::array<Real, 3>, 3>& J) const {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) jacobian_[i][j] = static_cast<double>(J[i][j]);
-    return largest_multiplier(jacobian_);
+    return resolved_multiplier(jacobian_);
+  }
+  // The largest multiplier, 0 where it is below what the difference quotients resolve
+  // (ε^(2/3) of the working type times the size of J): the map forgets its start within the period
+  // (flight, or strong damping), and the bisection's last bits would be printed as a value.
+  static double resolved_multiplier(const std::array<std::array<double, 3>, 3>& J) {
+    using std::cbrt;
+    double size = 0;
+    for (const auto& row : J)
+      for (double v : row) size = std::max(size, std::abs(v));
+    const Real c = cbrt(std::numeric_limits<Real>::epsilon());
+    const double floor = static_cast<double>(c * c) * (1 + size);
+    const double m = largest_multiplier(J);
+    return m < floor ? 0.0 : m;
   }
 
   // Largest |λ| of the 3×3 Jacobian (in double: a stability indicator, not a result digit).
