@@ -1257,6 +1257,49 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       "certify"_a = false, psi_doc);
 
   m.def(
+      "rig",
+      [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& kappa,
+         const py::object& omega, const py::object& zeta, const py::object& digits, const py::object& type, bool strings) {
+        const WaveSpec w = to_wave(wave);
+        const Precision precision = to_precision(optional_int(digits, "digits"), type);
+        RigSpec spec;
+        spec.kappa = scalar_text(kappa, "kappa");
+        spec.omega = scalar_text(omega, "omega");
+        spec.zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
+        const Point point{scalar_text(beta, "beta"), scalar_text(gamma, "gamma")};
+        RigReport r;
+        {
+          py::gil_scoped_release release;
+          r = evaluate_rig(w, point, spec, precision);
+        }
+        const Converter convert(result_form(precision, strings), precision);
+        char floquet[32];
+        std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
+        py::dict d;
+        for (const auto& [name, value] : std::vector<std::pair<const char*, std::string>>{
+                 {"mu_over_mu0", r.mu}, {"stick_fraction", r.stick_fraction}, {"slip_fraction", r.slip_fraction},
+                 {"backward_slip_fraction", r.backward_fraction}, {"flight_fraction", r.flight_fraction},
+                 {"amplitude", r.amplitude}, {"largest_backward_slip", r.largest_backward_slip},
+                 {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error}})
+          d[py::str(name)] = convert(value);
+        return d;
+      },
+      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "kappa"_a, "omega"_a, "zeta"_a = py::none(), "digits"_a = py::none(),
+      "type"_a = py::none(), "strings"_a = false, R"doc(rig(wave, beta, gamma, *, kappa, omega, zeta=None, digits=None, type=None, strings=False) -> dict
+
+Rig dynamics at one point (the tool's mu --kappa --omega --zeta; model.md, "Rig dynamics"): a body
+of mass m on a system spring k_s (damper c), kappa = k_s/k_x, omega = sqrt(k_x/m)/(2 pi f),
+zeta = c/(2 sqrt(m k_s)). Returns the tool's fields, in its order: mu_over_mu0 (as mu() would),
+stick_fraction, slip_fraction, flight_fraction (they add to 1), backward_slip_fraction (the part of
+slip_fraction slipping backward), amplitude (half the peak-to-peak of X - beta phi) and
+largest_backward_slip (both in units of mu0 k_z A/k_x), floquet_multiplier (0: below what
+difference quotients resolve) and relative_error_estimate (the two precisions apart). Values as
+mu(): float for type None/'double', or decimal strings with strings=True; the fractions carry
+the digits the two precisions agree on. ValueError for bad input, vibrofric.SolverError where no
+periodic state is found.
+)doc");
+
+  m.def(
       "verify",
       [](const py::object& claim, const py::object& digits_obj) {
         const auto digits = optional_int(digits_obj, "digits");
@@ -1352,7 +1395,7 @@ def _one_line_calls(name):
     globals()[name] = call
 
 
-for _name in ("samples", "fourier", "profile", "wave", "physical", "trace", "fit", "mu", "psi", "verify"):
+for _name in ("samples", "fourier", "profile", "wave", "physical", "trace", "fit", "mu", "psi", "rig", "verify"):
     _one_line_calls(_name)
 del _name
 )py", m.attr("__dict__"));

@@ -73,3 +73,19 @@ def test_physical_with_a_mass_is_the_tools():
         assert out[name] == printed[name], name
     with pytest.raises(ValueError, match="k_system"):
         vibrofric.physical("sine", mass=0.01, **kw)
+
+
+@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+def test_rig_report_is_the_tools_json():
+    import json
+    args = ["mu", "--wave", "sine", "--beta", "1.61", "--gamma", "1.01", "--kappa", "0.39", "--omega", "7.49",
+            "--zeta", "0.0429", "--digits", "20", "--format", "json"]
+    want = json.loads(subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout)
+    got = vibrofric.rig("sine", "1.61", "1.01", kappa="0.39", omega="7.49", zeta="0.0429", digits=20, strings=True)
+    for name, value in got.items():
+        assert want[name] == value, name
+    assert float(got["backward_slip_fraction"]) > 0  # this rig slips backward
+    assert vibrofric.rig("sine", 1.61, 1.01, kappa=0.39, omega=7.49, zeta=0.0429)["mu_over_mu0"] == \
+        vibrofric.mu("sine", 1.61, 1.01, kappa=0.39, omega=7.49, zeta=0.0429)
+    with pytest.raises(TypeError, match="omega"):
+        vibrofric.rig("sine", 1, 0.5, kappa=1)
