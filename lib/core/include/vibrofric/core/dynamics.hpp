@@ -607,11 +607,11 @@ class RigSolver {
       }
       case RigMode::forward_slip: {
         // X_c' = Y' + β − n' > 0 while slipping; (X_c')' = Y'' − n''.
-        const Real acc = accel(m, yv, g, phi, Real(-1));
+        const Real acc = accel(m, yv, d[0], Real(-1));
         return {-(yv[1] + beta_ - d[1]), -(acc - d[2])};
       }
       case RigMode::backward_slip: {
-        const Real acc = accel(m, yv, g, phi, Real(1));
+        const Real acc = accel(m, yv, d[0], Real(1));
         return {yv[1] + beta_ + d[1], acc + d[2]};
       }
       default:
@@ -619,9 +619,7 @@ class RigSolver {
     }
   }
   // Y'' = F − cY' − KY in slip (s = ±n).
-  Real accel(const detail::Motion<Real>& m, const std::array<Real, 2>& yv, const Segment& g, const Real& phi,
-             const Real& sign) const {
-    const Real n = n_at(g, phi);
+  Real accel(const detail::Motion<Real>& m, const std::array<Real, 2>& yv, const Real& n, const Real& sign) const {
     return sign * omega2_ * n - m.c() * yv[1] - m.K() * yv[0];
   }
 
@@ -918,18 +916,8 @@ class RigSolver {
         for (int j = 0; j < 3; ++j) M[i][j] = J[i][j] - (i == j ? 1 : 0);
         M[i][3] = -r[i];
       }
-      for (int c = 0; c < 3; ++c) {
-        int piv = c;
-        for (int i = c + 1; i < 3; ++i)
-          if (abs(M[i][c]) > abs(M[piv][c])) piv = i;
-        std::swap(M[c], M[piv]);
-        if (M[c][c] == 0) break;
-        for (int i = c + 1; i < 3; ++i) {
-          const Real f = M[i][c] / M[c][c];
-          for (int j = c; j < 4; ++j) M[i][j] -= f * M[c][j];
-        }
-      }
-      if (M[0][0] == 0 || M[1][1] == 0 || M[2][2] == 0) {
+      std::array<Real, 3> d;
+      if (!solve3(M, d)) {
         // A neutral direction of J (a whole period of stick from a transient start, where any X_c
         // would repeat): no Newton step; let the dynamics move the state on.
         if (++neutral > neutral_rounds)
@@ -938,12 +926,6 @@ class RigSolver {
         r = residual(u, pu);
         nr = norm(r);
         continue;
-      }
-      std::array<Real, 3> d;
-      for (int i = 2; i >= 0; --i) {
-        Real acc = M[i][3];
-        for (int j = i + 1; j < 3; ++j) acc -= M[i][j] * d[j];
-        d[i] = acc / M[i][i];
       }
       // Damped step: halve until the residual decreases.
       Real lambda = 1;
