@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <random>
+#include <sstream>
 #include <tuple>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -432,6 +434,43 @@ TEST(Numbers, FormatSignificantOfHardwareTypesAsMpfr) {
                                          0.5, 9.5, 99.5, 1e15, 1e-5, 9.9999999999999995e-6});
   check_digits_against_mpfr<long double>(64, {2.5L, 0.125L, 1e23L, std::numeric_limits<long double>::denorm_min(),
                                               std::numeric_limits<long double>::max(), 0.5L, 99.5L});
+}
+
+// Waveform::value_error's contract (waveform.hpp): |value(φ) − w(φ)| ≤ eps·(max − min + value_error)
+// at every φ, w being the exact wave the input defines; the solver's rounding bounds rest on it
+// (solver.hpp, value_bound). Reference: the same file read at 60 digits. The Fourier sum's error
+// grows with the harmonics (the recurrence's angle carries k·(2π + 4) eps), so without its own
+// term the bound would not hold for 40 harmonics; samples carry their phases' rounding.
+template <class Real>
+void expect_value_error_bounds(const std::string& spec, int phases, double* worst) {
+  const auto w = make_waveform<Real>(parse_wave(spec));
+  const mpfr eps(std::numeric_limits<Real>::epsilon());
+  const mpfr allowed = eps * (mpfr(w->maximum()) - mpfr(w->minimum()) + mpfr(w->value_error()));
+  PrecisionScope scope(60);
+  const auto exact = make_waveform<mpfr>(parse_wave(spec));
+  for (int j = 0; j < phases; ++j) {
+    const Real phi = Real(j) / phases + Real(0.37) / phases;  // exact in Real and in mpfr
+    const mpfr err = abs(mpfr((*w)(phi)) - (*exact)(mpfr(phi)));
+    ASSERT_LE(err, allowed) << spec << " at phi = " << static_cast<double>(phi);
+    *worst = std::max(*worst, static_cast<double>(err / allowed));
+  }
+}
+
+TEST(Waveforms, ValueErrorBoundsTheEvaluationError) {
+  std::mt19937_64 random(20261127);
+  std::uniform_real_distribution<double> coefficient(-1, 1), noise(-0.03, 0.03);
+  std::ostringstream fourier, samples;
+  fourier << std::setprecision(17);
+  for (int k = 1; k <= 40; ++k) fourier << k << ' ' << coefficient(random) << ' ' << coefficient(random) << '\n';
+  samples << std::setprecision(9);
+  for (int j = 0; j < 200; ++j) samples << 2 * std::sin(6.283185307179586 * j / 200) + noise(random) << '\n';
+  const std::string f = "fourier:" + temp_file("forty.txt", fourier.str()), s = "samples:" + temp_file("noisy.txt", samples.str());
+  for (const std::string& spec : {f, s}) {
+    double worst_d = 0, worst_l = 0;
+    expect_value_error_bounds<double>(spec, 5000, &worst_d);
+    expect_value_error_bounds<long double>(spec, 5000, &worst_l);
+    std::printf("%s: largest error %.3g (double), %.3g (long double) of the allowance\n", spec.c_str(), worst_d, worst_l);
+  }
 }
 
 }  // namespace
