@@ -247,6 +247,35 @@ TEST(RigDynamics, PartTwoUndampedResonanceReducesFrictionFarAboveTheCriticalVelo
   EXPECT_NEAR(damped.mu, 1.0, 1e-14);
 }
 
+// Far above the critical velocity at the undamped resonance the map is a translation at small
+// amplitude (all slip: the swing grows by the same amount each period, J = I) and the periodic state
+// lies some 70 periods out (Y ≈ 174 at β = 1000), with an event within rounding of φ = 0. Newton
+// stalled there at 40 digits and toms748 asked for a relative bracket at φ ≈ 1e-62 at 60 and 100
+// digits; each precision must now find the state and agree with 120 digits within its estimate.
+TEST(RigDynamics, ResonanceFarAboveTheCriticalVelocityAtEveryPrecision) {
+  for (const char* beta : {"1000", "10000"}) {
+    SCOPED_TRACE(beta);
+    std::string text;  // the reference as 120 digits of text (each precision below reads it in its own)
+    {
+      PrecisionScope scope(120);
+      text = solve_rig<mpfr>(Sine<mpfr>(), mpfr(beta), mpfr("0.5"), {mpfr(1), mpfr(1), mpfr(0), 1}).mu.str(120);
+    }
+    for (unsigned digits : {30u, 40u, 60u, 100u}) {
+      PrecisionScope scope(digits);
+      const mpfr reference(text);
+      const auto r = solve_rig<mpfr>(Sine<mpfr>(), mpfr(beta), mpfr("0.5"), {mpfr(1), mpfr(1), mpfr(0), 1});
+      using std::abs;
+      EXPECT_LE(abs(mpfr((r.mu - reference) / reference)), r.relative_error) << digits << " digits";
+      // the state costs digits: about 5 at beta = 1e4 (measured), so 8 below the working precision
+      EXPECT_LT(r.relative_error, pow(mpfr(10), -static_cast<int>(digits) + 8)) << digits << " digits";
+    }
+    PrecisionScope scope(40);
+    const mpfr reference(text);
+    const auto d = solve_rig<double>(Sine<double>(), std::stod(beta), 0.5, {1, 1, 0, 1});
+    EXPECT_LE(std::fabs(static_cast<double>((mpfr(d.mu) - reference) / reference)), d.relative_error);
+  }
+}
+
 // Where n touches zero at its minimum (γ = −min w) the contact is not lost: no flight, and μ̄
 // lies between its values just above and just below (a review found a quarter period of false
 // flight and μ̄ = 0.028 against 0.181 and 0.183 on either side).

@@ -699,7 +699,7 @@ class RigSolver {
               g1 = f(m, hi).first;
             }
             stop = detail::bracketed_root<Real>([&](const Real& x) { return f(m, x).first; }, lo, x1, glo, g1,
-                                                "rig dynamics event", stats_);
+                                                "rig dynamics event", stats_, Real(1));
             fired = true;
             break;
           }
@@ -715,7 +715,7 @@ class RigSolver {
             const Real gm = f(m, xm).first;
             if (gm >= 0) {
               stop = detail::bracketed_root<Real>([&](const Real& x) { return f(m, x).first; }, x0, xm, g0, gm,
-                                                  "rig dynamics event", stats_);
+                                                  "rig dynamics event", stats_, Real(1));
               fired = true;
               break;
             }
@@ -764,7 +764,7 @@ class RigSolver {
     r.ymax = std::max({r.ymax, y0[0], y1[0]});
     if ((y0[1] > 0) != (y1[1] > 0) && y0[1] != 0 && y1[1] != 0) {
       const Real x = detail::bracketed_root<Real>([&](const Real& x) { return m(x)[1]; }, x0, x1, y0[1], y1[1],
-                                                  "rig dynamics: extremum of the body's lag", stats_);
+                                                  "rig dynamics: extremum of the body's lag", stats_, Real(1));
       const Real y = m(x)[0];
       r.ymin = std::min(r.ymin, y);
       r.ymax = std::max(r.ymax, y);
@@ -875,6 +875,44 @@ class RigSolver {
       nr = nn;
       if (!fast) break;
     }
+    // Where the map is a translation, P(u) = u + r with the same r at P(u) (all slip at an exact
+    // undamped resonance: the body's swing grows by the same amount every period, and J = I),
+    // Newton has no direction and the dynamics takes as many periods as the state is far. Follow
+    // the translation by doubling multiples of r while it holds, bisect for where it ends, and go
+    // on from just beyond (sine, beta = 1000, Omega^2 kappa = 1: the state lies 70 periods out).
+    auto same = [&](const std::array<Real, 3>& x, const std::array<Real, 3>& y) {
+      return norm(std::array<Real, 3>{x[0] - y[0], x[1] - y[1], x[2] - y[2]}) <= norm(x) / 1024;
+    };
+    auto translated = [&](const Real& m, std::array<Real, 3>& rm) {
+      const State t{u.y + m * r[0], u.v + m * r[1], u.s + m * r[2]};
+      State pt;
+      try {
+        rm = residual(t, pt);
+      } catch (const SolverError&) {
+        return false;
+      }
+      return same(r, rm);
+    };
+    auto glide = [&]() {
+      if (!(nr > 0)) return;
+      std::array<Real, 3> rm;
+      if (!translated(Real(1), rm)) return;
+      Real lo = 1, hi = 2;
+      for (; translated(hi, rm); hi *= 2) {
+        lo = hi;
+        if (hi > 1e6)
+          throw SolverError("rig dynamics: no periodic state found (the one-period map is a translation by " +
+                            detail::short_str(nr) + " a period over a million periods: the body's swing grows without bound)");
+      }
+      for (int k = 0; k < 8; ++k) {
+        const Real mid = (lo + hi) / 2;
+        (translated(mid, rm) ? lo : hi) = mid;
+      }
+      u = State{u.y + hi * r[0], u.v + hi * r[1], u.s + hi * r[2]};
+      r = residual(u, pu);
+      nr = norm(r);
+    };
+    glide();
     std::array<std::array<Real, 3>, 3> J{};
     // Whole periods of stick (a start far below the state: s climbs by about β a period, and
     // the map is neutral in s meanwhile) may last up to 2 max n/β periods: rounds of 8 periods.
@@ -925,6 +963,7 @@ class RigSolver {
         for (int k = 0; k < 8; ++k) u = period(u);
         r = residual(u, pu);
         nr = norm(r);
+        glide();
         continue;
       }
       // Damped step: halve until the residual decreases.
@@ -969,6 +1008,7 @@ class RigSolver {
         for (int k = 0; k < 16; ++k) u = period(u);
         r = residual(u, pu);
         nr = norm(r);
+        glide();
       }
     }
     throw SolverError("rig dynamics: no periodic state found in " + std::to_string(max_steps) +

@@ -31,17 +31,26 @@ std::string short_str(const Real& x) {
 }
 
 // Root of f in [a, b] given fa = f(a), fb = f(b) of opposite signs (a zero end is the root),
-// to within 4 ulp of the working type: toms748, stopping on |b − a| ≤ 2^(2−digits)·min(|a|,|b|).
+// to within 4 ulp of the working type: toms748, stopping on |b − a| ≤ 2^(2−digits)·min(|a|,|b|),
+// or ≤ 2^(2−digits)·scale where a positive `scale` is the size of x that f's rounding is relative
+// to (a phase of the period: 1). Without it a root within rounding of x = 0, where f is noise,
+// asks for a bracket a few ulp of the root wide and never gets one.
 template <class Real, class F>
 Real bracketed_root(F f, const Real& a, const Real& b, const Real& fa, const Real& fb,
-                    const char* what, RootStats& stats) {
+                    const char* what, RootStats& stats, const Real& scale = Real(0)) {
   if (fa == 0) return a;
   if (fb == 0) return b;
   if ((fa > 0) == (fb > 0))
     throw SolverError(std::string(what) + ": no sign change on [" + short_str(a) + ", " +
                       short_str(b) + "] (f = " + short_str(fa) + ", " + short_str(fb) + ")");
   const int bits = boost::math::tools::digits<Real>();
-  boost::math::tools::eps_tolerance<Real> tol(static_cast<unsigned>(bits > 3 ? bits - 2 : 1));
+  boost::math::tools::eps_tolerance<Real> relative(static_cast<unsigned>(bits > 3 ? bits - 2 : 1));
+  using std::ldexp;
+  const Real floor = scale * ldexp(Real(1), 2 - bits);
+  auto tol = [&](const Real& x, const Real& y) {
+    using std::abs;
+    return relative(x, y) || abs(x - y) <= floor;
+  };
   std::uintmax_t iterations = stats.max_iterations;
   std::pair<Real, Real> r;
   try {
