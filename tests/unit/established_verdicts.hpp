@@ -58,6 +58,12 @@ const std::map<std::string, Expected>& established() {
       {"curved-eq6-sec3", {Verdict::holds, "per-spring bounds, lib/verification/src/claims/curved.cpp"}},
       // u = x^N: ∫ h(x^N) dx = h(0) + O(1/N).
       {"curved-power-flat", {Verdict::holds_approximately, "limit N -> infinity, O(1/N)"}},
+      // Rig dynamics (model.md): a limit, O(1/Omega) measured, off where n jumps down in contact.
+      {"rig-limits", {Verdict::holds_approximately, "limit Omega -> infinity, O(1/Omega); test_rig.cpp's peer"}},
+      // Part II: stiff O(1/kappa) and soft-heavy O(Omega^2) limits both give Part I's g_w(beta, gamma).
+      {"part2-limits", {Verdict::holds_approximately, "limits kappa -> infinity and Omega -> 0, measured"}},
+      // Undamped resonance Omega^2 kappa = 1: mu < mu0 far beyond beta_c (damping restores mu0).
+      {"part2-resonance", {Verdict::holds, "measured: mu about 0.32 mu0 up to beta = 10000"}},
   };
   return e;
 }

@@ -122,6 +122,25 @@ void check_evidence(const ClaimCheck& c) {
   } else if (c.key == "scope-numerics") {
     for (const char* key : {"double_ms", "30_digits_ms", "digits_ms"})
       EXPECT_GT(number(c, "CPU time per evaluation", key), 0) << key;
+  } else if (c.key == "rig-limits") {
+    // O(1/Omega) for continuous n; the square wave's drop keeps mu about 1.28e-2 below at every Omega
+    // (model.md measured -1.28e-2 at Omega = 1e4 independently).
+    const auto [lo, hi] = range(c, "order of D in 1/Omega");
+    EXPECT_GE(lo, 0.9);
+    EXPECT_LE(hi, 1.1);
+    const std::string square = "square, beta = 1.2, gamma = 1.25";
+    EXPECT_NEAR(number(c, square, "D(10000)"), -1.28e-2, 5e-4);
+    EXPECT_NEAR(number(c, square, "D(1000)"), number(c, square, "D(10000)"), 1e-3) << "the offset does not shrink";
+  } else if (c.key == "part2-limits") {
+    for (const char* wave : {"sine", "triangle"}) {
+      EXPECT_NEAR(number(c, std::string(wave) + ": stiff", "order"), 1.0, 0.1) << wave;
+      EXPECT_NEAR(number(c, std::string(wave) + ": soft, heavy", "order"), 2.0, 0.2) << wave;
+    }
+  } else if (c.key == "part2-resonance") {
+    EXPECT_LT(number(c, "undamped resonance", "largest"), 0.4);
+    // Part I: mu = mu0 at every beta checked (all beyond beta_c = 2 pi).
+    EXPECT_EQ(field(c, "quasi-static (Part I)"), "1.00000, 1.00000, 1.00000, 1.00000");
+    EXPECT_EQ(field(c, "zeta = 0.02").substr(field(c, "zeta = 0.02").rfind(", ") + 2), "1.00000") << "damping restores mu0";
   }
 }
 

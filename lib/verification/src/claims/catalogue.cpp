@@ -113,6 +113,18 @@ const std::vector<ClaimEntry>& claims_catalogue() {
       {"curved-power-flat", "power:N -> flat", "model.md (extension)",
        "power-law profiles sigma = x^N tend to the flat punch as N -> infinity", kDerivationAndHP,
        "proofs/curved_closed_forms.md", curved_power_flat},
+      // Rig dynamics (model.md, "Rig dynamics: mass and system stiffness") and the abstract of the
+      // series' Part II; checks in lib/verification/src/claims/rig.cpp.
+      {"rig-limits", "Rig dynamics, limits", "model.md (extension)",
+       "continuous n: a massless body (Omega -> infinity) gives mu = g_w(beta kappa/(1+kappa), gamma), the paper's "
+       "model at the series stiffness, as O(1/Omega); not where n jumps down in contact (square wave, gamma > 1)",
+       kHighPrecision, "", rig_limits},
+      {"part2-limits", "Part II, abstract: limits", "Part II (abstract)",
+       "the limiting cases of a very stiff and a very soft system reproduce earlier results", kHighPrecision, "",
+       part2_limits},
+      {"part2-resonance", "Part II, abstract: resonance", "Part II (abstract)",
+       "a new resonant case eliminates the critical sliding velocity (friction is reduced at every velocity)",
+       kHighPrecision, "", part2_resonance},
   };
   return list;
 }

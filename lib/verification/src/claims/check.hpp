@@ -290,6 +290,10 @@ ClaimCheck scope_wearflat(int digits);
 ClaimCheck scope_numerics(int digits);
 ClaimCheck curved_eq6_sec3(int digits);
 ClaimCheck curved_power_flat(int digits);
+// Rig dynamics and Part II (rig.cpp).
+ClaimCheck rig_limits(int digits);
+ClaimCheck part2_limits(int digits);
+ClaimCheck part2_resonance(int digits);
 
 // The paper's remaining statements (statements.cpp).
 ClaimCheck eqs7_13(int digits);

@@ -4,8 +4,9 @@
 // entanglement, Sec. 3.1's continuity and uniqueness, Sec. 3.2's convexity and the range of Eq. 23,
 // Figs. 2, 3 and 4, the abstract's scope for curved contacts) — and, apart from them (source
 // "model.md (correction)" or "model.md (extension)"), the statements of model.md itself that the
-// suite found to need correction (β_c table) and Eq. 6, Sec. 3 and the flat-punch limit carried
-// over to curved contacts by the MDR. Each entry says how the claim is checked; its check runs the
+// suite found to need correction (β_c table), Eq. 6, Sec. 3 and the flat-punch limit carried
+// over to curved contacts by the MDR, and the rig dynamics' limits; and (source "Part II
+// (abstract)") the two claims of the abstract of the series' Part II. Each entry says how the claim is checked; its check runs the
 // high-precision solver and returns the measured deviation and the verdict. A claim is never
 // adjusted to fit: the verdict is what is measured, and it is the same at every precision of the
 // documented range.
@@ -81,7 +82,8 @@ const std::vector<ClaimEntry>& claims_catalogue();
 
 // One claim by key ("eq6", …, "fig4-scaling", "eqs7-13", "eq6-jumping", "entanglement",
 // "continuity", "uniqueness", "convexity", "eq23-range", "fig2", "beta-c", "scope-wearflat",
-// "scope-numerics", "curved-eq6-sec3", "curved-power-flat"); throws InputError for an unknown key.
+// "scope-numerics", "curved-eq6-sec3", "curved-power-flat", "rig-limits", "part2-limits",
+// "part2-resonance"); throws InputError for an unknown key.
 ClaimCheck check_claim(const std::string& key, int digits);
 
 // Every claim at `digits` significant digits (10 to 300, the range over which the verdicts are tested
