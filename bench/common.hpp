@@ -106,5 +106,6 @@ void register_speed_bin50();
 void register_accuracy();
 void register_curved();
 void register_certify();
+void register_rig();
 
 }  // namespace vibrofric::bench

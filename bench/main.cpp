@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   register_speed_mpfr();
   register_curved();
   register_certify();
+  register_rig();
 
   benchmark::Initialize(&rest_argc, rest.data());
   if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 2;
