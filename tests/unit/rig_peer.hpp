@@ -34,6 +34,14 @@ template <class T>
 struct PeerResult {
     T mu, stick_fraction, slip_fraction, flight_fraction;
     std::size_t periods;
+    // On the last period's grid: the share of steps that slipped backward (s clamped at −n), the
+    // amplitude (max − min)/2 of Y, the largest distance the contact point X_c moved backward in
+    // one contiguous backward-slip phase (a phase running across the period's end is joined), and
+    // the transient's contraction per period: exp of the least-squares slope of log(change_p)
+    // over the periods whose change lies in [1e-11, 1e-4] (the largest Floquet modulus where it
+    // dominates the approach; a complex pair's rotation averages out over the periods; 0 where
+    // fewer than six periods qualify).
+    T backward_fraction, amplitude, largest_backward_slip, contraction;
 };
 
 template <class T, class N>
@@ -50,9 +58,11 @@ PeerResult<T> rig_peer(N n, T beta, T kappa, T Omega, T zeta, std::size_t steps_
     for (std::size_t k = 0; k <= M; ++k) nv[k] = n(T(k) / T(M));
     nv[M] = nv[0];  // periodic grid: n(1) = n(0)
     T Y = 0, U = 0, s = 0;  // X = 0, X' = β, stress-free contact
+    std::vector<T> changes;
     for (std::size_t p = 1; p <= max_periods; ++p) {
         const T Y_start = Y, U_start = U, s_start = s;
-        T sum_s = 0, sum_n = 0, stick = 0, slip = 0, flight = 0;
+        T sum_s = 0, sum_n = 0, stick = 0, slip = 0, flight = 0, backward = 0;
+        T y_min = Y, y_max = Y, run = 0, first_run = -1, largest_back = 0;
         for (std::size_t k = 0; k < M; ++k) {
             const T n1 = nv[k + 1];
             const T F0 = -a * kappa * Y - a * s - b * U;
@@ -67,19 +77,42 @@ PeerResult<T> rig_peer(N n, T beta, T kappa, T Omega, T zeta, std::size_t steps_
             }
             T d = (R - c * (s + th * beta * h)) / (A + c * th);  // stick branch: s1 = s + θ(d + βh)
             T s1 = s + th * (d + beta * h);
-            bool moved = false;
+            bool moved = false, back = false;
             if (s1 > n1)       { s1 = n1;  d = (R - c * n1) / A; moved = true; }
-            else if (s1 < -n1) { s1 = -n1; d = (R + c * n1) / A; moved = true; }
+            else if (s1 < -n1) { s1 = -n1; d = (R + c * n1) / A; moved = true; back = true; }
             const T U1 = 2 * d / h - U;
             sum_s += (s + s1) / 2;
             sum_n += (nv[k] + n1) / 2;
             if (n1 <= 0) flight += 1; else if (moved) slip += 1; else stick += 1;
+            // X_c = X − s moves by (d + βh) − (s1 − s) in the step.
+            const T dxc = d + beta * h - (s1 - s);
+            if (back && n1 > 0) {
+                backward += 1;
+                run += dxc < 0 ? -dxc : T(0);
+            } else {
+                if (first_run < 0) first_run = run;  // the phase the period began in (0: none)
+                largest_back = std::max(largest_back, run);
+                run = 0;
+            }
             Y += d; U = U1; s = s1;
+            y_min = std::min(y_min, Y);
+            y_max = std::max(y_max, Y);
         }
+        // a backward phase still open at the period's end continues into the next one's first
+        if (run > 0) largest_back = std::max(largest_back, first_run < 0 ? run : run + first_run);
         const T change = std::max({abs(Y - Y_start), abs(U - U_start), abs(s - s_start)});
+        changes.push_back(change);
         if (change < settle) {
             const T m = T(M);
-            return {sum_s / sum_n, stick / m, slip / m, flight / m, p};
+            T contraction = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, count = 0;
+            for (std::size_t q = 0; q < changes.size(); ++q)
+                if (changes[q] >= T(1e-11) && changes[q] <= T(1e-4)) {
+                    const T x = T(q), y = std::log(changes[q]);
+                    sx += x; sy += y; sxx += x * x; sxy += x * y; count += 1;
+                }
+            if (count >= 6) contraction = std::exp((count * sxy - sx * sy) / (count * sxx - sx * sx));
+            return {sum_s / sum_n, stick / m, slip / m, flight / m, p, backward / m, (y_max - y_min) / 2, largest_back,
+                    contraction};
         }
     }
     throw std::runtime_error("rig_peer: no periodic state within max_periods");
