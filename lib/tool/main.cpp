@@ -438,8 +438,11 @@ const std::vector<CommandSpec>& commands() {
          [](Flags& f, const std::string& t) { f.points = integer(t, "--points", min_trace_points, max_trace_points); }},
         {"digits", "D", "significant digits, 1 to 10000", "17",
          [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_digits, max_digits); }}},
-       {&kWaveFlags},
-       kWaves,
+       {&kWaveFlags, &kRigFlags},
+       std::string(kWaves) + kRig +
+           "  trace with them prints phi,n,s,lag,lag_rate,mode: the body's lag Y = X - beta phi behind the\n"
+           "  drive and Y' (units mu0 k_z A/k_x), the mode (stick, slip, backward, flight), at the phases\n"
+           "  and both ends of every span (two rows at one phi where a mode ends: left and right values).\n",
        run_trace},
       {"fit", "fit --wave samples:FILE --harmonics K [--output FILE]: a fourier file from samples",
        {{"harmonics", "K", "harmonics of the fit, 1 to 10000, 2K < samples (required)", "",
@@ -970,6 +973,14 @@ int run_trace(const Flags& f) {
   request.digits_name = "--digits";
   if (f.digits) request.digits = *f.digits;
   if (f.points) request.points = *f.points;
+  const BatchOptions o = batch_options(f);
+  if (o.rig) {
+    const auto rows = rig_trace_rows(wave, request, *o.rig, o.solver);
+    std::cout << "phi,n,s,lag,lag_rate,mode\n";
+    for (const auto& r : rows)
+      std::cout << r.phi << ',' << r.n << ',' << r.s << ',' << r.lag << ',' << r.lag_rate << ',' << r.mode << '\n';
+    return 0;
+  }
   const auto rows = trace_rows(wave, request);
   std::cout << "phi,n,s\n";
   for (const auto& r : rows) std::cout << r[0] << ',' << r[1] << ',' << r[2] << '\n';

@@ -2160,6 +2160,39 @@ def rig_tests():
                 raise Fail("sweep row %r against mu %s" % (row, one))
     case("rig: sweep rows name the rig and equal mu's values", sweep_rows)
 
+    def trace_rows():
+        # The rig's trace (phi,n,s,lag,lag_rate,mode): |s| <= n, the period closes, and its rows give
+        # mu's stick and flight fractions (the spans' ends are rows) and, by the trapezoid rule on
+        # 20000 steps, mu itself (the rule errs by O(1e-8) here: s and n are smooth between rows).
+        args = ["--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "1", "--omega", "2", "--zeta", "0.1"]
+        lines = ok_run(["trace"] + args + ["--points", "20000", "--digits", "20"]).splitlines()
+        if lines[0] != "phi,n,s,lag,lag_rate,mode":
+            raise Fail("trace with --kappa: header %r" % lines[0])
+        rows = [l.split(",") for l in lines[1:]]
+        out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+        phi = [F(r[0]) for r in rows]
+        n = [F(r[1]) for r in rows]
+        s = [F(r[2]) for r in rows]
+        if phi[0] != 0 or phi[-1] != 1 or any(b < a for a, b in zip(phi, phi[1:])):
+            raise Fail("trace with --kappa: phases %r ... %r not ascending from 0 to 1" % (phi[:3], phi[-3:]))
+        if any(abs(x) > y for x, y in zip(s, n)) or rows[0][2:5] != rows[-1][2:5]:
+            raise Fail("trace with --kappa: |s| > n somewhere, or the period does not close: %r, %r" % (rows[0], rows[-1]))
+        share = {}
+        for r0, r1 in zip(rows, rows[1:]):
+            share[r0[5]] = share.get(r0[5], 0) + F(r1[0]) - F(r0[0])
+        for mode, key in (("stick", "stick_fraction"), ("flight", "flight_fraction")):
+            if abs(share.get(mode, 0) - F(out[key])) > F("1e-15"):
+                raise Fail("trace with --kappa: %s over the rows %s, mu's %s %s" % (mode, share.get(mode), key, out[key]))
+        ratio = sum((b - a) * (x + y) for a, b, x, y in zip(phi, phi[1:], s, s[1:])) / \
+            sum((b - a) * (x + y) for a, b, x, y in zip(phi, phi[1:], n, n[1:]))
+        if abs(ratio / F(out["mu_over_mu0"]) - 1) > F("1e-7"):
+            raise Fail("trace with --kappa: the rows' int s / int n = %s, mu %s" % (ratio, out["mu_over_mu0"]))
+    case("rig: trace rows hold |s| <= n, close the period, and give mu's fractions and value", trace_rows)
+    bad("rig: trace --kappa without --omega", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--kappa", "1"],
+        [], ["--omega"])
+    bad("rig: trace --omega 0", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--kappa", "1", "--omega", "0"],
+        ["0"], ["omega", "> 0"])
+
     rig_physical = ["physical", "--wave", "sine", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33",
                     "--radius", "1e-3", "--v0", "1e-3", "--f", "20000", "--A", "2e-6", "--u-mean", "1e-6", "--mu0", "0.3"]
 

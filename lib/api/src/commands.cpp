@@ -409,20 +409,24 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
 }  // namespace
 
 
-std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request) {
+void check_trace_request(const TraceRequest& request) {
   const auto text = [](const InputText& in) -> const std::string& {
     if (!in.given()) throw InputError("missing " + in.name + " for 'trace'");
     return *in.text;
   };
   check_decimal(text(request.beta), request.beta.name);
   check_decimal(text(request.gamma), request.gamma.name);
-  const int n_points = request.points, digits = request.digits;
-  if (n_points < min_trace_points || n_points > max_trace_points)
-    throw InputError(request.points_name + " = " + std::to_string(n_points) + ": expected an integer from " +
+  if (request.points < min_trace_points || request.points > max_trace_points)
+    throw InputError(request.points_name + " = " + std::to_string(request.points) + ": expected an integer from " +
                      std::to_string(min_trace_points) + " to " + std::to_string(max_trace_points));
-  if (digits < min_digits || digits > max_digits)
-    throw InputError(request.digits_name + " = " + std::to_string(digits) + ": expected an integer from " +
+  if (request.digits < min_digits || request.digits > max_digits)
+    throw InputError(request.digits_name + " = " + std::to_string(request.digits) + ": expected an integer from " +
                      std::to_string(min_digits) + " to " + std::to_string(max_digits));
+}
+
+std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request) {
+  check_trace_request(request);
+  const int n_points = request.points, digits = request.digits;
   PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
   const auto w = make_waveform<mpfr>(wave);
   const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);

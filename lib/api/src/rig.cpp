@@ -2,8 +2,10 @@
 // precisions, printed where they agree.
 #include "vibrofric/api/rig.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/detail/evaluate_impl.hpp"
@@ -41,6 +43,12 @@ std::string rig_context(const WaveSpec& wave, const Point& p, const RigSpec& rig
          ", omega = " + rig.omega + ", zeta = " + rig.zeta + ": ";
 }
 
+// κ, Ω, ζ at the working precision: the computed values, else the texts.
+RigParameters<mpfr> parameters(const RigSpec& rig, unsigned resonant) {
+  const auto value = [](const std::optional<mpfr>& v, const std::string& text) { return v ? mpfr(*v) : mpfr(text); };
+  return {value(rig.kappa_value, rig.kappa), value(rig.omega_value, rig.omega), value(rig.zeta_value, rig.zeta), resonant};
+}
+
 struct Solved {
   RigResult<mpfr> r;
   int digits;
@@ -53,9 +61,7 @@ Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsign
   const auto w = make_waveform<mpfr>(wave);
   const mpfr beta = p.beta_value ? mpfr(*p.beta_value) : parse_real<mpfr>(p.beta, "beta");
   const mpfr gamma = p.gamma_value ? mpfr(*p.gamma_value) : parse_real<mpfr>(p.gamma, "gamma");
-  const auto value = [](const std::optional<mpfr>& v, const std::string& text) { return v ? mpfr(*v) : mpfr(text); };
-  const RigParameters<mpfr> params{value(rig.kappa_value, rig.kappa), value(rig.omega_value, rig.omega),
-                                   value(rig.zeta_value, rig.zeta), resonant};
+  const RigParameters<mpfr> params = parameters(rig, resonant);
   try {
     if (seed) return {solve_rig(*w, beta, gamma, params, seed->r, opt), digits};
     return {solve_rig(*w, beta, gamma, params, opt), digits};
@@ -156,6 +162,62 @@ RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& 
   RigReport report;
   report.mu = detail::rig_text(detail::rig_value(wave, point, rig, precision, solver, &report), precision);
   return report;
+}
+
+std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest& request, const RigSpec& rig,
+                                        const Options& opt) {
+  check_trace_request(request);
+  check_rig(rig);
+  const Point p{*request.beta.text, *request.gamma.text};
+  detail::ContactCheck check(wave, Quantity::mu);
+  check(p);
+  const unsigned resonant = resonance(rig);
+  const int digits = request.digits;
+  int low = digits + 10, high = digits + 22;
+  Solved a = solve_at(wave, p, rig, resonant, low, opt, nullptr);
+  Solved b = solve_at(wave, p, rig, resonant, high, opt, &a);
+  for (int attempt = 1; format_significant(a.r.mu, digits) != format_significant(b.r.mu, digits); ++attempt) {
+    if (attempt == 4)
+      throw SolverError(rig_context(wave, p, rig) + "rig dynamics: mu did not settle to " + std::to_string(digits) +
+                        " digits (" + format_significant(a.r.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
+                        format_significant(b.r.mu, digits + 2) + " at " + std::to_string(high) + ")");
+    a = std::move(b);
+    low = high;
+    high += std::max(12, high / 2);
+    b = solve_at(wave, p, rig, resonant, high, opt, &a);
+  }
+  // The spans' closed forms at the higher precision, evaluated by a solver built as solve_at built it.
+  PrecisionScope scope(static_cast<unsigned>(high));
+  const auto w = make_waveform<mpfr>(wave);
+  const mpfr beta = parse_real<mpfr>(p.beta, "beta"), gamma = parse_real<mpfr>(p.gamma, "gamma");
+  const RigSolver<mpfr> solver(*w, beta, gamma, parameters(rig, resonant), opt);
+  std::vector<RigTraceRow> rows;
+  const auto add = [&](const RigSpan<mpfr>& span, const mpfr& phi) {
+    auto y = solver.at(span, phi);
+    mpfr n = solver.normal(span, phi)[0];
+    // At a contact boundary n = 0 by definition, and so s (its computed value is a rounding, ~1e-31).
+    const auto& g = solver.contact().segments()[span.segment];
+    if ((phi == g.u && g.nu == 0) || (phi == g.v && g.nv == 0)) n = y[2] = 0;
+    static const char* const names[] = {"stick", "slip", "backward", "flight"};
+    RigTraceRow row{format_significant(phi, digits), format_significant(n > 0 ? n : mpfr(0), digits),
+                    format_significant(y[2], digits), format_significant(y[0], digits), format_significant(y[1], digits),
+                    names[static_cast<int>(span.mode)]};
+    // one row where a span ends and the next begins in the same mode with the same values
+    if (!rows.empty() && rows.back().phi == row.phi && rows.back().mode == row.mode && rows.back().n == row.n &&
+        rows.back().s == row.s && rows.back().lag == row.lag && rows.back().lag_rate == row.lag_rate)
+      return;
+    rows.push_back(std::move(row));
+  };
+  const int points = request.points;
+  int next = 0;  // the next equally spaced phase next/points
+  for (const auto& span : b.r.spans) {
+    if (!(span.end > span.begin)) continue;
+    add(span, span.begin);
+    for (; next <= points && mpfr(next) / points < span.end; ++next)
+      if (mpfr(next) / points > span.begin) add(span, mpfr(next) / points);
+    add(span, span.end);
+  }
+  return rows;
 }
 
 std::string detail::rig_text(const mpfr& v, const Precision& precision) {

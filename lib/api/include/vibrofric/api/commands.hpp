@@ -67,6 +67,9 @@ struct TraceRequest {
   std::string points_name = "points", digits_name = "digits";
 };
 
+// InputError unless β and γ are given as decimals and points and digits lie in their ranges.
+void check_trace_request(const TraceRequest& request);
+
 // Rows (φ, n, s) over one period, φ ascending: `points` + 1 equally spaced phases, both ends of
 // every stick phase and the contact boundaries (where n = s = 0 exactly), `digits` significant
 // digits each (at digits plus guard digits of working precision).

@@ -5,6 +5,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/numbers.hpp"
@@ -44,6 +45,22 @@ void check_rig(const RigSpec& rig);
 // state is found, two are, or the precisions do not agree.
 RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
                        const Options& solver = {});
+
+// One row of the periodic state for `trace` (the rig's Fig. 2): φ, n, s, the body's lag
+// Y = X − βφ behind the drive and its rate Y' (units μ0 k_z A/k_x, per period), and the mode
+// (stick, slip, backward, flight).
+struct RigTraceRow {
+  std::string phi, n, s, lag, lag_rate, mode;
+};
+
+// Rows over one period, φ ascending: `points` + 1 equally spaced phases and both ends of every
+// span of one mode (where one span ends and the next begins, two rows at one φ: the left and the
+// right values, which differ where s or n jumps),
+// `digits` significant digits. The state is found at digits + 10 and, from it, at digits + 22
+// (raised while their μ̄ differ in the printed digits); the rows are the higher's.
+struct TraceRequest;
+std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest& request, const RigSpec& rig,
+                                        const Options& solver = {});
 
 namespace detail {
 // The value evaluate() prints for `precision` under options.rig: correctly rounded to the type (or

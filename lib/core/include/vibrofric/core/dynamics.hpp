@@ -392,6 +392,8 @@ class RigSolver {
   // c and ω² of the body's equation (Y'' + cY' + … = −ω² s + …).
   const Real& damping() const { return c_; }
   const Real& omega_squared() const { return omega2_; }
+  // The contact's segments (their ends: where n = 0 exactly at a contact boundary).
+  const Contact<Real>& contact() const { return contact_; }
 
   RigResult<Real> solve() const {
     const Real eps = std::numeric_limits<Real>::epsilon();
