@@ -29,6 +29,7 @@
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/fit.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/api/rig.hpp"
 #include "vibrofric/api/suggest.hpp"
 #include "vibrofric/verification/claims.hpp"
 
@@ -724,6 +725,32 @@ py::tuple trace_arrays(const std::vector<std::array<std::string, 3>>& rows, bool
   return py::tuple(columns);
 }
 
+// rig_trace_rows as six arrays, phi, n, s, lag, lag_rate (float64, or decimal strings) and mode (str).
+py::tuple rig_trace_arrays(const std::vector<RigTraceRow>& rows, bool strings) {
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  const auto numpy = py::module_::import("numpy");
+  py::list columns;
+  const auto text_column = [&](auto field) {
+    py::array out = numpy.attr("empty")(n, "dtype"_a = "object");
+    for (py::ssize_t i = 0; i < n; ++i) out[py::int_(i)] = py::str(field(rows[static_cast<std::size_t>(i)]));
+    columns.append(out);
+  };
+  const auto column = [&](auto field) {
+    if (strings) return text_column(field);
+    py::array_t<double> out(n);
+    double* p = out.mutable_data();
+    for (py::ssize_t i = 0; i < n; ++i) p[i] = read_decimal<double>(field(rows[static_cast<std::size_t>(i)]));
+    columns.append(out);
+  };
+  column([](const RigTraceRow& r) -> const std::string& { return r.phi; });
+  column([](const RigTraceRow& r) -> const std::string& { return r.n; });
+  column([](const RigTraceRow& r) -> const std::string& { return r.s; });
+  column([](const RigTraceRow& r) -> const std::string& { return r.lag; });
+  column([](const RigTraceRow& r) -> const std::string& { return r.lag_rate; });
+  text_column([](const RigTraceRow& r) -> const std::string& { return r.mode; });
+  return py::tuple(columns);
+}
+
 // describe_normalisation as a dict: counts as int, decimal values as float (digits None), mpf or
 // strings (digits D), descriptions ("none", "1 (uniform phases)", the column) as str.
 py::dict normalisation_dict(const WaveSpec& spec, const py::object& digits_obj, bool strings) {
@@ -819,7 +846,7 @@ element the scalar call's value. An element that fails raises its error prefixed
 arrays) while the others answer.
 )doc";
 
-constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False) -> (phi, n, s)
+constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None) -> (phi, n, s)
 
 The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
 in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
@@ -827,6 +854,11 @@ points + 1 equally spaced phases 0, 1/points, ..., 1, both ends of every stick p
 contact boundaries (where n = s = 0 exactly), phi ascending. Each value to `digits` significant
 digits (computed at digits plus guard digits); three float64 arrays, or arrays of decimal strings
 with strings=True. points 2 to 1000000.
+
+With kappa and omega (zeta optional), the rig's periodic state (model.md, "Rig dynamics"), as
+`trace --kappa K --omega W --zeta Z`: six arrays (phi, n, s, lag, lag_rate, mode), the body's lag
+Y = X - beta phi behind the drive and Y' in units of mu0 k_z A/k_x, and the mode ('stick', 'slip',
+'backward', 'flight') as str; both ends of every span (two entries at one phi where a mode ends).
 )doc";
 
 constexpr const char* fit_doc = R"doc(fit(y, harmonics, t=None) -> Wave
@@ -1176,13 +1208,29 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
   m.def(
       "trace",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& points,
-         const py::object& digits, bool strings) {
+         const py::object& digits, bool strings, const py::object& kappa, const py::object& omega,
+         const py::object& zeta) -> py::tuple {
         const WaveSpec w = to_wave(wave);
         TraceRequest request;
         request.beta.text = scalar_text(beta, "beta");
         request.gamma.text = scalar_text(gamma, "gamma");
         if (const auto n = optional_int(points, "points")) request.points = *n;
         if (const auto d = optional_int(digits, "digits")) request.digits = *d;
+        if (!kappa.is_none() || !omega.is_none() || !zeta.is_none()) {
+          if (kappa.is_none() || omega.is_none())
+            throw InputError(std::string("missing ") + (kappa.is_none() ? "kappa" : "omega") +
+                             ": rig dynamics needs kappa and omega (zeta is optional)");
+          RigSpec rig;
+          rig.kappa = scalar_text(kappa, "kappa");
+          rig.omega = scalar_text(omega, "omega");
+          rig.zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
+          std::vector<RigTraceRow> rows;
+          {
+            py::gil_scoped_release release;
+            rows = rig_trace_rows(w, request, rig);
+          }
+          return rig_trace_arrays(rows, strings);
+        }
         std::vector<std::array<std::string, 3>> rows;
         {
           py::gil_scoped_release release;
@@ -1190,7 +1238,8 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
         }
         return trace_arrays(rows, strings);
       },
-      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false, trace_doc);
+      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false,
+      "kappa"_a = py::none(), "omega"_a = py::none(), "zeta"_a = py::none(), trace_doc);
 
   m.def("fit", fit_wave, "y"_a, "harmonics"_a, "t"_a = py::none(), fit_doc);
 

@@ -89,3 +89,22 @@ def test_rig_report_is_the_tools_json():
         vibrofric.mu("sine", 1.61, 1.01, kappa=0.39, omega=7.49, zeta=0.0429)
     with pytest.raises(TypeError, match="omega"):
         vibrofric.rig("sine", 1, 0.5, kappa=1)
+
+
+@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+def test_trace_is_the_tools():
+    args = ["trace", "--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "1", "--omega", "2", "--zeta", "0.1",
+            "--points", "8", "--digits", "12"]
+    lines = subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()
+    rows = [line.split(",") for line in lines[1:]]
+    columns = vibrofric.trace("sine", "0.5", "0.3", kappa="1", omega="2", zeta="0.1", points=8, digits=12, strings=True)
+    assert len(columns) == 6
+    assert [list(c) for c in columns] == [list(c) for c in zip(*rows)]
+    phi, n, s, lag, rate, mode = vibrofric.trace("sine", 0.5, 0.3, kappa=1, omega=2, zeta=0.1, points=8, digits=12)
+    assert phi.dtype == np.float64 and mode.dtype == object
+    assert np.all(np.abs(s) <= n) and set(mode) == {"stick", "slip", "flight"}
+
+
+def test_trace_needs_both_rig_keywords():
+    with pytest.raises(ValueError, match="missing omega"):
+        vibrofric.trace("sine", 0.5, 0.3, kappa=1)
