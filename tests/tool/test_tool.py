@@ -2208,6 +2208,14 @@ def rig_tests():
                       "--omega", out["omega"], "--zeta", out["zeta"], "--digits", "20"]).splitlines()[0]
         if abs(F(one) / F(out["mu_over_mu0"]) - 1) > F("1e-15"):
             raise Fail("physical --mass: mu_over_mu0 %s against mu with its kappa, omega, zeta: %s" % (out["mu_over_mu0"], one))
+        # the body's amplitude in metres: mu's (units mu0 k_z A/k_x) times that unit
+        rig = json.loads(ok_run(["mu", "--wave", "sine", "--beta", out["beta"], "--gamma", out["gamma"], "--kappa", out["kappa"],
+                                 "--omega", out["omega"], "--zeta", out["zeta"], "--digits", "20", "--format", "json"]))
+        unit = F("0.3") * F(out["k_z_N_per_m"]) * F("2e-6") / F(out["k_x_N_per_m"])
+        if abs(F(out["body_amplitude_m"]) / (F(rig["amplitude"]) * unit) - 1) > F("1e-14") or \
+                out["largest_backward_slip_m"] != "0" or rig["largest_backward_slip"] != "0":
+            raise Fail("physical --mass: body_amplitude_m %s, largest_backward_slip_m %s; mu's amplitude %s x %s m" % (
+                out["body_amplitude_m"], out["largest_backward_slip_m"], rig["amplitude"], unit))
         plain = json.loads(ok_run(rig_physical + ["--format", "json"]))
         if "kappa" in plain or plain["mu_over_mu0"] == out["mu_over_mu0"]:
             raise Fail("physical without --mass: %r" % plain)

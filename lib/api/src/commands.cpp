@@ -4,6 +4,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
@@ -398,6 +399,16 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     fraction("slip_fraction", report.slip_fraction);
     fraction("backward_slip_fraction", report.backward_fraction);
     fraction("flight_fraction", report.flight_fraction);
+    // lengths: the rig's unit μ0 k_z A/k_x (model.md), to the digits both precisions agree on
+    const auto length_m = [&](const char* name, const std::string& text) {
+      int agreed = 0;
+      for (char ch : text.substr(0, text.find('e')))
+        if (std::isdigit(static_cast<unsigned char>(ch)) && (agreed > 0 || ch != '0')) ++agreed;
+      const mpfr v = mpfr(text) * in.mu0 * g.k_z * A / g.k_x;
+      field(name, v == 0 ? std::string("0") : format_significant(v, std::min(digits, agreed)));
+    };
+    length_m("body_amplitude_m", report.amplitude);
+    length_m("largest_backward_slip_m", report.largest_backward_slip);
     char floquet[32];
     std::snprintf(floquet, sizeof floquet, "%.6g", report.floquet);
     field("floquet_multiplier", floquet);
