@@ -706,15 +706,31 @@ class RigSolver {
             break;
           }
           if (d0 > 0 && d1 < 0 && !(at_event && x0 == a)) {
-            // a local maximum between grid points: does it reach 0?
-            Real lo = x0, hi = x1;
+            // a local maximum between grid points: does it reach 0? Bisected on g' until it is
+            // found, or until |g'| ≤ G rules out g ≥ 0 on [lo, hi] with a margin above rounding
+            // (max g ≤ (g(lo) + g(hi))/2 + G (hi − lo)/2): no root, at a few evaluations instead of
+            // one per bit of the working precision.
+            Real lo = x0, hi = x1, glo = g0, ghi = g1;
+            const Real slope = G(x0), margin = 64 * std::numeric_limits<Real>::epsilon() * (1 + abs(g0) + abs(g1));
+            bool excluded = false;
             for (int it = 0; it < 400; ++it) {
+              if ((glo + ghi) / 2 + slope * (hi - lo) / 2 < -margin) {
+                excluded = true;
+                break;
+              }
               const Real c2 = (lo + hi) / 2;
               if (!(c2 > lo) || !(c2 < hi)) break;
-              if (f(m, c2).second > 0) lo = c2; else hi = c2;
+              const auto [gc, dc] = f(m, c2);
+              if (dc > 0) {
+                lo = c2;
+                glo = gc;
+              } else {
+                hi = c2;
+                ghi = gc;
+              }
             }
             const Real xm = (lo + hi) / 2;
-            const Real gm = f(m, xm).first;
+            const Real gm = excluded ? Real(-1) : f(m, xm).first;
             if (gm >= 0) {
               stop = detail::bracketed_root<Real>([&](const Real& x) { return f(m, x).first; }, x0, xm, g0, gm,
                                                   "rig dynamics event", stats_, Real(1));
