@@ -2188,6 +2188,31 @@ def rig_tests():
         if abs(ratio / F(out["mu_over_mu0"]) - 1) > F("1e-7"):
             raise Fail("trace with --kappa: the rows' int s / int n = %s, mu %s" % (ratio, out["mu_over_mu0"]))
     case("rig: trace rows hold |s| <= n, close the period, and give mu's fractions and value", trace_rows)
+
+    def backward_slip_through_a_jump():
+        # Square wave, gamma = 1.05: at phi = 1/2 n drops to 0.05 below |s| (s = -0.385), s is projected
+        # to -0.05 and the contact point X_c = lag + beta phi - s moves back at once, then slips back on.
+        # The largest backward slip is X_c's whole fall over that phase, read off trace's rows (a
+        # review found the instant part left out: 0.196 of 0.531).
+        args = ["--wave", "square", "--beta", "2", "--gamma", "1.05", "--kappa", "0.6", "--omega", "1", "--zeta", "0.05"]
+        rows = [l.split(",") for l in ok_run(["trace"] + args + ["--digits", "20"]).splitlines()[1:]]
+        xc = [F(r[3]) + 2 * F(r[0]) - F(r[2]) for r in rows]
+        back = [i for i, r in enumerate(rows) if r[5] == "backward"]
+        fall = xc[back[0] - 1] - xc[back[-1]]
+        out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+        if rows[back[0] - 1][0] != rows[back[0]][0] or abs(fall - F(out["largest_backward_slip"])) > F("1e-15"):
+            raise Fail("square rig: X_c falls %s over the backward phase, largest_backward_slip %s" % (
+                fall, out["largest_backward_slip"]))
+    case("rig: the largest backward slip includes the instant slip at a drop of n", backward_slip_through_a_jump)
+
+    def no_stick_sliver_at_zero():
+        # Forward slip runs across the period's end (X' = 54 > n'): no stick span of a few ulp at
+        # phi = 0 (a review found one of 2.3e-36 at the default digits).
+        rows = ok_run(["trace", "--wave", "sine", "--beta", "100", "--gamma", "0.5", "--kappa", "1", "--omega", "1",
+                       "--points", "4"]).splitlines()[1:]
+        if rows[0].split(",")[5] != "slip" or F(rows[1].split(",")[0]) < F("1e-3"):
+            raise Fail("trace, sine beta = 100 at the resonance: %r" % rows[:3])
+    case("rig: no stick sliver at phi = 0 where slip runs across the period's end", no_stick_sliver_at_zero)
     bad("rig: trace --kappa without --omega", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--kappa", "1"],
         [], ["--omega"])
     bad("rig: trace --omega 0", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0.5", "--kappa", "1", "--omega", "0"],
