@@ -846,7 +846,7 @@ element the scalar call's value. An element that fails raises its error prefixed
 arrays) while the others answer.
 )doc";
 
-constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None) -> (phi, n, s)
+constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None) -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode)
 
 The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
 in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
