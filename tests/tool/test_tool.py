@@ -1454,7 +1454,7 @@ HELP_FLAGS = {
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
-    "trace": (["--beta", "--gamma", "--points", "--digits"] + WAVE, {"--points": "1000", "--digits": "17"}),
+    "trace": (["--beta", "--gamma", "--points", "--digits"] + WAVE + RIG, {"--points": "1000", "--digits": "17"}),
     "fit": (["--harmonics", "--output"] + WAVE, {}),
     "verify": (["--digits", "--claim", "--format"], {"--digits": "50"}),
     "version": ([], {}),
