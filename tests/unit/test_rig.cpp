@@ -47,9 +47,14 @@ const Case kCases[] = {
 
 // The peer converges to the event-driven value: its error shrinks as the step does (at least
 // first order: O(h) where n jumps between grid points), and at 2^15 steps a period it is within
-// 40 h of it (the measured constants are below 1).
+// 40 h of it (the measured constants are below 1). There it also checks the other quantities the
+// solver returns: the body's amplitude (the peer's grid extremes: O(h²) at a smooth extremum),
+// the backward-slip fraction (counted per step: a few steps), the largest backward slip of the
+// contact point in one phase (its ends fall between steps: O(h)), and the largest Floquet modulus
+// against the peer's transient, whose change per period shrinks by it (fitted over the periods
+// whose change lies in [1e-11, 1e-4]: multipliers above ~0.1 leave enough of them).
 TEST(RigDynamics, TimeSteppingPeerConvergesToTheEventDrivenSolver) {
-  int backward = 0;
+  int backward = 0, fitted = 0;
   for (const Case& c : kCases) {
     SCOPED_TRACE(std::string(c.wave) + " beta " + std::to_string(static_cast<double>(c.beta)) + " gamma " +
                  std::to_string(static_cast<double>(c.gamma)));
@@ -72,48 +77,24 @@ TEST(RigDynamics, TimeSteppingPeerConvergesToTheEventDrivenSolver) {
         // fractions are counted per step by the peer: within a few steps
         EXPECT_NEAR(static_cast<double>(p.flight_fraction), static_cast<double>(r.flight_fraction), 4.0 / steps);
         EXPECT_NEAR(static_cast<double>(p.stick_fraction), static_cast<double>(r.stick_fraction), 64.0 / steps);
+        const double h = 1.0 / steps;
+        // second order, measured within 1.5e-7 (150 h²); 1e-6 of the amplitude allows 7 times that
+        EXPECT_NEAR(static_cast<double>(p.amplitude), static_cast<double>(r.amplitude), 1e-6 * static_cast<double>(r.amplitude));
+        EXPECT_NEAR(static_cast<double>(p.backward_fraction), static_cast<double>(r.backward_fraction), 4 * h);
+        // first order in the phase's ends, where X_c moves fast: measured 3.4 h (and 4e-6 at 2^17)
+        EXPECT_NEAR(static_cast<double>(p.largest_backward_slip), static_cast<double>(r.largest_backward_slip), 16 * h);
+        // where the transient leaves enough periods to fit: a complex pair's rotation leaves up to 0.025
+        if (p.contraction > 0 && r.floquet >= 0.1) {
+          EXPECT_NEAR(static_cast<double>(p.contraction), r.floquet, 0.05);
+          ++fitted;
+        }
       }
     }
     EXPECT_NEAR(static_cast<double>(r.stick_fraction + r.slip_fraction + r.flight_fraction), 1.0, 1e-15);
     if (r.backward_fraction > 0) ++backward;
   }
   EXPECT_GE(backward, 2);  // the last two cases slip backward (about 1.4 % and 4.6 % of the period)
-}
-
-// The other quantities the solver returns against the same peer at 2^15 steps a period: the
-// body's amplitude (the peer's grid extremes: O(h²) at a smooth extremum, O(h) where Y has a kink),
-// the backward-slip fraction (counted per step: a few steps), the largest backward slip of the
-// contact point in one phase (its ends fall between steps: O(h)), and the largest Floquet modulus
-// against the peer's transient, whose change per period shrinks by it (where it is resolved: the
-// peer settles to 1e-13 from rest, so only multipliers above ~0.3 leave eight periods to measure).
-TEST(RigDynamics, AmplitudeBackwardSlipAndFloquetAgainstThePeer) {
-  int fitted = 0, backward = 0;
-  for (const Case& c : kCases) {
-    SCOPED_TRACE(std::string(c.wave) + " beta " + std::to_string(static_cast<double>(c.beta)) + " gamma " +
-                 std::to_string(static_cast<double>(c.gamma)));
-    const auto w = wave_named<long double>(c.wave);
-    const RigResult<long double> r = solve_rig<long double>(*w, c.beta, c.gamma, {c.kappa, c.omega, c.zeta, 0});
-    const auto n = [&](long double phi) {
-      const long double v = c.gamma + (*w)(phi - std::floor(phi));
-      return v > 0 ? v : 0.0L;
-    };
-    const std::size_t steps = std::size_t(1) << 15;
-    const auto p = test::rig_peer<long double>(n, c.beta, c.kappa, c.omega, c.zeta, steps, 4000, 1e-13L);
-    const double h = 1.0 / steps;
-    // second order, measured within 1.5e-7 (150 h²); 1e-6 of the amplitude allows 7 times that
-    EXPECT_NEAR(static_cast<double>(p.amplitude), static_cast<double>(r.amplitude), 1e-6 * static_cast<double>(r.amplitude));
-    EXPECT_NEAR(static_cast<double>(p.backward_fraction), static_cast<double>(r.backward_fraction), 4 * h);
-    // first order in the phase's ends, where X_c moves fast: measured 3.4 h (and 4e-6 at 2^17)
-    EXPECT_NEAR(static_cast<double>(p.largest_backward_slip), static_cast<double>(r.largest_backward_slip), 16 * h);
-    // where the transient leaves enough periods to fit: a complex pair's rotation leaves up to 0.025
-    if (p.contraction > 0 && r.floquet >= 0.1) {
-      EXPECT_NEAR(static_cast<double>(p.contraction), r.floquet, 0.05);
-      ++fitted;
-    }
-    if (r.largest_backward_slip > 0) ++backward;
-  }
   EXPECT_GE(fitted, 10);
-  EXPECT_EQ(backward, 2);
 }
 
 // Ω → ∞ (continuous n): μ̄ → g_w(βκ/(1 + κ), γ) as O(1/Ω) (model.md measured 1.67e-6 at 1e4 for the
