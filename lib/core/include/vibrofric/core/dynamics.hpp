@@ -409,9 +409,9 @@ class RigSolver {
     std::size_t steps1 = 0, steps2 = 0;
     double floquet1 = 0, floquet2 = 0;
     Real last1 = 0, last2 = 0;
-    const State a = shoot(qs, steps1, floquet1, last1);
+    const State a = shoot_or_settle(qs, steps1, floquet1, last1);
     const auto J1 = jacobian_;
-    const State b = shoot(State{0, 0, 0}, steps2, floquet2, last2);
+    const State b = shoot_or_settle(State{0, 0, 0}, steps2, floquet2, last2);
     RigResult<Real> res, other;
     res.retained_area = other.retained_area = 0;
     period(a, &res);
@@ -1054,6 +1054,40 @@ class RigSolver {
     }
     throw SolverError("rig dynamics: no periodic state found in " + std::to_string(max_steps) +
                       " Newton steps (residual " + detail::short_str(nr) + ")");
+  }
+
+  // shoot(u), and where Newton finds no state from u: the dynamics' own transient from u, up to
+  // 4000 periods while it still contracts (a weakly attracting state of an undamped rig, multiplier
+  // ~0.97, where the map has a kink in every one of its many stick-slip switches), then Newton
+  // from where it got to. Its error again where that does not help either.
+  State shoot_or_settle(const State& u, std::size_t& steps, double& floquet, Real& last_step) const {
+    try {
+      return shoot(u, steps, floquet, last_step);
+    } catch (const SolverError& first) {
+      using std::abs;
+      using std::sqrt;
+      const Real eps = std::numeric_limits<Real>::epsilon();
+      State x = u;
+      Real best = -1;
+      int since_best = 0;
+      for (int k = 0; k < 4000 && since_best < 200; ++k) {
+        const State p = period(x);
+        const Real change = std::max({abs(Real(p.y - x.y)), abs(Real(p.v - x.v)), abs(Real(p.s - x.s))});
+        x = p;
+        if (best < 0 || change < best) {
+          best = change;
+          since_best = 0;
+        } else {
+          ++since_best;
+        }
+        if (change <= sqrt(eps) * std::max({Real(1), abs(x.y), abs(x.s)})) break;
+      }
+      try {
+        return shoot(x, steps, floquet, last_step, false);
+      } catch (const SolverError&) {
+        throw first;
+      }
+    }
   }
 
   // Chord iterations from u with a fixed J (see solve(y, v, s, J)); false where they do not contract.
