@@ -514,7 +514,7 @@ class RigSolver {
     // the boundary: a stick span of a few ulp at φ = 0 before the slip it ends in would be an
     // artefact of the state's last bits (trace showed one of 2e-36 at β = 100).
     using std::abs;
-    const Real scale = std::max({Real(1), abs(r.y), abs(r.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(r.s)});
+    const Real scale = state_scale(r.y, r.v, r.s);
     const Real tol = 64 * std::numeric_limits<Real>::epsilon() * scale;
     if (r.s >= n - tol && r.v + beta_ - dn > 0) {
       r.s = n;
@@ -904,7 +904,7 @@ class RigSolver {
     // surest way in, also where the state sits on a kink of the map (s clamped to ±n at φ = 0,
     // where difference quotients straddle the kink and Newton wanders).
     for (int k = 0; k < 200; ++k) {
-      const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
+      const Real scale = state_scale(u.y, u.v, u.s);
       if (nr <= 64 * eps * scale) break;
       State next;
       const auto rn = residual(pu, next);
@@ -980,7 +980,7 @@ class RigSolver {
       }
     };
     for (int it = 0; it < max_steps; ++it) {
-      const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
+      const Real scale = state_scale(u.y, u.v, u.s);
       if (nr <= 64 * eps * scale) {
         if (it == 0) jacobian();
         steps = static_cast<std::size_t>(it);
@@ -1056,6 +1056,13 @@ class RigSolver {
                       " Newton steps (residual " + detail::short_str(nr) + ")");
   }
 
+  // The size a state's residual is measured against (shoot's and chord's convergence, the boundary
+  // tolerance at φ = 0): Y, s and Y' in units of the body's frequency, at least 1.
+  Real state_scale(const Real& y, const Real& v, const Real& s) const {
+    using std::abs;
+    return std::max({Real(1), abs(y), Real(abs(v) / (2 * boost::math::constants::pi<Real>() * p_.omega)), abs(s)});
+  }
+
   // shoot(u), and where Newton finds no state from u: the dynamics' own transient from u, up to
   // 4000 periods while it still contracts (a weakly attracting state of an undamped rig, multiplier
   // ~0.97, where the map has a kink in every one of its many stick-slip switches), then Newton
@@ -1070,22 +1077,22 @@ class RigSolver {
       State x = u;
       Real best = -1;
       int since_best = 0;
-      for (int k = 0; k < 4000 && since_best < 200; ++k) {
-        const State p = period(x);
-        const Real change = std::max({abs(Real(p.y - x.y)), abs(Real(p.v - x.v)), abs(Real(p.s - x.s))});
-        x = p;
-        if (best < 0 || change < best) {
-          best = change;
-          since_best = 0;
-        } else {
-          ++since_best;
-        }
-        if (change <= sqrt(eps) * std::max({Real(1), abs(x.y), abs(x.s)})) break;
-      }
       try {
+        for (int k = 0; k < 4000 && since_best < 200; ++k) {
+          const State p = period(x);
+          const Real change = std::max({abs(Real(p.y - x.y)), abs(Real(p.v - x.v)), abs(Real(p.s - x.s))});
+          x = p;
+          if (best < 0 || change < best) {
+            best = change;
+            since_best = 0;
+          } else {
+            ++since_best;
+          }
+          if (change <= sqrt(eps) * state_scale(x.y, x.v, x.s)) break;
+        }
         return shoot(x, steps, floquet, last_step, false);
       } catch (const SolverError&) {
-        throw first;
+        throw first;  // the transient's own failure says less than Newton's
       }
     }
   }
@@ -1104,7 +1111,7 @@ class RigSolver {
       }
       const std::array<Real, 3> r{pu.y - u.y, pu.v - u.v, pu.s - u.s};
       const Real nr = std::max({abs(r[0]), abs(r[1]), abs(r[2])});
-      const Real scale = std::max({Real(1), abs(u.y), abs(u.v) / (2 * boost::math::constants::pi<Real>() * p_.omega), abs(u.s)});
+      const Real scale = state_scale(u.y, u.v, u.s);
       if (nr <= 64 * eps * scale) {
         last = nr;
         steps = static_cast<std::size_t>(it);
