@@ -91,6 +91,38 @@ bool gauss_segment(F f, const Real& rel, const Real& abs_tol, Real& value, Real&
   }
 }
 
+// ∫_a^b h(t) dt over one piece of the row, through t = a + (b − a) u²(3 − 2u): dt/du vanishes
+// at both ends, so the square-root behaviour there (σ beyond a profile's kink, Φ and N where
+// contact or stick begins) becomes analytic in u. Gauss rules (gauss_segment) to rel·L1 or abs,
+// else tanh-sinh; SolverError naming `what` if neither converges.
+template <class Real, class H>
+void integrate_piece(H h, const Real& a, const Real& b, const Real& rel, const Real& abs_tol, const Options& opt,
+                     const char* what, Real& value, Real& err, Real& l1) {
+  using std::sqrt;
+  const Real width = b - a;
+  const auto f = [&](const Real& u) -> Real {
+    const Real t = u < Real(1) / 2 ? Real(a + width * u * u * (3 - 2 * u)) : Real(b - width * (1 - u) * (1 - u) * (1 + 2 * u));
+    if (!(t > a) || !(t < b)) return Real(0);  // dt/du = 0 at the ends
+    return h(t) * 6 * width * u * (1 - u);
+  };
+  if (gauss_segment(f, rel, abs_tol, value, err, l1)) return;
+  std::size_t levels = 0;
+  try {
+    value = integrator<Real>(opt.max_quadrature_levels).integrate(f, Real(0), Real(1), rel, &err, &l1, &levels);
+  } catch (const SolverError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SolverError(std::string("tanh-sinh quadrature failed: ") + e.what());
+  }
+  // Boost stops early where two levels stop agreeing better (the integrand's rounding):
+  // accepted if half the digits were reached, the estimate then entering the error.
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  const bool stalled = levels < opt.max_quadrature_levels && err <= sqrt(eps) * l1;
+  if (!(err <= rel * l1) && !(err <= abs_tol) && !stalled && l1 > 0)
+    throw SolverError(std::string("spring integral of ") + what + " did not converge on t in [" + short_str(a) + ", " +
+                      short_str(b) + "]: error estimate " + short_str(err) + " after " + std::to_string(levels) + " levels");
+}
+
 // The breakpoints ts (ascending, distinct) with pieces graded towards close neighbours. The
 // integrand continued beyond a segment's end is singular at the next breakpoint too. One far
 // closer than the width (breakpoints that cluster, as the tangency points of a small β near the
@@ -237,6 +269,33 @@ std::size_t rising_piece_at(const Waveform<Real>& w, const Real& phi) {
   throw SolverError("first contact at phase " + short_str(phi) + " lies on no rising piece");
 }
 
+// The onset of a stick anchored at first contact (level 0) of the spring at γ' = m, as a function
+// of γ' on the interval between two γ' breakpoints around m: an upward jump out of zero starts it
+// at a fixed phase q; first contact on a rising piece at the γ'-dependent phase where w = −γ'.
+template <class Real>
+struct AnchoredOnset {
+  AnchoredOnset(const Waveform<Real>& w, const StickPhase<Real>& st, const Real& m, RootStats& stats)
+      : w_(w), begin_(st.begin), stats_(stats) {
+    const std::size_t pieces = w.piece_count();
+    for (std::size_t i = 0; i < pieces; ++i)
+      if (w.jump_at(i) && w.piece_begin(i) == st.begin && !(m + w.end_value((i + pieces - 1) % pieces) > 0)) at_jump = true;
+    if (!at_jump) piece = rising_piece_at(w, st.begin);
+  }
+  Real operator()(const Real& g) const {
+    if (at_jump) return begin_;
+    const std::size_t i = *piece;
+    return w_.solve_value_root(i, Real(-g), w_.piece_begin(i), w_.piece_end(i), Real(w_.begin_value(i) + g),
+                               Real(w_.end_value(i) + g), stats_);
+  }
+  bool at_jump = false;
+  std::optional<std::size_t> piece;  // the rising piece of first contact (not at_jump)
+
+ private:
+  const Waveform<Real>& w_;
+  Real begin_;
+  RootStats& stats_;
+};
+
 }  // namespace detail
 
 // The γ' in (lo, hi) where Φ_w(β, γ') or N_w(γ') is not analytic, ascending. From the waveform:
@@ -301,18 +360,9 @@ std::vector<Real> gamma_breakpoints(detail::SpringRow<Real>& row, const Real& lo
     std::optional<Result<Real>> rb;  // at b, once per interval (a noisy signal has dozens of sticks)
     for (const auto& st : rm.stick_phases) {
       if (st.level != 0) continue;  // anchored on n: its events do not move with γ'
-      // Onset: an upward jump out of zero (fixed phase q), or first contact on a rising piece.
-      std::optional<std::size_t> piece;
-      bool at_jump = false;
-      for (std::size_t i = 0; i < pieces; ++i)
-        if (w.jump_at(i) && w.piece_begin(i) == st.begin && !(m + w.end_value((i + pieces - 1) % pieces) > 0)) at_jump = true;
-      if (!at_jump) piece = detail::rising_piece_at(w, st.begin);
-      auto onset = [&](const Real& g) -> Real {
-        if (at_jump) return st.begin;
-        const std::size_t i = *piece;
-        return w.solve_value_root(i, Real(-g), w.piece_begin(i), w.piece_end(i), Real(w.begin_value(i) + g),
-                                  Real(w.end_value(i) + g), row.stats());
-      };
+      const detail::AnchoredOnset<Real> onset(w, st, m, row.stats());
+      const bool at_jump = onset.at_jump;
+      const std::optional<std::size_t>& piece = onset.piece;
       // How far the end reaches on [a, b]: it is largest at b.
       const Real ob = onset(b);
       Real reach = st.end;
@@ -447,7 +497,6 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     for (std::size_t k = 0; k + 1 < ps.size(); ++k)
       if (ps[k + 1] > ps[k]) scale += (ps[k + 1] - ps[k]) * spring(k, Real((ps[k] + ps[k + 1]) / 2)).normal_area;
     using std::sqrt;
-    auto& quad = detail::integrator<Real>(opt.max_quadrature_levels);
     for (std::size_t k = 0; k + 1 < ps.size(); ++k) {
       const Real &a = ps[k], &b = ps[k + 1];
       if (!(b > a)) continue;
@@ -460,37 +509,15 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
       const bool quadratic = fitted_quadratic(k) != nullptr;
       const Real seg_target = quadratic ? Real(32 * eps) : tol;
       const Real seg_tol = size > seg_target * scale ? std::min(Real(seg_target * scale / size), Real(sqrt(eps))) : Real(sqrt(eps));
-      // t = a + (b − a) u²(3 − 2u): dt/du vanishes at both ends, so the square-root behaviour
-      // there (σ beyond a profile's kink, Φ and N where contact or stick begins) becomes analytic in u.
-      const Real width = b - a;
-      auto at_u = [&](const Real& u, bool n) -> Real {
-        const Real t = u < Real(1) / 2 ? Real(a + width * u * u * (3 - 2 * u))
-                                       : Real(b - width * (1 - u) * (1 - u) * (1 + 2 * u));
-        if (!(t > a) || !(t < b)) return Real(0);  // dt/du = 0 at the ends
-        const auto v = spring(k, t);
-        return (n ? v.normal_area : v.retained_area) * 6 * width * u * (1 - u);
-      };
       for (int which = sticks ? 0 : 1; which < 2; ++which) {
         Real err = 0, l1 = 0;
         Real value;
-        const auto f = [&](const Real& u) -> Real { return at_u(u, which == 1); };
-        if (!detail::gauss_segment(f, seg_tol, Real(seg_target * scale), value, err, l1)) {
-          std::size_t levels = 0;
-          try {
-            value = quad.integrate(f, Real(0), Real(1), seg_tol, &err, &l1, &levels);
-          } catch (const SolverError&) {
-            throw;
-          } catch (const std::exception& e) {
-            throw SolverError(std::string("tanh-sinh quadrature failed: ") + e.what());
-          }
-          // Boost stops early where two levels stop agreeing better (the integrand's rounding):
-          // accepted if half the digits were reached, the estimate then entering the error.
-          const bool stalled = levels < opt.max_quadrature_levels && err <= sqrt(eps) * l1;
-          if (!(err <= seg_tol * l1) && !(err <= seg_target * scale) && !stalled && l1 > 0)
-            throw SolverError(std::string("spring integral of ") + (which ? "N" : "Phi") + " did not converge on t in [" +
-                              short_str(a) + ", " + short_str(b) + "]: error estimate " + short_str(err) + " after " +
-                              std::to_string(levels) + " levels");
-        }
+        detail::integrate_piece(
+            [&](const Real& t) -> Real {
+              const auto v = spring(k, t);
+              return which == 1 ? v.normal_area : v.retained_area;
+            },
+            a, b, seg_tol, Real(seg_target * scale), opt, which ? "N" : "Phi", value, err, l1);
         qerr += err;
         (which ? N : F) += value;
         (which ? lN : lF) += l1;
