@@ -584,10 +584,12 @@ ClaimCheck fig2(int digits) {
         std::sort(phis.begin(), phis.end());
         phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
         const auto n_at = [&](const Real& phi) { const Real v = gamma + w(phi); return v > 0 ? v : Real(0); };
+        // A stick holds from its onset (s = its level there: 0 after an upward jump of n out of
+        // zero, where n is already the value after the jump) to its end, where s meets n.
         const auto in_stick = [&](const Real& phi) -> const StickPhase<Real>* {
           for (const auto& st : r.stick_phases)
             for (int k = 0; k < 2; ++k)
-              if (phi + k > st.begin && phi + k < st.end) return &st;
+              if (phi + k >= st.begin && phi + k < st.end) return &st;
           return nullptr;
         };
         Real worst = 0;
@@ -605,7 +607,7 @@ ClaimCheck fig2(int digits) {
           if (const auto* st = in_stick(phi)) {
             const Real x = phi + (phi < st->begin ? 1 : 0);
             note(abs(sv - st->level - beta * (x - st->begin)), "stick point off the ramp of slope beta at " + str(phi, 12));
-            if (nv - sv <= 0) note(scale, "stick touches n inside at " + str(phi, 12));
+            if (x > st->begin && nv - sv <= 0) note(scale, "stick touches n inside at " + str(phi, 12));
           } else {
             note(abs(sv - nv), "slip s != n at " + str(phi, 12));
             if (i + 1 < phis.size() && !in_stick(phis[i + 1]) && !in_stick((phi + phis[i + 1]) / 2)) {

@@ -653,13 +653,15 @@ Result<Real> psi(const Waveform<Real>& w, const Real& beta, const Options& opt =
 }
 
 // s(φ) of a solved state, for φ ∈ [0, 1): on a stick phase the ramp, elsewhere n (model.md).
+// At a stick's onset its level, as w takes the value after a jump there: a stick out of zero at
+// an upward jump of n starts at s = 0, not at n.
 template <class Real>
 Real tangential_force(const Waveform<Real>& w, const Result<Real>& r, const Real& beta,
                       const Real& gamma, const Real& phi) {
   for (const auto& st : r.stick_phases) {
     for (int k = 0; k < 2; ++k) {
       const Real x = phi + k;
-      if (x > st.begin && x < st.end) return st.level + beta * (x - st.begin);
+      if (x >= st.begin && x < st.end) return st.level + beta * (x - st.begin);
     }
   }
   const Real v = gamma + w(phi);
