@@ -16,6 +16,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved_trace.hpp"
 
 namespace {
 
@@ -189,6 +190,30 @@ TEST(MeasuredSignal, FiftyToTwoThousandSamples) {
     EXPECT_LE(mpfr(ref.relative_error), mpfr("1e-25"));
     EXPECT_LE(ref.springs, 8 * (ref.gamma_breaks.size() + 2));
   }
+}
+
+// The row's stick integral (curved_trace.hpp) takes t_stick of a piecewise-linear wave from a line
+// per γ' interval (two springs and a check): against a spring at every node (the smooth path), on
+// 50 noisy samples, jumping and not, in double and long double. Both are asked for 1e-12 of
+// themselves; the lines' rounding (64 eps of the period, checked) is far below.
+TEST(MeasuredSignal, StickIntegralFromLinesAgreesWithEverySpring) {
+  const WaveSpec spec = rig_wave(50, 5);
+  for (const std::string& profile : {std::string("sphere"), std::string("wearflat:10")})
+    for (const auto& [b, g] : std::vector<std::pair<double, double>>{{0.5, 0.2}, {0.5, -0.5}, {3, 0.9}}) {
+      SCOPED_TRACE(profile + " beta " + std::to_string(b) + " gamma " + std::to_string(g));
+      const auto w = make_waveform<double>(spec);
+      const EverySpring<double> smooth(*w);
+      const auto p = make_profile<double>(parse_profile(profile));
+      double e1 = 0, e2 = 0;
+      const double lines = curved_stick_integral(*w, *p, b, g, 1e-12, e1), every = curved_stick_integral(smooth, *p, b, g, 1e-12, e2);
+      EXPECT_NEAR(lines, every, 2e-12 * every + 1e-14);
+      EXPECT_GT(lines, 0);
+      const auto wl = make_waveform<long double>(spec);
+      const auto pl = make_profile<long double>(parse_profile(profile));
+      long double el = 0;
+      EXPECT_NEAR(static_cast<double>(curved_stick_integral(*wl, *pl, static_cast<long double>(b), static_cast<long double>(g), 1e-15L, el)),
+                  every, 2e-12 * every + 1e-14);
+    }
 }
 
 // The same at 5,000 samples (about a minute in double): label slow, run by

@@ -59,6 +59,9 @@ struct SpringRowResult {
   std::size_t periods = 0;  // the most periods any spring of the row needed
   std::size_t steps = 0;    // N, steps per period
   std::size_t springs = 0;  // M, springs on the curved part (the flat block comes on top)
+  // With SpringRowOptions::trace: the row's sums of n and s at each step φ_k of the steady period
+  // (as friction_integral: half-row, flat part included), k = 0 … N − 1.
+  std::vector<Real> trace_n, trace_s;
 };
 
 struct SpringRowOptions {
@@ -70,6 +73,7 @@ struct SpringRowOptions {
   // Offset of the time grid, in steps: φ_k = (k + phase)/N, 0 ≤ phase < 1. μ̄ does not depend
   // on a phase shift of w (model.md), the O(h) errors do: averaging over offsets measures orders.
   double phase = 0;
+  bool trace = false;  // also sum n and s over the row at every step (SpringRowResult::trace_n, trace_s)
 };
 
 namespace detail {
@@ -79,13 +83,14 @@ struct RowSpring {
   Real retained_area, normal_area;  // h Σ s and h Σ n over the steady period (Φ_i, N_i)
   Real stick;                       // fraction of that period's steps with s < n
   std::size_t periods = 0;
+  std::vector<Real> s;  // s at step k of the steady period (where asked for)
 };
 
 // One spring of the row at shifted mean indentation γ' = γ − σ(x): w_table[k] = w(φ_k).
 // No contact at any step gives zeros.
 template <class Real>
 RowSpring<Real> step_row_spring(const std::vector<Real>& w_table, const Real& beta, const Real& gamma_shifted,
-                                std::size_t max_periods) {
+                                std::size_t max_periods, bool trace = false) {
   using std::abs;
   using std::ceil;
   const std::size_t N = w_table.size();
@@ -98,7 +103,8 @@ RowSpring<Real> step_row_spring(const std::vector<Real>& w_table, const Real& be
     if (n[k] < n[start]) start = k;
     if (n[k] > n_max) n_max = n[k];
   }
-  RowSpring<Real> out{Real(0), Real(0), Real(0), 0};
+  RowSpring<Real> out{Real(0), Real(0), Real(0), 0, {}};
+  if (trace) out.s.assign(N, Real(0));
   if (!(n_max > 0)) return out;
   if (max_periods == 0) max_periods = 3 + static_cast<std::size_t>(static_cast<double>(ceil(n_max / beta)));
   const Real step = beta / N;
@@ -112,6 +118,7 @@ RowSpring<Real> step_row_spring(const std::vector<Real>& w_table, const Real& be
       s += step;
       if (s > nk) s = nk;
       else if (s < nk) ++sticking;
+      if (trace) out.s[(start + m) % N] = s;
       sum_s += s;
       sum_n += nk;
     }
@@ -168,21 +175,37 @@ SpringRowResult<Real> simulate_spring_row(const Waveform<Real>& w, const Profile
   r.steps = opt.steps;
   r.springs = opt.springs;
   Real F = 0, N = 0, S = 0;
+  if (opt.trace) {
+    r.trace_n.assign(opt.steps, Real(0));
+    r.trace_s.assign(opt.steps, Real(0));
+  }
+  // A spring of weight `weight` at γ', into the row's trace.
+  auto add_trace = [&](const detail::RowSpring<Real>& c, const Real& gamma_shifted, const Real& weight) {
+    if (!opt.trace) return;
+    for (std::size_t k = 0; k < opt.steps; ++k) {
+      const Real n = gamma_shifted + table[k];
+      if (n > 0) r.trace_n[k] += weight * n;
+      r.trace_s[k] += weight * c.s[k];
+    }
+  };
   if (L > 0) {
-    const detail::RowSpring<Real> c = detail::step_row_spring(table, beta, gamma, opt.max_periods);
+    const detail::RowSpring<Real> c = detail::step_row_spring(table, beta, gamma, opt.max_periods, opt.trace);
     F += L * c.retained_area;
     N += L * c.normal_area;
     S += L * c.stick;
     r.periods = c.periods;
+    add_trace(c, gamma, L);
   }
   Real cf = 0, cn = 0, cs = 0;
   for (std::size_t i = 0; i < opt.springs; ++i) {
     const Real x = L + (Real(i) + Real(0.5)) * dx;
-    const detail::RowSpring<Real> c = detail::step_row_spring(table, beta, Real(gamma - p.sigma_at_x(x)), opt.max_periods);
+    const Real g = gamma - p.sigma_at_x(x);
+    const detail::RowSpring<Real> c = detail::step_row_spring(table, beta, g, opt.max_periods, opt.trace);
     cf += c.retained_area;
     cn += c.normal_area;
     cs += c.stick;
     if (c.periods > r.periods) r.periods = c.periods;
+    add_trace(c, g, dx);
   }
   F += dx * cf;
   N += dx * cn;
