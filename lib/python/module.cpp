@@ -846,7 +846,7 @@ element the scalar call's value. An element that fails raises its error prefixed
 arrays) while the others answer.
 )doc";
 
-constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None) -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode)
+constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat') -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode)
 
 The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
 in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
@@ -859,6 +859,10 @@ With kappa and omega (zeta optional), the rig's periodic state (model.md, "Rig d
 `trace --kappa K --omega W --zeta Z`: six arrays (phi, n, s, lag, lag_rate, mode), the body's lag
 Y = X - beta phi behind the drive and Y' in units of mu0 k_z A/k_x, and the mode ('stick', 'slip',
 'backward', 'flight') as str; both ends of every span (two entries at one phi where a mode ends).
+
+With a curved profile (as mu's profile=, the tool's `trace --profile P`): n and s summed over the
+half-row of MDR springs, in the units of the row (mean(s)/mean(n) over the period is mu's value),
+at the equally spaced phases and the central spring's contact boundaries.
 )doc";
 
 constexpr const char* fit_doc = R"doc(fit(y, harmonics, t=None) -> Wave
@@ -1209,9 +1213,10 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
       "trace",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& points,
          const py::object& digits, bool strings, const py::object& kappa, const py::object& omega,
-         const py::object& zeta) -> py::tuple {
+         const py::object& zeta, const py::object& profile) -> py::tuple {
         const WaveSpec w = to_wave(wave);
         TraceRequest request;
+        request.profile = to_profile(profile);
         request.beta.text = scalar_text(beta, "beta");
         request.gamma.text = scalar_text(gamma, "gamma");
         if (const auto n = optional_int(points, "points")) request.points = *n;
@@ -1239,7 +1244,7 @@ still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (t
         return trace_arrays(rows, strings);
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false,
-      "kappa"_a = py::none(), "omega"_a = py::none(), "zeta"_a = py::none(), trace_doc);
+      "kappa"_a = py::none(), "omega"_a = py::none(), "zeta"_a = py::none(), "profile"_a = "flat", trace_doc);
 
   m.def("fit", fit_wave, "y"_a, "harmonics"_a, "t"_a = py::none(), fit_doc);
 

@@ -437,7 +437,9 @@ const std::vector<CommandSpec>& commands() {
                         "boundaries (where n = 0 exactly)", "1000",
          [](Flags& f, const std::string& t) { f.points = integer(t, "--points", min_trace_points, max_trace_points); }},
         {"digits", "D", "significant digits, 1 to 10000", "17",
-         [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_digits, max_digits); }}},
+         [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_digits, max_digits); }},
+        {"profile", "P", "the indenter (model.md MDR): n and s summed over the half-row (their ratio's mean is mu)", "flat",
+         profile_named}},
        {&kWaveFlags, &kRigFlags},
        std::string(kWaves) + kRig +
            "  trace with them prints phi,n,s,lag,lag_rate,mode: the body's lag Y = X - beta phi behind the\n"
@@ -973,6 +975,7 @@ int run_trace(const Flags& f) {
   request.digits_name = "--digits";
   if (f.digits) request.digits = *f.digits;
   if (f.points) request.points = *f.points;
+  request.profile = f.profile;
   const BatchOptions o = batch_options(f);
   if (o.rig) {
     const auto rows = rig_trace_rows(wave, request, *o.rig, o.solver);

@@ -335,6 +335,12 @@ def bad_input_tests():
     bad("trace beta not a number", ["trace", "--wave", "sine", "--beta", "x", "--gamma", "0"], ["x"], ["--beta"])
     bad("trace points 1", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0", "--points", "1"], ["1"], ["--points"])
     bad("trace no contact", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "-1"], ["-1"], ["gamma"])
+    bad("trace --profile unknown", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0", "--profile", "sphre"],
+        ["sphre"], ["profile", "sphere"])
+    bad("trace --profile no contact", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "-1", "--profile", "sphere"],
+        ["-1"], ["gamma"])
+    bad("trace --profile with rig dynamics", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0", "--profile", "cone",
+                                              "--kappa", "1", "--omega", "2"], ["cone"], ["flat punch"])
 
     # sweep ranges and gamma lists
     sw = ["sweep", "--wave", "sine"]
@@ -847,6 +853,36 @@ def format_tests():
             raise Fail("trace violates s <= n or has no stick/slip: %r" % rows)
     case("trace: phases sorted over one period, s <= n, both stick and slip present", trace)
 
+    def trace_curved():
+        # A sphere under the sine, its centre jumping: n and s summed over the MDR half-row.
+        base = ["trace", "--wave", "sine", "--beta", "0.5", "--gamma=-0.3", "--profile", "sphere", "--points", "400"]
+        rows = [[decimal.Decimal(x) for x in line.split(",")] for line in ok_run(base + ["--digits", "20"]).strip().splitlines()[1:]]
+        fine = [line.split(",") for line in ok_run(base + ["--digits", "30"]).strip().splitlines()[1:]]
+        phis = [r[0] for r in rows]
+        if phis != sorted(set(phis)) or phis[0] != 0 or phis[-1] != 1 or len(fine) != len(rows):
+            raise Fail("trace --profile: phases not increasing from 0 to 1: %r" % phis[:5])
+        if any(r[2] > r[1] or r[2] < 0 for r in rows) or not any(0 < r[2] == r[1] for r in rows) \
+                or not any(0 < r[2] < r[1] for r in rows):
+            raise Fail("trace --profile violates 0 <= s <= n or has no stick/slip")
+        # The centre's contact boundaries, asin(0.3)/(2 pi) and 1/2 - that: rows with n = s = 0 exactly.
+        edges = [r for r in rows if str(r[0]).startswith(("0.04849334201033", "0.45150665798966"))]
+        if len(edges) != 2 or any(r[1] != 0 or r[2] != 0 for r in edges):
+            raise Fail("trace --profile at the contact boundaries: %r" % edges)
+        # Every printed digit: the 30-digit values rounded to 20 are the 20-digit ones.
+        for r, f in zip(rows, fine):
+            for got, more in zip(r[1:], f[1:]):
+                if got != 0 and Decimal(more) != 0 and abs(Decimal(more) - got) > abs(got) * Decimal("1e-19"):
+                    raise Fail("trace --profile at phi %s: %s with 20 digits, %s with 30" % (r[0], got, more))
+        # The period's means: their ratio is mu's (trapezoid over 400 phases, O(h^2) ~ 6e-6 of the
+        # curvature; the centre's edges are kinks of S: 1e-4 relative).
+        s = sum((a[2] + b[2]) / 2 * (b[0] - a[0]) for a, b in zip(rows, rows[1:]))
+        n = sum((a[1] + b[1]) / 2 * (b[0] - a[0]) for a, b in zip(rows, rows[1:]))
+        mu = Decimal(ok_run(["mu", "--wave", "sine", "--beta", "0.5", "--gamma=-0.3", "--profile", "sphere"]).strip())
+        if abs(s / n - mu) > Decimal("1e-4") * mu:
+            raise Fail("trace --profile: the rows' mean s/n = %s, mu --profile gives %s" % (s / n, mu))
+    case("trace --profile sphere: 0 <= s <= n, stick and slip, zeros at the centre's contact boundaries, "
+         "every digit, mean s over mean n is mu", trace_curved)
+
     def version():
         out = ok_run(["version"])
         for word in ("vibrofric", "boost 1.81", "mpfr", "gmp", "compiler"):
@@ -1272,7 +1308,10 @@ def physical_tests():
     decimal.getcontext().prec = 60
     tri = [("--wave", "triangle")] + STEEL[1:]
 
-    def curved_fn(shape_args, load, peak):
+    def curved_fn(shape_args, load, peak, row_share):
+        """row_share: the mean over the half-row of (1 + gamma - sigma)/(1 + gamma): every spring of the
+        triangle jumps and sticks 2 (1 + gamma')/(4 + beta) of the period, so the row's stick_fraction
+        is row_share times the punch's (2/3 for sigma = x^2, 1/2 for sigma = x)."""
         def fn():
             a = physical_args(tri, **{"--digits": "30", "--radius": None}) + shape_args
             got = parse(ok_run(a))
@@ -1281,7 +1320,7 @@ def physical_tests():
             g = Decimal(exact["gamma"].numerator) / Decimal(exact["gamma"].denominator)
             want = ["shape", "E_star_Pa", "G_star_Pa", "contact_radius_max_m", "beta", "gamma",
                     "mu_over_mu0", "mu", "F_N_mean_N", "F_x_mean_N", "F_N_peak_N", "p_mean_peak_Pa",
-                    "p_max_peak_Pa", "beta_c", "contact_fraction"]
+                    "p_max_peak_Pa", "beta_c", "contact_fraction", "stick_fraction"]
             if list(got) != want:
                 raise Fail("%s printed %s, expected %s" % (cmd(a), list(got), want))
             for k in ("E_star_Pa", "G_star_Pa", "beta", "gamma"):
@@ -1304,6 +1343,8 @@ def physical_tests():
             else:
                 expect_digits(got["p_max_peak_Pa"], Fraction(p_max), 30, "%s: Hertz p0" % cmd(a))
             expect_digits(got["contact_fraction"], (1 + exact["gamma"]) / 2, 30, "%s: contact fraction" % cmd(a))
+            expect_digits(got["stick_fraction"], row_share * 2 * (1 + exact["gamma"]) / (4 + b), 30,
+                          "%s: the row's stick fraction" % cmd(a))
         return fn
 
     def hertz(E, A, g):
@@ -1320,13 +1361,13 @@ def physical_tests():
     def sneddon_peak(E, d):     # 45 degrees: F = 2 E* d^2/pi, a = 2 d/pi; the tip's pressure is unbounded
         return 2 * E * d * d / PI_DEC, 2 * d / PI_DEC, None
     case("physical --shape sphere (triangle): Eq. 19, the Hertz mean load, peak load and pressure",
-         curved_fn(["--shape", "sphere", "--R", "0.01"], hertz, hertz_peak))
+         curved_fn(["--shape", "sphere", "--R", "0.01"], hertz, hertz_peak, Fraction(2, 3)))
     case("physical --shape cone (triangle): Eq. 19, the Sneddon mean load, peak load and mean pressure",
-         curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon, sneddon_peak))
+         curved_fn(["--shape", "cone", "--half-angle", "45"], sneddon, sneddon_peak, Fraction(1, 2)))
     # A measured profile of two samples in metres, f = r: the cone of 45 degrees (Sneddon).
     cone_file = write("cone45.txt", "0 0\n0.001 0.001\n")
     case("physical --shape profile:FILE (two samples, a 45-degree cone): Sneddon's mean load, peak load and pressure",
-         curved_fn(["--shape", "profile:" + cone_file], sneddon, sneddon_peak))
+         curved_fn(["--shape", "profile:" + cone_file], sneddon, sneddon_peak, Fraction(1, 2)))
 
     def wearflat_peak():
         # Wear flat of radius b on a sphere of radius R (MDR, g = (x/R) sqrt(x^2 - b^2) beyond b):
@@ -1454,7 +1495,8 @@ HELP_FLAGS = {
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
-    "trace": (["--beta", "--gamma", "--points", "--digits"] + WAVE + RIG, {"--points": "1000", "--digits": "17"}),
+    "trace": (["--beta", "--gamma", "--points", "--digits", "--profile"] + WAVE + RIG,
+              {"--points": "1000", "--digits": "17", "--profile": "flat"}),
     "fit": (["--harmonics", "--output"] + WAVE, {}),
     "verify": (["--digits", "--claim", "--format"], {"--digits": "50"}),
     "version": ([], {}),

@@ -14,6 +14,7 @@
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/api/suggest.hpp"
 #include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved_trace.hpp"
 #include "vibrofric/core/physical.hpp"
 
 namespace vibrofric {
@@ -315,6 +316,12 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     beta_c = c.beta_c();
     for (const auto& seg : c.segments())
       if (seg.contact) contact_fraction += seg.v - seg.u;  // the body touches while the central spring does
+    if (!options.rig) {
+      // The row's stick share (curved_trace.hpp), to 5 digits beyond those printed.
+      mpfr err;
+      stick_fraction = curved_stick_integral(*w, *p, g.beta, g.gamma, mpfr(pow(mpfr(10), -digits - 5)), err, options.solver) /
+                       p->x_at_sigma(mpfr(g.gamma + w->maximum()));
+    }
   }
   // The deepest instant of the period, every spring at n_max = γ + max w: the load (punch: k_z A
   // n_max; curved: 2 E* A L (n_max X − ∫₀^X σ dx), σ(X) = n_max) and the mean pressure over the
@@ -412,7 +419,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     char floquet[32];
     std::snprintf(floquet, sizeof floquet, "%.6g", report.floquet);
     field("floquet_multiplier", floquet);
-  } else if (kind == "flat") {
+  } else {
     line("stick_fraction", stick_fraction);
   }
   return rec;
@@ -435,6 +442,54 @@ void check_trace_request(const TraceRequest& request) {
                      std::to_string(min_digits) + " to " + std::to_string(max_digits));
 }
 
+namespace {
+// The curved trace (curved_trace.hpp) at the phases, each s to `digits` of itself. Rows whose s
+// only reached the rounding floor (just after first contact: s tiny) are computed again at twice
+// the working digits, up to three times; the contact boundaries are 0 by definition.
+std::vector<std::array<std::string, 3>> curved_trace_rows(const WaveSpec& wave, const TraceRequest& request,
+                                                          const std::vector<mpfr>& phis, const std::vector<mpfr>& edges) {
+  const int digits = request.digits;
+  std::map<std::size_t, CurvedTraceRow<mpfr>> done;
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < phis.size(); ++i)
+    if (std::find(edges.begin(), edges.end(), phis[i]) == edges.end()) todo.push_back(i);
+  int work = digits + guard_digits(digits);
+  for (int attempt = 0; !todo.empty(); ++attempt, work *= 2) {
+    if (attempt == 4) {
+      const auto& t = done.at(todo.front());
+      throw SolverError("trace at phase " + format_significant(t.phi, 10) + ": s = " + format_significant(t.s, 10) +
+                        " keeps an error estimate of " + format_significant(t.error, 3) + " at " + std::to_string(work / 2) +
+                        " working digits, not " + std::to_string(digits) + " digits of itself");
+    }
+    PrecisionScope scope(static_cast<unsigned>(work));
+    const auto w = make_waveform<mpfr>(wave);
+    const auto p = make_profile<mpfr>(request.profile);
+    const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
+    const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);
+    const mpfr target = pow(mpfr(10), -digits);
+    std::vector<mpfr> at;
+    for (std::size_t i : todo) at.push_back(phis[i]);
+    const auto trace = curved_trace(*w, *p, beta, gamma, at, mpfr(target / 16));
+    std::vector<std::size_t> again;
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+      done[todo[k]] = trace[k];
+      if (!(trace[k].error <= target / 2 * trace[k].s)) again.push_back(todo[k]);
+    }
+    todo = again;
+  }
+  std::vector<std::array<std::string, 3>> rows;
+  for (std::size_t i = 0; i < phis.size(); ++i) {
+    const auto it = done.find(i);
+    if (it == done.end())
+      rows.push_back({format_significant(phis[i], digits), "0", "0"});
+    else
+      rows.push_back({format_significant(phis[i], digits), format_significant(it->second.n, digits),
+                      format_significant(it->second.s, digits)});
+  }
+  return rows;
+}
+}  // namespace
+
 std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request) {
   check_trace_request(request);
   const int n_points = request.points, digits = request.digits;
@@ -443,6 +498,20 @@ std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const T
   const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
   const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);
   const Contact<mpfr> contact = make_contact(*w, gamma);
+  if (request.profile.kind != ProfileKind::flat) {
+    // The central spring's contact boundaries (the body lifts off and lands), then the phases.
+    std::vector<mpfr> edges;
+    for (const auto& g : contact.segments())
+      if (g.contact) {
+        if (g.nu == 0) edges.push_back(g.u);
+        if (g.nv == 0) edges.push_back(g.v);
+      }
+    std::vector<mpfr> phis(edges);
+    for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
+    std::sort(phis.begin(), phis.end());
+    phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+    return curved_trace_rows(wave, request, phis, edges);
+  }
   const auto r = solve(contact, beta);
   // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32).
   std::vector<mpfr> edges;

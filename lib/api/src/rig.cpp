@@ -168,6 +168,10 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
                                         const Options& opt) {
   check_trace_request(request);
   check_rig(rig);
+  if (request.profile.kind != ProfileKind::flat)
+    throw InputError("rig dynamics with profile " + request.profile.name +
+                     ": the springs of a curved contact share the body, so the MDR row does not decouple "
+                     "(rig dynamics: the flat punch only)");
   const Point p{*request.beta.text, *request.gamma.text};
   detail::ContactCheck check(wave, Quantity::mu);
   check(p);

@@ -18,7 +18,9 @@ namespace vibrofric {
 // u_mean_m (given F-N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, at the deepest instant
 // F_N_peak_N, p_mean_peak_Pa and p_max_peak_Pa (Hertz on the sphere; "inf" where the elastic
 // pressure is unbounded: the punch's rim, the cone's tip, a profile's kink), beta_c,
-// contact_fraction, and for the flat punch stick_fraction.
+// contact_fraction (curved: the central spring's, while the body touches), stick_fraction (curved:
+// the springs' stick shares averaged over the row out to the largest contact radius,
+// curved_stick_integral / X of core/curved_trace.hpp).
 using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
 
 // One input: its value as decimal text, as typed (none: not given), and the name the caller knows
@@ -65,6 +67,7 @@ struct TraceRequest {
   int points = 1000;  // in [min_trace_points, max_trace_points]
   int digits = 17;    // in [min_digits, max_digits]
   std::string points_name = "points", digits_name = "digits";
+  ProfileSpec profile;  // flat: the punch; else the MDR row's sums (core/curved_trace.hpp)
 };
 
 // InputError unless β and γ are given as decimals and points and digits lie in their ranges.
@@ -72,7 +75,9 @@ void check_trace_request(const TraceRequest& request);
 
 // Rows (φ, n, s) over one period, φ ascending: `points` + 1 equally spaced phases, both ends of
 // every stick phase and the contact boundaries (where n = s = 0 exactly), `digits` significant
-// digits each (at digits plus guard digits of working precision).
+// digits each (at digits plus guard digits of working precision). A curved profile: n and s summed
+// over the half-row (N(φ), S(φ) of curved_trace.hpp: ∫₀¹ n dφ / ∫₀¹ s dφ is the mu of `mu
+// --profile`), at the equally spaced phases and the central spring's contact boundaries.
 std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request);
 
 }  // namespace vibrofric
