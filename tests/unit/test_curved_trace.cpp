@@ -33,35 +33,43 @@ const std::vector<Case> kWaves{{"sine", 0}, {"triangle", 4}, {"square", 0}, {"sa
 const std::vector<const char*> kProfiles{"sphere", "cone", "power:3", "wearflat:10"};
 const std::vector<std::pair<double, double>> kPoints{{0.5, 0.2}, {0.5, -0.5}, {2, 0.5}, {0.1, 1.5}, {3, -0.3}};
 
-TEST(CurvedTrace, AgreesWithTheSpringRowAtEveryStep) {
-  double total[2] = {0, 0};  // the largest |S_row − S| summed over the cases, M = 256 and 1024
+// f(case, w, profile, β, γ) on every wave × profile × point, in double.
+template <class F>
+void for_each_case(F f) {
   for (const Case& c : kWaves)
     for (const char* profile : kProfiles)
       for (const auto& [beta, gamma] : kPoints) {
         SCOPED_TRACE(std::string(c.wave) + " " + profile + " beta " + std::to_string(beta) + " gamma " + std::to_string(gamma));
         const auto w = make_waveform<double>(parse_wave(c.wave));
         const auto p = make_profile<double>(parse_profile(profile));
-        for (const std::size_t M : {256u, 1024u}) {
-          SpringRowOptions o;
-          o.springs = o.steps = M;
-          o.trace = true;
-          const auto row = simulate_spring_row(*w, *p, beta, gamma, o);
-          std::vector<double> phases;
-          for (std::size_t k = 0; k < M; ++k) phases.push_back(static_cast<double>(k) / M);
-          const auto tr = curved_trace(*w, *p, beta, gamma, phases, 1e-13);
-          const double X = row.contact_radius, h = 1.0 / M;
-          double worst_s = 0;
-          for (std::size_t k = 0; k < M; ++k) {
-            EXPECT_LE(tr[k].s, tr[k].n);
-            EXPECT_GE(tr[k].s, 0);
-            // n: the closed form against the row's midpoint sum (x-rule only).
-            EXPECT_NEAR(tr[k].n, row.trace_n[k], 4 * X * h * h) << k;
-            worst_s = std::max(worst_s, std::abs(tr[k].s - row.trace_s[k]));
-          }
-          EXPECT_LE(worst_s, X * ((beta + c.kink_slope) * h + h * h));
-          total[M == 1024u] += worst_s;
-        }
+        f(c, *w, *p, beta, gamma);
       }
+}
+
+TEST(CurvedTrace, AgreesWithTheSpringRowAtEveryStep) {
+  double total[2] = {0, 0};  // the largest |S_row − S| summed over the cases, M = 256 and 1024
+  for_each_case([&](const Case& c, const Waveform<double>& w, const Profile<double>& p, double beta, double gamma) {
+    for (const std::size_t M : {256u, 1024u}) {
+      SpringRowOptions o;
+      o.springs = o.steps = M;
+      o.trace = true;
+      const auto row = simulate_spring_row(w, p, beta, gamma, o);
+      std::vector<double> phases;
+      for (std::size_t k = 0; k < M; ++k) phases.push_back(static_cast<double>(k) / M);
+      const auto tr = curved_trace(w, p, beta, gamma, phases, 1e-13);
+      const double X = row.contact_radius, h = 1.0 / M;
+      double worst_s = 0;
+      for (std::size_t k = 0; k < M; ++k) {
+        EXPECT_LE(tr[k].s, tr[k].n);
+        EXPECT_GE(tr[k].s, 0);
+        // n: the closed form against the row's midpoint sum (x-rule only).
+        EXPECT_NEAR(tr[k].n, row.trace_n[k], 4 * X * h * h) << k;
+        worst_s = std::max(worst_s, std::abs(tr[k].s - row.trace_s[k]));
+      }
+      EXPECT_LE(worst_s, X * ((beta + c.kink_slope) * h + h * h));
+      total[M == 1024u] += worst_s;
+    }
+  });
   // First order over the cases (one case alone may stall where the grid meets a kink): four
   // times the steps, at least 2.5 times closer (measured 4.3; the stick integral 4.1).
   EXPECT_LE(2.5 * total[1], total[0]);
@@ -72,25 +80,20 @@ TEST(CurvedTrace, AgreesWithTheSpringRowAtEveryStep) {
 // over the cases from M = 256 to 1024.
 TEST(CurvedTrace, StickIntegralAgreesWithTheSpringRow) {
   double total[2] = {0, 0};
-  for (const Case& c : kWaves)
-    for (const char* profile : kProfiles)
-      for (const auto& [beta, gamma] : kPoints) {
-        SCOPED_TRACE(std::string(c.wave) + " " + profile + " beta " + std::to_string(beta) + " gamma " + std::to_string(gamma));
-        const auto w = make_waveform<double>(parse_wave(c.wave));
-        const auto p = make_profile<double>(parse_profile(profile));
-        double err = 0;
-        const double stick = curved_stick_integral(*w, *p, beta, gamma, 1e-12, err);
-        EXPECT_LE(err, 1e-10 * stick + 1e-15);
-        for (const std::size_t M : {256u, 1024u}) {
-          SpringRowOptions o;
-          o.springs = o.steps = M;
-          const auto row = simulate_spring_row(*w, *p, beta, gamma, o);
-          const double d = std::abs(stick - row.stick_integral), X = row.contact_radius;
-          EXPECT_LE(d, 2.0 * X / M);
-          EXPECT_LE(stick, X);
-          total[M == 1024u] += d;
-        }
-      }
+  for_each_case([&](const Case&, const Waveform<double>& w, const Profile<double>& p, double beta, double gamma) {
+    double err = 0;
+    const double stick = curved_stick_integral(w, p, beta, gamma, 1e-12, err);
+    EXPECT_LE(err, 1e-10 * stick + 1e-15);
+    for (const std::size_t M : {256u, 1024u}) {
+      SpringRowOptions o;
+      o.springs = o.steps = M;
+      const auto row = simulate_spring_row(w, p, beta, gamma, o);
+      const double d = std::abs(stick - row.stick_integral), X = row.contact_radius;
+      EXPECT_LE(d, 2.0 * X / M);
+      EXPECT_LE(stick, X);
+      total[M == 1024u] += d;
+    }
+  });
   EXPECT_LE(2.5 * total[1], total[0]);
 }
 

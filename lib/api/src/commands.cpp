@@ -498,22 +498,8 @@ std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const T
   const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
   const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);
   const Contact<mpfr> contact = make_contact(*w, gamma);
-  if (request.profile.kind != ProfileKind::flat) {
-    // The central spring's contact boundaries (the body lifts off and lands), then the phases.
-    std::vector<mpfr> edges;
-    for (const auto& g : contact.segments())
-      if (g.contact) {
-        if (g.nu == 0) edges.push_back(g.u);
-        if (g.nv == 0) edges.push_back(g.v);
-      }
-    std::vector<mpfr> phis(edges);
-    for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
-    std::sort(phis.begin(), phis.end());
-    phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
-    return curved_trace_rows(wave, request, phis, edges);
-  }
-  const auto r = solve(contact, beta);
-  // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32).
+  // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32);
+  // of a curved contact, the central spring's (the body lifts off and lands).
   std::vector<mpfr> edges;
   for (const auto& g : contact.segments())
     if (g.contact) {
@@ -522,10 +508,13 @@ std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const T
     }
   std::vector<mpfr> phis(edges);
   for (int i = 0; i <= n_points; ++i) phis.push_back(mpfr(i) / n_points);
+  const bool curved = request.profile.kind != ProfileKind::flat;
+  const auto r = curved ? Result<mpfr>{} : solve(contact, beta);
   for (const auto& st : r.stick_phases)
     for (const mpfr& x : {st.begin, st.end}) phis.push_back(x - floor(x));
   std::sort(phis.begin(), phis.end());
   phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+  if (curved) return curved_trace_rows(wave, request, phis, edges);
   std::vector<std::array<std::string, 3>> rows;
   for (const mpfr& phi : phis) {
     const bool edge = std::find(edges.begin(), edges.end(), phi) != edges.end();
