@@ -834,7 +834,8 @@ E_star_Pa, G_star_Pa, k_z_N_per_m and k_x_N_per_m (flat) or contact_radius_max_m
 (wearflat), beta, gamma, u_mean_m (given F_N), mu_over_mu0, mu, F_N_mean_N, F_x_mean_N, at the
 deepest instant F_N_peak_N, p_mean_peak_Pa and p_max_peak_Pa (Hertz on the sphere; inf where the
 elastic pressure is unbounded: the punch's rim, the cone's tip, a profile's kink), beta_c (inf:
-stick at every beta), contact_fraction and stick_fraction (flat). Values as float (type None/'double': the
+stick at every beta), contact_fraction (curved: the central spring's) and stick_fraction (curved: the
+springs' stick shares averaged over the MDR half-row to the largest contact radius). Values as float (type None/'double': the
 nearest double of the tool's --type double text), numpy.longdouble, or for digits=D mpmath.mpf /
 decimal strings equal to `vibrofric physical --digits D --format json`; strings=True gives the
 tool's strings for every type. ValueError with the library's message (naming the input by its keyword).

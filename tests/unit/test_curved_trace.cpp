@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -164,6 +166,41 @@ TEST(CurvedTrace, WideWearFlatIsThePunch) {
   for (const auto& st : punch.stick_phases) punch_stick += st.end - st.begin;
   const mpfr X = p->x_at_sigma(mpfr(gamma + 1));
   EXPECT_LE(abs(stick / X - punch_stick), mpfr("2e-6"));
+}
+
+}  // namespace
+
+namespace {
+
+// A Fourier wave's rising piece ends at φ = 1 (not at a maximum): a quadrature node next to the
+// γ' breakpoint −w(1) maps back through σ ↔ t a rounding beyond it, and the first-contact onset
+// there was a bracket without a sign change ("contact boundary (γ + w = 0): no sign change on
+// [0.974, 1]", f = −1.2e-15 at 1), 8 of 400 random cases. The onset is now that end of the piece.
+// Every phase of a fine grid answers, within the double/long double agreement of the random runs.
+TEST(CurvedTrace, FourierOnsetAtThePeriodsEnd) {
+  const std::string path = ::testing::TempDir() + "three_harmonics.txt";
+  std::ofstream(path) << "1 0 1\n2 0.3 0.1\n3 0 0.2\n";
+  const WaveSpec spec = parse_wave("fourier:" + path);
+  const auto w = make_waveform<double>(spec);
+  const auto wl = make_waveform<long double>(spec);
+  for (const auto& [profile, beta, gamma] : std::vector<std::tuple<const char*, double, double>>{
+           {"power:3", 2.1406640831784598, 0.32905444515730831},
+           {"power:6", 0.15756659236921366, 0.80863381664491674},
+           {"power:1.5", 0.034834017330599779, 1.3638115147146863}}) {
+    SCOPED_TRACE(std::string(profile) + " beta " + std::to_string(beta) + " gamma " + std::to_string(gamma));
+    const auto p = make_profile<double>(parse_profile(profile));
+    const auto pl = make_profile<long double>(parse_profile(profile));
+    std::vector<double> phases;
+    std::vector<long double> phases_l;
+    for (int k = 0; k < 400; ++k) {
+      phases.push_back(k / 400.0);
+      phases_l.push_back(k / 400.0L);
+    }
+    const auto a = curved_trace(*w, *p, beta, gamma, phases, 1e-13);
+    const auto b = curved_trace(*wl, *pl, static_cast<long double>(beta), static_cast<long double>(gamma), phases_l, 1e-16L);
+    for (std::size_t k = 0; k < phases.size(); ++k)
+      EXPECT_NEAR(a[k].s, static_cast<double>(b[k].s), 1e-12 * static_cast<double>(b[k].n) + 1e-300) << phases[k];
+  }
 }
 
 }  // namespace

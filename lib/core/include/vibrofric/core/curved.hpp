@@ -284,8 +284,14 @@ struct AnchoredOnset {
   Real operator()(const Real& g) const {
     if (at_jump) return begin_;
     const std::size_t i = *piece;
-    return w_.solve_value_root(i, Real(-g), w_.piece_begin(i), w_.piece_end(i), Real(w_.begin_value(i) + g),
-                               Real(w_.end_value(i) + g), stats_);
+    const Real lo = w_.begin_value(i) + g, hi = w_.end_value(i) + g;
+    // γ' carried through σ ↔ t (a quadrature node next to the interval's end) may pass the end
+    // by a rounding: the onset is then that end of the piece, not a failed bracket.
+    using std::abs;
+    const Real rounding = 64 * std::numeric_limits<Real>::epsilon() * (abs(g) + 1);
+    if (hi < 0 && -hi <= rounding) return w_.piece_end(i);
+    if (lo > 0 && lo <= rounding) return w_.piece_begin(i);
+    return w_.solve_value_root(i, Real(-g), w_.piece_begin(i), w_.piece_end(i), lo, hi, stats_);
   }
   bool at_jump = false;
   std::optional<std::size_t> piece;  // the rising piece of first contact (not at_jump)
