@@ -204,3 +204,49 @@ TEST(CurvedTrace, FourierOnsetAtThePeriodsEnd) {
 }
 
 }  // namespace
+
+namespace {
+
+// The returned error estimates against the same algorithm at much higher precision: at 30 digits,
+// asked for 1e-25 of itself, each S(φ) and the stick integral lie within their own estimate plus
+// the rounding of the working precision (1000 eps of n) of the 60-digit values, and within the
+// 1e-25 asked for; N, a closed form, within that rounding.
+TEST(CurvedTrace, ErrorEstimatesHoldAgainstSixtyDigits) {
+  for (const auto& [wave, profile, beta, gamma] : std::vector<std::tuple<const char*, const char*, const char*, const char*>>{
+           {"sine", "sphere", "0.5", "-0.3"}, {"triangle", "wearflat:2", "0.3", "0.5"}, {"power:3", "cone", "2", "1.2"}}) {
+    SCOPED_TRACE(std::string(wave) + " " + profile + " beta " + beta + " gamma " + gamma);
+    std::vector<CurvedTraceRow<mpfr>> fine;
+    mpfr fine_stick, fine_err;
+    {
+      PrecisionScope scope(60);
+      const auto w = make_waveform<mpfr>(parse_wave(wave));
+      const auto p = make_profile<mpfr>(parse_profile(profile));
+      std::vector<mpfr> phases;
+      for (int k = 0; k < 40; ++k) phases.push_back(mpfr(k) / 40);
+      fine = curved_trace(*w, *p, mpfr(beta), mpfr(gamma), phases, mpfr("1e-55"));
+      fine_stick = curved_stick_integral(*w, *p, mpfr(beta), mpfr(gamma), mpfr("1e-55"), fine_err);
+    }
+    PrecisionScope scope(30);
+    const auto w = make_waveform<mpfr>(parse_wave(wave));
+    const auto p = make_profile<mpfr>(parse_profile(profile));
+    std::vector<mpfr> phases;
+    for (int k = 0; k < 40; ++k) phases.push_back(mpfr(k) / 40);
+    const auto tr = curved_trace(*w, *p, mpfr(beta), mpfr(gamma), phases, mpfr("1e-25"));
+    const mpfr eps = std::numeric_limits<mpfr>::epsilon();
+    for (std::size_t k = 0; k < tr.size(); ++k) {
+      PrecisionScope wide(60);
+      const mpfr rounding = 1000 * eps * fine[k].n;
+      EXPECT_LE(abs(mpfr(tr[k].s) - fine[k].s), mpfr(tr[k].error) + rounding) << k;
+      EXPECT_LE(abs(mpfr(tr[k].s) - fine[k].s), mpfr("1e-25") * fine[k].s + rounding) << k;
+      EXPECT_LE(abs(mpfr(tr[k].n) - fine[k].n), rounding) << k;
+    }
+    mpfr err;
+    const mpfr stick = curved_stick_integral(*w, *p, mpfr(beta), mpfr(gamma), mpfr("1e-25"), err);
+    PrecisionScope wide(60);
+    EXPECT_GT(fine_stick, 0);
+    EXPECT_LE(abs(mpfr(stick) - fine_stick), mpfr(err) + 1000 * eps * fine_stick);
+    EXPECT_LE(abs(mpfr(stick) - fine_stick), mpfr("1e-25") * fine_stick + 1000 * eps * fine_stick);
+  }
+}
+
+}  // namespace

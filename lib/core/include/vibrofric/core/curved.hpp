@@ -261,6 +261,19 @@ class QuadraticSprings {
   Real phi_[3], n_[3], e_[3];
 };
 
+// The preconditions of a curved contact (solve_curved's): β > 0 finite, contact, and the contact
+// within the profile (a measured profile ends at its last sample). Returns the case's name for
+// messages: the flat context and the profile.
+template <class Real>
+std::string check_curved(const Waveform<Real>& w, const Profile<Real>& profile, const Real& beta, const Real& gamma) {
+  check_beta(w, beta);
+  check_contact(w, gamma);
+  if (gamma + w.maximum() > profile.sigma_limit())
+    throw DomainError("gamma = " + short_str(gamma) + " for profile " + profile.name() + ": the contact reaches beyond its last sample (sigma = " +
+                      short_str(profile.sigma_limit()) + "): expected gamma <= " + short_str(Real(profile.sigma_limit() - w.maximum())));
+  return context(w, beta, &gamma) + ", profile " + profile.name();
+}
+
 // The rising piece of w that contains phase φ ∈ [0, 1) (first contact lies on one).
 template <class Real>
 std::size_t rising_piece_at(const Waveform<Real>& w, const Real& phi) {
@@ -418,13 +431,8 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
                                 const Real& gamma, const Options& opt = {}, Real target = 0) {
   using detail::short_str;
   using std::abs;
-  detail::check_beta(w, beta);
-  detail::check_contact(w, gamma);
+  const std::string where = detail::check_curved(w, profile, beta, gamma);
   const Real sigma_max = gamma + w.maximum();
-  if (sigma_max > profile.sigma_limit())
-    throw DomainError("gamma = " + short_str(gamma) + " for profile " + profile.name() + ": the contact reaches beyond its last sample (sigma = " +
-                      short_str(profile.sigma_limit()) + "): expected gamma <= " + short_str(Real(profile.sigma_limit() - w.maximum())));
-  const std::string where = detail::context(w, beta, &gamma) + ", profile " + profile.name();
   const Real eps = std::numeric_limits<Real>::epsilon();
   if (!(target > 0)) target = 64 * eps;
   // Quadrature stops when two rules (levels) differ by tol·L1; rounding keeps that difference

@@ -51,18 +51,13 @@ const StickPhase<Real>* stick_at(const Result<Real>& r, const Real& phi, Real& a
   return nullptr;
 }
 
-// The shared set-up of a row's trace and stick integral: springs, the γ' breakpoints of
-// solve_curved and each interval's middle spring (its structure, computed once).
+// The shared set-up of a row's trace and stick integral, after solve_curved's preconditions:
+// springs (kept), the central one, and the γ' breakpoints of solve_curved.
 template <class Real>
 class RowStructure {
  public:
   RowStructure(const Waveform<Real>& w, const Profile<Real>& profile, const Real& beta, const Real& gamma, const Options& opt)
-      : w_(w), profile_(profile), beta_(beta), gamma_(gamma), opt_(opt), row_(w, beta, opt) {
-    check_beta(w, beta);
-    check_contact(w, gamma);
-    if (gamma + w.maximum() > profile.sigma_limit())
-      throw DomainError("gamma = " + short_str(gamma) + " for profile " + profile.name() + ": the contact reaches beyond its last sample (sigma = " +
-                        short_str(profile.sigma_limit()) + "): expected gamma <= " + short_str(Real(profile.sigma_limit() - w.maximum())));
+      : where(check_curved(w, profile, beta, gamma)), profile_(profile), gamma_(gamma), row_(w, beta, opt) {
     center_ = row_.result(gamma);
     nodes_.push_back(Real(-w.maximum()));
     for (const Real& g : gamma_breakpoints(row_, Real(-w.maximum()), gamma)) nodes_.push_back(g);
@@ -97,17 +92,11 @@ class RowStructure {
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
     return graded_pieces(ts);
   }
-  const Waveform<Real>& w() const { return w_; }
-  const Profile<Real>& profile() const { return profile_; }
-  const Real& beta() const { return beta_; }
-  const Real& gamma() const { return gamma_; }
-  const Options& options() const { return opt_; }
+  const std::string where;  // the case, for messages (check_curved)
 
  private:
-  const Waveform<Real>& w_;
   const Profile<Real>& profile_;
-  Real beta_, gamma_;
-  Options opt_;
+  Real gamma_;
   SpringRow<Real> row_;
   Result<Real> center_;
   std::vector<Real> nodes_;
@@ -129,7 +118,6 @@ std::vector<CurvedTraceRow<Real>> curved_trace(const Waveform<Real>& w, const Pr
   using std::floor;
   detail::RowStructure<Real> rs(w, profile, beta, gamma, opt);
   const Real eps = std::numeric_limits<Real>::epsilon();
-  const std::string where = detail::context(w, beta, &gamma) + ", profile " + profile.name();
   std::vector<CurvedTraceRow<Real>> rows;
   rows.reserve(phases.size());
   try {
@@ -212,7 +200,7 @@ std::vector<CurvedTraceRow<Real>> curved_trace(const Waveform<Real>& w, const Pr
   } catch (const PrecisionError&) {
     throw;
   } catch (const SolverError& e) {
-    throw SolverError(where + ": " + e.what());
+    throw SolverError(rs.where + ": " + e.what());
   }
   return rows;
 }
@@ -225,7 +213,6 @@ template <class Real>
 Real curved_stick_integral(const Waveform<Real>& w, const Profile<Real>& profile, const Real& beta, const Real& gamma,
                            const Real& rel, Real& err, const Options& opt = {}) {
   detail::RowStructure<Real> rs(w, profile, beta, gamma, opt);
-  const std::string where = detail::context(w, beta, &gamma) + ", profile " + profile.name();
   const auto stick_time = [](const Result<Real>& r) {
     Real t = 0;
     for (const auto& st : r.stick_phases) t += st.end - st.begin;
@@ -290,7 +277,7 @@ Real curved_stick_integral(const Waveform<Real>& w, const Profile<Real>& profile
   } catch (const PrecisionError&) {
     throw;
   } catch (const SolverError& e) {
-    throw SolverError(where + ": " + e.what());
+    throw SolverError(rs.where + ": " + e.what());
   }
   return total;
 }
