@@ -313,7 +313,7 @@ class EventPass {
     Real pos = g.u;
     const Real n_u = n(g, g.u);
     if (!sticking_) {
-      if (g.jump && n_u > s_) open_stick(g.u, shift, s_);  // upward jump of n
+      if (g.jump && n_u > s_) open_stick(g.u, shift, s_, value_bound());  // upward jump of n
     } else if (n_u <= ramp(g.u, shift)) {
       close_stick(g.u, shift);  // n jumps below (or touches) the ramp
     }
@@ -336,12 +336,12 @@ class EventPass {
           return;
         }
         if (dn(g, pos) > beta_) {
-          open_stick(pos, shift, n(g, pos));
+          open_stick(pos, shift, n(g, pos), value_bound(g.piece));
         } else if (convex && dn(g, g.v) > beta_) {
           const Real t = slope_root(g, pos, g.v);
           add_slip(g, pos, t);
           pos = t;
-          open_stick(pos, shift, n(g, pos));
+          open_stick(pos, shift, n(g, pos), value_bound(g.piece));
         } else {
           add_slip(g, pos, g.v);
           s_ = n(g, g.v);
@@ -459,7 +459,8 @@ class EventPass {
                                 Real(dn(g, lo) - beta_), Real(dn(g, hi) - beta_), "n' = beta (Eq. 4)", stats_);
   }
 
-  void open_stick(const Real& at, const Real& shift, const Real& level) {
+  // `value_err`: the bound of the level as a value of n (value_bound of the anchor's piece).
+  void open_stick(const Real& at, const Real& shift, const Real& level, const Real& value_err) {
     using std::abs;
     sticking_ = true;
     a_ = at;
@@ -469,7 +470,7 @@ class EventPass {
     // errors cancel to first order (the ramp is tangent to n, and n' is nearly constant over the
     // phase error: Waveform::unresolved); at first contact or a jump the ramp shifts by β times
     // the phase error.
-    level_err_ = value_bound() + beta_ * (1 + abs(at) + shift);
+    level_err_ = value_err + beta_ * (1 + abs(at) + shift);
     ++events_;
   }
   void close_stick(const Real& at, const Real& shift) {
@@ -485,12 +486,17 @@ class EventPass {
     using std::abs;
     return abs(gamma_) + w_.maximum() - w_.minimum() + w_.value_error();
   }
+  // The same on piece i.
+  Real value_bound(std::size_t i) const {
+    using std::abs;
+    return abs(gamma_) + w_.maximum() - w_.minimum() + w_.value_error(i);
+  }
 
   // ∫ n over [p, q] of segment g, exact or by quadrature; adds its rounding bound to `err`.
   Real area_n(const Segment& g, const Real& p, const Real& q, Real& err) {
     if (!g.contact || !(q > p)) return Real(0);
     using std::abs;
-    err += (q - p) * value_bound();
+    err += (q - p) * value_bound(g.piece);
     if (method_ == AreaMethod::exact) {
       const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
       err += abs(wq) + abs(wp) + w_.antiderivative_error(g.piece, q, wq) +

@@ -358,16 +358,26 @@ std::unique_ptr<Waveform<Real>> make_samples_from(std::string name, std::size_t 
     Sampled(std::string nm, std::vector<P> p, Normalisation<Real> nz) : PiecewiseLinear<Real>(std::move(nm), std::move(p)) {
       this->norm_ = nz;
       // Every phase φ_j, value w_j and slope rounded once to the type: a vertex moves by up to
-      // eps·φ_j ≤ eps in phase, which on a steep piece is |slope|·eps in value; plus eps·|w_j|,
-      // and the slope's own rounding over a piece, eps·|Δw| ≤ 2 eps; the evaluation's
-      // subtraction φ − φ_j adds eps·|Δw| again.
+      // eps·φ_j in phase, which on a steep piece is |slope|·eps·φ_j in value; plus eps·|w_j|,
+      // and the slope's own rounding over the piece, eps·|Δw|; the evaluation's subtraction
+      // φ − φ_j adds eps·|Δw| again (|Δw| ≤ max − min = 2). On piece i only its own phase,
+      // slope and end values enter: value_error(i). Within a rounding of a piece's end the
+      // neighbour's line is used; over that sliver the error is second order in an area, the
+      // only use of value_error(i).
       using std::abs;
+      for (std::size_t i = 0; i < this->piece_count(); ++i) {
+        const Real a = abs(this->begin_value(i)), b = abs(this->end_value(i));
+        piece_error_.push_back(abs(this->begin_slope(i)) * this->piece_begin(i) + std::max(a, b) +
+                               2 * abs(Real(this->end_value(i) - this->begin_value(i))));
+      }
       Real steep = 0;
       for (std::size_t i = 0; i < this->piece_count(); ++i) steep = std::max(steep, Real(abs(this->begin_slope(i))));
       value_error_ = steep + std::max(Real(abs(this->maximum())), Real(abs(this->minimum()))) + 4;
     }
     Real value_error() const override { return value_error_; }
+    Real value_error(std::size_t i) const override { return piece_error_[i]; }
     Real value_error_ = 0;
+    std::vector<Real> piece_error_;
   };
   return std::make_unique<Sampled>(std::move(name), std::move(pieces), norm);
 }

@@ -128,6 +128,9 @@ class Waveform {
   // relative error (tests/robustness/test_stress.cpp found both). `value` is antiderivative(i, φ)
   // as the caller computed it (the bound scales with it; recomputing it cost a quarter of a solve).
   virtual Real value_error() const { return Real(0); }
+  // The same bound on piece i alone (at most value_error()): an area over part of one piece needs
+  // only its own (a sampled signal's steepest piece sets value_error for all the others).
+  virtual Real value_error(std::size_t) const { return value_error(); }
   virtual Real antiderivative_error(std::size_t, const Real&, const Real& /*value*/) const { return Real(0); }
 
   // One-sided values and slopes at the piece ends, computed once.
