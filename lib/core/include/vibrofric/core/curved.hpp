@@ -201,16 +201,21 @@ class SpringRow {
 // ramp each solve a linear equation; a stick anchored at a kink starts at a fixed phase) and n is
 // affine in (φ, γ') on each piece, so Φ_w(β, γ') and N_w(γ') are quadratics in γ' there. Three
 // springs at the Chebyshev nodes u = 0, ±√3/2 of such an interval (u = (γ' − mid)/half) give both
-// at any γ' in it, as c0 + c1·u + c2·u². Error: the springs' rounding bounds weighted by the
-// Lagrange basis, Σ|L_i(u)|·err_i (at most 5/3 of the largest on [−1, 1]), plus 48 eps·S, S the
-// largest |Φ| or |N| at the nodes: with |c1| ≤ 1.2 S and |c2| ≤ 2.7 S, the coefficients' rounding
-// is at most 13 eps·S, Horner's 11 eps·S and that of u, through |dQ/du| ≤ 6.5 S, 13 eps·S (each
-// rounding counted as eps, twice the unit roundoff). Two more springs, at u = ±15/16, check the
-// quadratic: a breakpoint the structure search did not find, at u_k with a jump Δ of the slope,
-// moves a check's value by about Δ(15/16 − |u_k|) or more from the quadratic; one that misses a
-// check by more than both bounds is not used (the interval's nodes are then each solved). Not at
-// u = ±1, where Φ has a kink: the interval's ends carry the rounding of σ ↔ t, and a check an
-// ulp beyond the kink misses by about Δ·ulp, which is the size of the bounds.
+// at any γ' in it, as c0 + c1·u + c2·u². Error (in eps, twice the unit roundoff): the springs'
+// rounding bounds weighted by the Lagrange basis, Σ|L_i(u)|·err_i (at most 5/3 of the largest on
+// [−1, 1]), plus the quadratic's own rounding from its computed coefficients: Horner's
+// 2(|c0| + |c1 u| + |c2| u²); u = (γ' − mid)/half, rounded twice, through dQ/du, |c1 + 2 c2 u|·|u|;
+// c1 = (y2 − y0)/(2c) rounds twice, |c1|; c2 = (y0 + y2 − 2 y1)·2/3 three times,
+// |y0 + y2|/3 + |c2| (c = √3/2 is the same rounded number in the nodes and in c1, c2); and the
+// nodes mid ± c·half rounded to the type, within eps·(|mid| + half) in γ', each value off by
+// at most that times max |dQ/dγ'| ≤ (|c1| + 2|c2|)/half, weighted by the Lebesgue function.
+// (A fixed 48 eps of the largest value, used before, was 10–20 times that on a noisy signal.)
+// Two more springs, at u = ±15/16, check the quadratic: a breakpoint the structure search did
+// not find, at u_k with a jump Δ of the slope, moves a check's value by about Δ(15/16 − |u_k|)
+// or more from the quadratic; one that misses a check by more than both bounds is not used (the
+// interval's nodes are then each solved). Not at u = ±1, where Φ has a kink: the interval's ends
+// carry the rounding of σ ↔ t, and a check an ulp beyond the kink misses by about Δ·ulp, which
+// is the size of the bounds.
 template <class Real>
 class QuadraticSprings {
  public:
@@ -235,9 +240,9 @@ class QuadraticSprings {
     e_[0] = y0.err;
     e_[1] = y1.err;
     e_[2] = y2.err;
-    Real size = 0;  // S: the largest |Φ| or |N| at the nodes
-    for (const auto* y : {&y0, &y1, &y2}) size = std::max(size, std::max(Real(abs(y->retained_area)), Real(abs(y->normal_area))));
-    rounding_ = 48 * std::numeric_limits<Real>::epsilon() * size;
+    phi_sum_ = abs(Real(y0.retained_area + y2.retained_area)) / 3;
+    n_sum_ = abs(Real(y0.normal_area + y2.normal_area)) / 3;
+    node_shift_ = abs(mid_) + half_;
     for (const Real& g : {Real(mid_ - half_ * 15 / 16), Real(mid_ + half_ * 15 / 16)}) {
       const SpringValue<Real> q = at(g), v = row.at(g);
       if (abs(q.retained_area - v.retained_area) > q.err + v.err || abs(q.normal_area - v.normal_area) > q.err + v.err)
@@ -251,13 +256,20 @@ class QuadraticSprings {
     // The Lebesgue function Σ|L_i(u)|: L_1 = 1 − 4u²/3, L_0,2 = 2u(u ∓ c)/3, c = √3/2.
     const Real uu = u * u, l1 = abs(Real(1 - 4 * uu / 3)), side = abs(u) * 2 / 3, c = Real(0.8660254037844386468L);
     const Real l0 = side * abs(Real(u - c)), l2 = side * abs(Real(u + c));
-    // 1e-3 widens the Lebesgue sum over the rounding of u, of c (to double) and of the l_i.
-    const Real err = (l0 * e_[0] + l1 * e_[1] + l2 * e_[2]) * Real(1.001) + rounding_;
+    const Real lebesgue = l0 + l1 + l2;
+    const Real au = abs(u);
+    auto own = [&](const Real* k, const Real& sum) {
+      const Real a0 = abs(k[0]), a1 = abs(k[1]), a2 = abs(k[2]);
+      return 2 * a0 + 4 * a1 * au + (5 * a2 + sum) * uu + lebesgue * (a1 + 2 * a2) / half_ * node_shift_;
+    };
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    // 1e-3 widens the sum over the rounding of u, of c (to double), of the l_i and of the bound.
+    const Real err = (l0 * e_[0] + l1 * e_[1] + l2 * e_[2] + eps * std::max(own(phi_, phi_sum_), own(n_, n_sum_))) * Real(1.001);
     return {Real(phi_[0] + u * (phi_[1] + u * phi_[2])), Real(n_[0] + u * (n_[1] + u * n_[2])), err};
   }
 
  private:
-  Real mid_, half_, rounding_;
+  Real mid_, half_, node_shift_, phi_sum_, n_sum_;
   Real phi_[3], n_[3], e_[3];
 };
 
@@ -469,6 +481,12 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     // A piecewise-linear wave: each interval of ts (between two breakpoints), and so each graded
     // piece in it, takes its springs from one quadratic where the check springs agree.
     const bool linear = dynamic_cast<const PiecewiseLinear<Real>*>(&w) != nullptr;
+    // σ = t^P with P = 1 … 4 (cone, sphere): a quadratic's segment integrates Q(γ − t^P), a
+    // polynomial of degree 2P in t, which the Gauss rule of P + 1 points integrates exactly.
+    std::size_t exact_points = 0;
+    if (const auto* power = dynamic_cast<const PowerProfile<Real>*>(&profile))
+      for (int p = 1; p <= 4; ++p)
+        if (power->exponent() == p) exact_points = static_cast<std::size_t>(p) + 1;
     std::vector<std::size_t> interval(ps.size(), 0);
     for (std::size_t k = 0, j = 0; k < ps.size(); ++k) {
       while (j + 2 < ts.size() && !(ps[k] < ts[j + 1])) ++j;
@@ -525,13 +543,25 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
       const Real seg_tol = size > seg_target * scale ? std::min(Real(seg_target * scale / size), Real(sqrt(eps))) : Real(sqrt(eps));
       for (int which = sticks ? 0 : 1; which < 2; ++which) {
         Real err = 0, l1 = 0;
-        Real value;
-        detail::integrate_piece(
-            [&](const Real& t) -> Real {
-              const auto v = spring(k, t);
-              return which == 1 ? v.normal_area : v.retained_area;
-            },
-            a, b, seg_tol, Real(seg_target * scale), opt, which ? "N" : "Phi", value, err, l1);
+        Real value = 0;
+        const auto h = [&](const Real& t) -> Real {
+          const auto v = spring(k, t);
+          return which == 1 ? v.normal_area : v.retained_area;
+        };
+        if (quadratic && exact_points > 0) {
+          // No quadrature error: the values' rounding is in worst[k], and the sum's, m + 3 ≤ 8
+          // roundings of the unit roundoff (m ≤ 5 points, the weights, the width), in 4 eps·L1.
+          const detail::GaussRule<Real>& rule = detail::gauss_legendre<Real>(exact_points);
+          for (std::size_t i = 0; i < exact_points; ++i) {
+            const Real y = h(Real(a + (b - a) * rule.nodes[i]));
+            value += rule.weights[i] * y;
+            l1 += rule.weights[i] * abs(y);
+          }
+          value *= b - a;
+          l1 *= b - a;
+        } else {
+          detail::integrate_piece(h, a, b, seg_tol, Real(seg_target * scale), opt, which ? "N" : "Phi", value, err, l1);
+        }
         qerr += err;
         (which ? N : F) += value;
         (which ? lN : lF) += l1;
