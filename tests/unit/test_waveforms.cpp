@@ -440,12 +440,16 @@ TEST(Numbers, FormatSignificantOfHardwareTypesAsMpfr) {
 // at every φ, w being the exact wave the input defines; the solver's rounding bounds rest on it
 // (solver.hpp, value_bound). Reference: the same file read at 60 digits. The Fourier sum's error
 // grows with the harmonics (the recurrence's angle carries k·(2π + 4) eps), so without its own
-// term the bound would not hold for 40 harmonics; samples carry their phases' rounding.
+// term the bound would not hold for 40 harmonics; samples carry their phases' rounding. The same
+// with value_error(i) on the piece i holding φ (away from a rounding of its ends, which the
+// phases below are), the bound the solver charges an area over that piece; `worst_piece` is its
+// largest ratio.
 template <class Real>
-void expect_value_error_bounds(const std::string& spec, int phases, double* worst) {
+void expect_value_error_bounds(const std::string& spec, int phases, double* worst, double* worst_piece) {
   const auto w = make_waveform<Real>(parse_wave(spec));
   const mpfr eps(std::numeric_limits<Real>::epsilon());
-  const mpfr allowed = eps * (mpfr(w->maximum()) - mpfr(w->minimum()) + mpfr(w->value_error()));
+  const mpfr range = mpfr(w->maximum()) - mpfr(w->minimum());
+  const mpfr allowed = eps * (range + mpfr(w->value_error()));
   PrecisionScope scope(60);
   const auto exact = make_waveform<mpfr>(parse_wave(spec));
   for (int j = 0; j < phases; ++j) {
@@ -453,6 +457,12 @@ void expect_value_error_bounds(const std::string& spec, int phases, double* wors
     const mpfr err = abs(mpfr((*w)(phi)) - (*exact)(mpfr(phi)));
     ASSERT_LE(err, allowed) << spec << " at phi = " << static_cast<double>(phi);
     *worst = std::max(*worst, static_cast<double>(err / allowed));
+    std::size_t i = w->piece_count() - 1;
+    while (i > 0 && phi < w->piece_begin(i)) --i;
+    const mpfr piece_allowed = eps * (range + mpfr(w->value_error(i)));
+    ASSERT_LE(mpfr(w->value_error(i)), mpfr(w->value_error())) << spec << " piece " << i;
+    ASSERT_LE(err, piece_allowed) << spec << " at phi = " << static_cast<double>(phi) << " on piece " << i;
+    *worst_piece = std::max(*worst_piece, static_cast<double>(err / piece_allowed));
   }
 }
 
@@ -466,10 +476,11 @@ TEST(Waveforms, ValueErrorBoundsTheEvaluationError) {
   for (int j = 0; j < 200; ++j) samples << 2 * std::sin(6.283185307179586 * j / 200) + noise(random) << '\n';
   const std::string f = "fourier:" + temp_file("forty.txt", fourier.str()), s = "samples:" + temp_file("noisy.txt", samples.str());
   for (const std::string& spec : {f, s}) {
-    double worst_d = 0, worst_l = 0;
-    expect_value_error_bounds<double>(spec, 5000, &worst_d);
-    expect_value_error_bounds<long double>(spec, 5000, &worst_l);
-    std::printf("%s: largest error %.3g (double), %.3g (long double) of the allowance\n", spec.c_str(), worst_d, worst_l);
+    double worst_d = 0, worst_l = 0, piece_d = 0, piece_l = 0;
+    expect_value_error_bounds<double>(spec, 5000, &worst_d, &piece_d);
+    expect_value_error_bounds<long double>(spec, 5000, &worst_l, &piece_l);
+    std::printf("%s: largest error %.3g (double), %.3g (long double) of the allowance; piece by piece %.3g, %.3g\n",
+                spec.c_str(), worst_d, worst_l, piece_d, piece_l);
   }
 }
 
