@@ -226,7 +226,9 @@ template <class Real>
 class QuadraticSprings {
  public:
   // Springs at the nodes of (lo, hi); false if the check springs disagree with the quadratic.
-  bool fit(SpringRow<Real>& row, const Real& lo, const Real& hi) {
+  // Row: a SpringRow, or anything whose at(γ') gives a SpringValue (the tests' exact quadratics).
+  template <class Row>
+  bool fit(Row& row, const Real& lo, const Real& hi) {
     using std::abs;
     using std::sqrt;
     mid_ = (lo + hi) / 2;
