@@ -323,10 +323,10 @@ TEST(MeasuredSignal, LongDoubleRungDecidesTheGuaranteedDouble) {
 }
 
 // QuadraticSprings::at alone (curved.hpp): its value against the quadratic through the same three
-// springs at 60 digits. The node springs here are exact by construction (the true function is the
+// springs at 120 digits. The node springs here are exact by construction (the true function is the
 // quadratic through the values they return, bound 0), so the whole bound left is the quadratic's
 // own rounding: its coefficients, u, the rounded nodes and Horner's scheme. The check springs
-// (u = ±15/16) are that quadratic at 60 digits rounded once, with half an ulp as their bound.
+// (u = ±15/16) are that quadratic at 120 digits rounded once, with half an ulp as their bound.
 template <class Real>
 class ExactQuadraticRow {
  public:
@@ -345,7 +345,7 @@ class ExactQuadraticRow {
   }
   const std::array<Real, 3>& phi() const { return phi_; }
   const std::array<Real, 3>& n() const { return n_; }
-  // Lagrange's form through (x_i, y_i), at 60 digits.
+  // Lagrange's form through (x_i, y_i), at the caller's precision (120 digits).
   mpfr value(const Real& g, const std::array<Real, 3>& y) const {
     const mpfr x(g);
     mpfr sum = 0;
@@ -368,7 +368,8 @@ class ExactQuadraticRow {
 // each at 40 phases of its interval (the ends and u = ±(1 − 2^-k) among them). Every value within
 // its bound, in double, long double and cpp_bin_float_50 (whose bound at() computes in double on
 // scaled inputs, as for mpfr), against 120 digits; the largest ratio is printed (0.47 in double,
-// 0.45 in long double at 2026-11-27: the bound is about twice the worst error).
+// 0.45 in long double, 0.44 in cpp_bin_float_50 at 2026-11-27: the bound is about twice the
+// worst error).
 template <class Real>
 void expect_quadratic_within_its_bound(int trials) {
   PrecisionScope scope(120);

@@ -602,11 +602,10 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
       // same order (the same rules), and takes their values from it (at a node, a profile's σ and
       // dx/dt and the quadratic with its bound cost as much as the rest of the segment).
       std::vector<std::pair<Real, detail::SpringValue<Real>>> seen;
-      std::size_t replayed = 0;
       for (int which = sticks ? 0 : 1; which < 2; ++which) {
         Real err = 0, l1 = 0;
         Real value = 0;
-        replayed = 0;
+        std::size_t replayed = 0;
         const auto h = [&](const Real& t) -> Real {
           if (!quadratic) {
             const auto v = spring(k, t);
