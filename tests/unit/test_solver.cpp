@@ -109,7 +109,7 @@ TEST(Solver, MuIsExactlyOneWithoutStick) {
 }
 
 // μ̄, ∫s, ∫n and ∫(n − s) of a double solve against independent values, each within the solver's
-// own bound (relative_error, area_error, lost_relative_error: multiples of double's eps) plus
+// own bound (relative_error, retained_error, normal_error, lost_relative_error: multiples of double's eps) plus
 // 8 eps for the last rounding, as properties.hpp's expect_within_bound.
 void expect_values_within_bounds(const Result<double>& r, const mpfr& mu, const mpfr& retained, const mpfr& normal,
                                  const mpfr& lost, const std::string& where) {
@@ -119,10 +119,10 @@ void expect_values_within_bounds(const Result<double>& r, const mpfr& mu, const 
              e_nor = abs(mpfr(r.normal_area) - normal), e_lost = abs(mpfr(r.lost_area) - lost);
   EXPECT_LE(e_mu, (mpfr(r.relative_error) + 8 * eps) * mu)
       << where << ": mu " << in_eps(e_mu, mu) << " eps off, bound " << r.relative_error / eps.convert_to<double>() << " eps";
-  EXPECT_LE(e_ret, mpfr(r.area_error) + 8 * eps * retained)
-      << where << ": retained_area " << in_eps(e_ret, retained) << " eps off, area_error " << r.area_error;
-  EXPECT_LE(e_nor, mpfr(r.area_error) + 8 * eps * normal)
-      << where << ": normal_area " << in_eps(e_nor, normal) << " eps off, area_error " << r.area_error;
+  EXPECT_LE(e_ret, mpfr(r.retained_error) + 8 * eps * retained)
+      << where << ": retained_area " << in_eps(e_ret, retained) << " eps off, retained_error " << r.retained_error;
+  EXPECT_LE(e_nor, mpfr(r.normal_error) + 8 * eps * normal)
+      << where << ": normal_area " << in_eps(e_nor, normal) << " eps off, normal_error " << r.normal_error;
   EXPECT_LE(e_lost, (mpfr(r.lost_relative_error) + 8 * eps) * lost)
       << where << ": lost_area " << in_eps(e_lost, lost) << " eps off, bound " << r.lost_relative_error;
 }

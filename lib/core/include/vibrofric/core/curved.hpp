@@ -531,8 +531,10 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     // β ≥ β_c(γ) ≥ β_c(γ') for every spring (β_c grows with γ'): no stick anywhere, Φ = N (Eq. 6).
     const bool sticks = beta < center.beta_c;
     Real F = profile.flat_length() * center.retained_area, N = profile.flat_length() * center.normal_area;
-    // Rounding: the springs' bounds, integrated as their largest value times the segment length.
-    Real rounding = profile.flat_length() * center.area_error, lF = abs(F), lN = abs(N), qerr = 0;
+    // Rounding: the springs' bounds, integrated as their largest value times the segment length;
+    // a flat part's central spring bounds its two areas apart (Φ may be a tenth of N).
+    Real rounding = 0, lF = abs(F), lN = abs(N), qerr = 0;
+    const Real flat_F = profile.flat_length() * center.retained_error, flat_N = profile.flat_length() * center.normal_error;
     std::vector<std::map<Real, detail::SpringValue<Real>>> memo(ps.size());
     std::vector<Real> worst(ps.size(), Real(0));
     // A piecewise-linear wave: each interval of ts (between two breakpoints), and so each graded
@@ -652,7 +654,7 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     r.mu = F / N;
     if (r.mu > 1) r.mu = 1;  // s ≤ n for every spring: above 1 is rounding
     const Real unknown = std::numeric_limits<Real>::infinity();
-    r.relative_error = (F > 0 && N > 0) ? Real((qerr + rounding + 4 * eps * lF) / F + (qerr + rounding + 4 * eps * lN) / N)
+    r.relative_error = (F > 0 && N > 0) ? Real((qerr + flat_F + rounding + 4 * eps * lF) / F + (qerr + flat_N + rounding + 4 * eps * lN) / N)
                                         : unknown;
   } catch (const PrecisionError&) {
     throw;

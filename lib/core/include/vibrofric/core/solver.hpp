@@ -66,7 +66,9 @@ struct Result {
   Real beta_c;          // largest rising slope of n (Eq. 6); +∞ with an upward jump
   Real relative_error;  // estimated relative error of mu from rounding and quadrature
   Real lost_relative_error;  // the same for lost_area
-  Real area_error;           // bound on the absolute rounding error of retained_area and of normal_area
+  Real retained_error;       // bound on the absolute rounding error of retained_area
+  Real normal_error;         // bound on the absolute rounding error of normal_area
+  Real area_error;           // the larger of retained_error and normal_error
   bool jumping = false;      // n vanishes somewhere in the period
   AreaMethod area = AreaMethod::exact;
   std::vector<StickPhase<Real>> stick_phases;
@@ -242,7 +244,9 @@ class EventPass {
       r.relative_error = unknown;
     else
       r.relative_error = eps * (err_retained_ / retained_ + err_normal_ / normal_);
-    r.area_error = eps * (err_retained_ > err_normal_ ? err_retained_ : err_normal_);
+    r.retained_error = eps * err_retained_;
+    r.normal_error = eps * err_normal_;
+    r.area_error = r.retained_error > r.normal_error ? r.retained_error : r.normal_error;
     if (stick_.empty())
       r.lost_relative_error = 0;
     else
@@ -336,7 +340,8 @@ class EventPass {
           return;
         }
         if (dn(g, pos) > beta_) {
-          open_stick(pos, shift, n(g, pos), value_bound(g.piece));
+          const Real level = n(g, pos);
+          open_stick(pos, shift, level, onset_bound(g, pos, level));
         } else if (convex && dn(g, g.v) > beta_) {
           const Real t = slope_root(g, pos, g.v);
           add_slip(g, pos, t);
@@ -490,6 +495,21 @@ class EventPass {
   Real value_bound(std::size_t i) const {
     using std::abs;
     return abs(gamma_) + w_.maximum() - w_.minimum() + w_.value_error(i);
+  }
+
+  // The bound of the level of a stick that begins at pos by n' > β: value_bound, the error of n
+  // there; except at first contact. There n = 0 exactly at the computed boundary, and the exact
+  // wave's boundary lies within δ = value_bound/n' of it (n' > β nearly constant over δ:
+  // Waveform::unresolved), which moves the ramp by β·δ only. Not within 2δ of the piece's ends:
+  // the exact boundary may then lie on a neighbour with another slope (or the exact wave never
+  // leaves contact there and the level is its n, off by value_bound).
+  Real onset_bound(const Segment& g, const Real& pos, const Real& level) {
+    const Real bound = value_bound(g.piece);
+    if (level != 0) return bound;
+    const Real slope = dn(g, pos);
+    const Real reach = 2 * std::numeric_limits<Real>::epsilon() * bound / slope;
+    if (!(pos - w_.piece_begin(g.piece) > reach) || !(w_.piece_end(g.piece) - pos > reach)) return bound;
+    return bound * beta_ / slope;
   }
 
   // ∫ n over [p, q] of segment g, exact or by quadrature; adds its rounding bound to `err`.
