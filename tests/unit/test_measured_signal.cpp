@@ -387,13 +387,13 @@ class ExactQuadraticRow {
     if (x_.size() < 3) {
       x_.push_back(mpfr(g));  // x0, mid, x2 in fit's order
       const std::size_t i = x_.size() - 1;
-      return {phi_[i], n_[i], Real(0)};
+      return {phi_[i], n_[i], Real(0), Real(0)};
     }
     const mpfr p = value(g, phi_), v = value(g, n_);
     const Real rp(p), rv(v);
     using std::abs;
     const Real eps = std::numeric_limits<Real>::epsilon();
-    return {rp, rv, Real(eps * std::max(abs(rp), abs(rv)))};
+    return {rp, rv, Real(eps * abs(rp)), Real(eps * abs(rv))};
   }
   const std::array<Real, 3>& phi() const { return phi_; }
   const std::array<Real, 3>& n() const { return n_; }
@@ -453,11 +453,12 @@ void expect_quadratic_within_its_bound(int trials) {
     for (const Real& g : gs) {
       if (g < lo || g > hi) continue;
       const detail::SpringValue<Real> v = q.at(g);
-      ASSERT_GT(v.err, 0) << "trial " << trial;
+      ASSERT_GT(v.retained_err, 0) << "trial " << trial;
+      ASSERT_GT(v.normal_err, 0) << "trial " << trial;
       const mpfr dp = abs(mpfr(v.retained_area) - row.value(g, row.phi())), dn = abs(mpfr(v.normal_area) - row.value(g, row.n()));
-      ASSERT_LE(dp, mpfr(v.err)) << "trial " << trial << ", gamma' " << g << " in (" << lo << ", " << hi << ")";
-      ASSERT_LE(dn, mpfr(v.err)) << "trial " << trial << ", gamma' " << g << " in (" << lo << ", " << hi << ")";
-      worst = std::max(worst, static_cast<double>(mpfr(std::max(dp, dn) / mpfr(v.err))));
+      ASSERT_LE(dp, mpfr(v.retained_err)) << "trial " << trial << ", gamma' " << g << " in (" << lo << ", " << hi << ")";
+      ASSERT_LE(dn, mpfr(v.normal_err)) << "trial " << trial << ", gamma' " << g << " in (" << lo << ", " << hi << ")";
+      worst = std::max({worst, static_cast<double>(mpfr(dp / mpfr(v.retained_err))), static_cast<double>(mpfr(dn / mpfr(v.normal_err)))});
     }
   }
   std::printf("[ quadratic ] %d bits: the largest error is %.2f of its bound\n", std::numeric_limits<Real>::digits, worst);

@@ -20,6 +20,7 @@
 #include <map>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "vibrofric/core/detail/gauss_legendre.hpp"
@@ -169,10 +170,11 @@ std::vector<Real> graded_pieces(const std::vector<Real>& ts) {
 }
 
 // One spring: Φ_w = ∫s dφ and N_w = ∫n dφ (model.md, MDR; the retained_area and normal_area of
-// its flat-punch Result) and the bound on their absolute rounding error; no contact gives zeros.
+// its flat-punch Result) and the bounds on their absolute rounding errors (Φ's is often a tenth of
+// N's: a stick's ramp carries less than n); no contact gives zeros.
 template <class Real>
 struct SpringValue {
-  Real retained_area, normal_area, err;
+  Real retained_area, normal_area, retained_err, normal_err;
 };
 
 template <class Real>
@@ -182,10 +184,10 @@ class SpringRow {
     stats_.max_iterations = root_budget<Real>(opt);
   }
   SpringValue<Real> at(const Real& g) {
-    if (!(g + w_.maximum() > 0)) return {Real(0), Real(0), Real(0)};
+    if (!(g + w_.maximum() > 0)) return {Real(0), Real(0), Real(0), Real(0)};
     ++solves;
     const Result<Real> r = solve(make_contact(w_, g, opt_), beta_, opt_);
-    return {r.retained_area, r.normal_area, r.area_error};
+    return {r.retained_area, r.normal_area, r.retained_error, r.normal_error};
   }
   Result<Real> result(const Real& g) {
     ++solves;
@@ -208,9 +210,9 @@ class SpringRow {
 // ramp each solve a linear equation; a stick anchored at a kink starts at a fixed phase) and n is
 // affine in (φ, γ') on each piece, so Φ_w(β, γ') and N_w(γ') are quadratics in γ' there. Three
 // springs at the Chebyshev nodes u = 0, ±√3/2 of such an interval (u = (γ' − mid)/half) give both
-// at any γ' in it, as c0 + c1·u + c2·u². Error (in eps, twice the unit roundoff): the springs'
-// rounding bounds weighted by the Lagrange basis, Σ|L_i(u)|·err_i (at most 5/3 of the largest on
-// [−1, 1]), plus the quadratic's own rounding from its computed coefficients: Horner's
+// at any γ' in it, as c0 + c1·u + c2·u². Error of each (in eps, twice the unit roundoff): the
+// springs' rounding bounds of that area weighted by the Lagrange basis, Σ|L_i(u)|·err_i (at most
+// 5/3 of the largest on [−1, 1]), plus the quadratic's own rounding from its computed coefficients: Horner's
 // 2(|c0| + |c1 u| + |c2| u²); u = (γ' − mid)/half, rounded twice, through dQ/du, |c1 + 2 c2 u|·|u|;
 // c1 = (y2 − y0)/(2c) rounds twice, |c1|; c2 = (y0 + y2 − 2 y1)·2/3 three times,
 // |y0 + y2|/3 + |c2| (c = √3/2 is the same rounded number in the nodes and in c1, c2); and the
@@ -246,16 +248,19 @@ class QuadraticSprings {
     };
     coefficients(y0.retained_area, y1.retained_area, y2.retained_area, phi_);
     coefficients(y0.normal_area, y1.normal_area, y2.normal_area, n_);
-    e_[0] = y0.err;
-    e_[1] = y1.err;
-    e_[2] = y2.err;
+    const SpringValue<Real>* ys[3] = {&y0, &y1, &y2};
+    for (int i = 0; i < 3; ++i) {
+      e_phi_[i] = ys[i]->retained_err;
+      e_n_[i] = ys[i]->normal_err;
+    }
     phi_sum_ = abs(Real(y0.retained_area + y2.retained_area)) / 3;
     n_sum_ = abs(Real(y0.normal_area + y2.normal_area)) / 3;
     node_shift_ = abs(mid_) + half_;
     if constexpr (!std::is_floating_point_v<Real>) scale_inputs();
     for (const Real& g : {Real(mid_ - half_ * 15 / 16), Real(mid_ + half_ * 15 / 16)}) {
       const SpringValue<Real> q = at(g), v = row.at(g);
-      if (abs(q.retained_area - v.retained_area) > q.err + v.err || abs(q.normal_area - v.normal_area) > q.err + v.err)
+      if (abs(q.retained_area - v.retained_area) > q.retained_err + v.retained_err ||
+          abs(q.normal_area - v.normal_area) > q.normal_err + v.normal_err)
         return false;
     }
     return true;
@@ -264,7 +269,10 @@ class QuadraticSprings {
     using std::abs;
     const Real u = (g - mid_) / half_;
     const Real phi = phi_[0] + u * (phi_[1] + u * phi_[2]), n = n_[0] + u * (n_[1] + u * n_[2]);
-    if constexpr (!std::is_floating_point_v<Real>) return {phi, n, Real(scale_ * scaled_bound(static_cast<double>(u)))};
+    if constexpr (!std::is_floating_point_v<Real>) {
+      const auto [bound_phi, bound_n] = scaled_bounds(static_cast<double>(u));
+      return {phi, n, Real(scale_ * bound_phi), Real(scale_ * bound_n)};
+    }
     // The Lebesgue function Σ|L_i(u)|: L_1 = 1 − 4u²/3, L_0,2 = 2u(u ∓ c)/3, c = √3/2.
     const Real uu = u * u, l1 = abs(Real(1 - 4 * uu / 3)), side = abs(u) * 2 / 3, c = Real(0.8660254037844386468L);
     const Real l0 = side * abs(Real(u - c)), l2 = side * abs(Real(u + c));
@@ -276,8 +284,9 @@ class QuadraticSprings {
     };
     const Real eps = std::numeric_limits<Real>::epsilon();
     // 1e-3 widens the sum over the rounding of u, of c (to double), of the l_i and of the bound.
-    const Real err = (l0 * e_[0] + l1 * e_[1] + l2 * e_[2] + eps * std::max(own(phi_, phi_sum_), own(n_, n_sum_))) * Real(1.001);
-    return {phi, n, err};
+    const Real err_phi = (l0 * e_phi_[0] + l1 * e_phi_[1] + l2 * e_phi_[2] + eps * own(phi_, phi_sum_)) * Real(1.001);
+    const Real err_n = (l0 * e_n_[0] + l1 * e_n_[1] + l2 * e_n_[2] + eps * own(n_, n_sum_)) * Real(1.001);
+    return {phi, n, err_phi, err_n};
   }
 
  private:
@@ -291,20 +300,21 @@ class QuadraticSprings {
   // every u: 1.001 covers both. A ratio that underflows (below 1e-308 of the scale) is covered
   // by 1e-290.
   struct Scaled {
-    double e[3], phi[3], n[3], phi_sum, n_sum, phi_node, n_node;
+    double e_phi[3], e_n[3], phi[3], n[3], phi_sum, n_sum, phi_node, n_node;
   };
   void scale_inputs() {
     using std::abs;
     const Real eps = std::numeric_limits<Real>::epsilon();
     auto node = [&](const Real* k) { return Real(eps * (abs(k[1]) + 2 * abs(k[2])) / half_ * node_shift_); };
     const Real phi_node = node(phi_), n_node = node(n_);
-    scale_ = std::max({e_[0], e_[1], e_[2], Real(eps * abs(phi_[0])), Real(eps * abs(phi_[1])), Real(eps * abs(phi_[2])),
+    scale_ = std::max({e_phi_[0], e_phi_[1], e_phi_[2], e_n_[0], e_n_[1], e_n_[2], Real(eps * abs(phi_[0])), Real(eps * abs(phi_[1])), Real(eps * abs(phi_[2])),
                        Real(eps * abs(n_[0])), Real(eps * abs(n_[1])), Real(eps * abs(n_[2])), Real(eps * phi_sum_),
                        Real(eps * n_sum_), phi_node, n_node});
     if (!(scale_ > 0)) scale_ = std::numeric_limits<Real>::min();
     auto ratio = [&](const Real& x) { return static_cast<double>(Real(x / scale_)); };
     for (int i = 0; i < 3; ++i) {
-      scaled_.e[i] = ratio(e_[i]);
+      scaled_.e_phi[i] = ratio(e_phi_[i]);
+      scaled_.e_n[i] = ratio(e_n_[i]);
       scaled_.phi[i] = ratio(Real(eps * abs(phi_[i])));
       scaled_.n[i] = ratio(Real(eps * abs(n_[i])));
     }
@@ -313,19 +323,21 @@ class QuadraticSprings {
     scaled_.phi_node = ratio(phi_node);
     scaled_.n_node = ratio(n_node);
   }
-  double scaled_bound(double u) const {
+  // The bounds of Φ and of N at u, in units of the scale.
+  std::pair<double, double> scaled_bounds(double u) const {
     const double uu = u * u, l1 = std::abs(1 - 4 * uu / 3), side = std::abs(u) * 2 / 3, c = 0.8660254037844386;
     const double l0 = side * std::abs(u - c), l2 = side * std::abs(u + c);
     const double lebesgue = l0 + l1 + l2, au = std::abs(u);
     auto own = [&](const double* a, double sum, double node) {
       return 2 * a[0] + 4 * a[1] * au + (5 * a[2] + sum) * uu + lebesgue * node;
     };
-    const double q = std::max(own(scaled_.phi, scaled_.phi_sum, scaled_.phi_node), own(scaled_.n, scaled_.n_sum, scaled_.n_node));
-    return (l0 * scaled_.e[0] + l1 * scaled_.e[1] + l2 * scaled_.e[2] + q) * 1.001 + 1e-290;
+    const double q_phi = own(scaled_.phi, scaled_.phi_sum, scaled_.phi_node), q_n = own(scaled_.n, scaled_.n_sum, scaled_.n_node);
+    return {(l0 * scaled_.e_phi[0] + l1 * scaled_.e_phi[1] + l2 * scaled_.e_phi[2] + q_phi) * 1.001 + 1e-290,
+            (l0 * scaled_.e_n[0] + l1 * scaled_.e_n[1] + l2 * scaled_.e_n[2] + q_n) * 1.001 + 1e-290};
   }
 
   Real mid_, half_, node_shift_, phi_sum_, n_sum_;
-  Real phi_[3], n_[3], e_[3];
+  Real phi_[3], n_[3], e_phi_[3], e_n_[3];
   Real scale_;
   Scaled scaled_{};
 };
@@ -531,12 +543,13 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     // β ≥ β_c(γ) ≥ β_c(γ') for every spring (β_c grows with γ'): no stick anywhere, Φ = N (Eq. 6).
     const bool sticks = beta < center.beta_c;
     Real F = profile.flat_length() * center.retained_area, N = profile.flat_length() * center.normal_area;
-    // Rounding: the springs' bounds, integrated as their largest value times the segment length;
-    // a flat part's central spring bounds its two areas apart (Φ may be a tenth of N).
-    Real rounding = 0, lF = abs(F), lN = abs(N), qerr = 0;
-    const Real flat_F = profile.flat_length() * center.retained_error, flat_N = profile.flat_length() * center.normal_error;
+    // Rounding: the springs' bounds, each area's integrated as its largest value times the segment
+    // length (Φ's bound may be a tenth of N's), and a flat part's central spring's.
+    Real rounding_F = profile.flat_length() * center.retained_error, rounding_N = profile.flat_length() * center.normal_error;
+    // Quadrature estimates apart too: Φ's relative error is of Φ's own estimates.
+    Real lF = abs(F), lN = abs(N), qerr_F = 0, qerr_N = 0;
     std::vector<std::map<Real, detail::SpringValue<Real>>> memo(ps.size());
-    std::vector<Real> worst(ps.size(), Real(0));
+    std::vector<Real> worst_F(ps.size(), Real(0)), worst_N(ps.size(), Real(0));
     // A piecewise-linear wave: each interval of ts (between two breakpoints), and so each graded
     // piece in it, takes its springs from one quadratic where the check springs agree.
     const bool linear = dynamic_cast<const PiecewiseLinear<Real>*>(&w) != nullptr;
@@ -571,8 +584,10 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
       const Real wgt = profile.dx_dt(t);
       v.retained_area *= wgt;
       v.normal_area *= wgt;
-      v.err *= abs(wgt);
-      if (v.err > worst[k]) worst[k] = v.err;
+      v.retained_err *= abs(wgt);
+      v.normal_err *= abs(wgt);
+      if (v.retained_err > worst_F[k]) worst_F[k] = v.retained_err;
+      if (v.normal_err > worst_N[k]) worst_N[k] = v.normal_err;
       return v;
     };
     auto spring = [&](std::size_t k, const Real& t) -> detail::SpringValue<Real> {
@@ -622,8 +637,9 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
           return phi;
         };
         if (quadratic && exact_points > 0) {
-          // No quadrature error: the values' rounding is in worst[k], and the sum's, m + 3 ≤ 8
-          // roundings of the unit roundoff (m ≤ 5 points, the weights, the width), in 4 eps·L1.
+          // No quadrature error: the values' rounding is in worst_F[k] and worst_N[k], and the
+          // sum's, m + 3 ≤ 8 roundings of the unit roundoff (m ≤ 5 points, the weights, the
+          // width), in 4 eps·L1.
           auto on_segment = [&](const Real& x) -> Real { return h(Real(a + (b - a) * x)); };
           detail::gauss_apply(on_segment, exact_points, value, l1);
           value *= b - a;
@@ -631,7 +647,7 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
         } else {
           detail::integrate_piece(h, a, b, seg_tol, Real(seg_target * scale), opt, which ? "N" : "Phi", value, err, l1);
         }
-        qerr += err;
+        (which ? qerr_N : qerr_F) += err;
         (which ? N : F) += value;
         (which ? lN : lF) += l1;
         if (!sticks) {
@@ -639,12 +655,13 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
           lF += l1;
         }
       }
-      rounding += (b - a) * worst[k];
+      rounding_F += (b - a) * worst_F[k];
+      rounding_N += (b - a) * worst_N[k];
       ++r.segments;
     }
     r.friction_integral = F;
     r.normal_integral = N;
-    r.quadrature_error = qerr;
+    r.quadrature_error = qerr_F + qerr_N;
     r.springs = row.solves;
     if (!sticks) {
       r.mu = 1;  // Eq. 6 exactly
@@ -654,7 +671,7 @@ CurvedResult<Real> solve_curved(const Waveform<Real>& w, const Profile<Real>& pr
     r.mu = F / N;
     if (r.mu > 1) r.mu = 1;  // s ≤ n for every spring: above 1 is rounding
     const Real unknown = std::numeric_limits<Real>::infinity();
-    r.relative_error = (F > 0 && N > 0) ? Real((qerr + flat_F + rounding + 4 * eps * lF) / F + (qerr + flat_N + rounding + 4 * eps * lN) / N)
+    r.relative_error = (F > 0 && N > 0) ? Real((qerr_F + rounding_F + 4 * eps * lF) / F + (qerr_N + rounding_N + 4 * eps * lN) / N)
                                         : unknown;
   } catch (const PrecisionError&) {
     throw;
