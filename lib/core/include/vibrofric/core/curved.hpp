@@ -415,8 +415,11 @@ std::vector<Real> gamma_breakpoints(detail::SpringRow<Real>& row, const Real& lo
   const std::size_t pieces = w.piece_count();
   std::vector<Real> cand, tangent;
   for (std::size_t i = 0; i < pieces; ++i) {
+    // A continuous join has one value, the next piece's begin_value; this piece's end_value is
+    // the same number rounded another way (a sample's line at its end, an ulp or two off), and
+    // as a second breakpoint it would only add pieces graded towards a neighbour ulps away.
     cand.push_back(-w.begin_value(i));
-    cand.push_back(-w.end_value(i));
+    if (w.jump_at((i + 1) % pieces)) cand.push_back(-w.end_value(i));
     const Real s0 = w.begin_slope(i) - beta, s1 = w.end_slope(i) - beta;
     if ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0)) {
       const auto exact = w.solve_slope(i, beta);
@@ -499,8 +502,18 @@ std::vector<Real> gamma_breakpoints(detail::SpringRow<Real>& row, const Real& lo
     }
   }
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  // Crossings a few ulps apart (one root found from the intervals on both sides of a node, or at
+  // a vertex) are one breakpoint: each is known to 4 eps (bracketed_root) plus the rounding of
+  // the values it is solved from, and Φ and N are continuous in γ' (a sliver of width δ moved to
+  // its neighbour's branch changes an integral by about δ^1.5). Kept apart, they only add pieces
+  // graded towards a neighbour ulps away: 5,339 segments instead of 390 at 25 digits (a noisy
+  // 200-sample signal on the wear flat).
+  using std::abs;
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  std::vector<Real> merged;
+  for (const Real& g : out)
+    if (merged.empty() || g - merged.back() > 64 * eps * std::max(Real(abs(g)), Real(1))) merged.push_back(g);
+  return merged;
 }
 
 // μ̄/μ0 of a curved contact (model.md MDR), with the integrals and diagnostics. Preconditions
