@@ -146,8 +146,8 @@ TEST(Events, QuadratureAreasWithinTheirBoundsOfTheExactOnes) {
       EXPECT_LE(std::abs(q.lost_area - e.lost_area),
                 q.lost_relative_error * q.lost_area + e.lost_relative_error * e.lost_area + eps)
           << where << ": lost area";
-      EXPECT_LE(std::abs(q.normal_area - e.normal_area), q.area_error + e.area_error + eps) << where << ": normal area";
-      EXPECT_LE(std::abs(q.retained_area - e.retained_area), q.area_error + e.area_error + eps)
+      EXPECT_LE(std::abs(q.normal_area - e.normal_area), q.normal_error + e.normal_error + eps) << where << ": normal area";
+      EXPECT_LE(std::abs(q.retained_area - e.retained_area), q.retained_error + e.retained_error + eps)
           << where << ": retained area";
     }
 }

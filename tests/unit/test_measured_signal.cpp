@@ -374,6 +374,39 @@ TEST(MeasuredSignal, FirstContactOnsetBoundsHoldAtVertices) {
               margin_double, margin_long_double);
 }
 
+// retained_error and normal_error of a flat solve in the multiprecision types (20-digit mpfr,
+// cpp_bin_float_50) and long double, on a noisy signal below and above the jumping limit, against
+// 60 digits: each area within its own bound, area_error the larger.
+template <class Real>
+void expect_area_bounds_against_sixty_digits(const WaveSpec& spec, const char* type, int digits) {
+  std::mt19937 rng(20261128);
+  std::uniform_real_distribution<double> log_beta(std::log(0.05), std::log(3.0)), gamma_range(-0.9, 1.5);
+  for (int k = 0; k < 12; ++k) {
+    char b[32], g[32];
+    std::snprintf(b, sizeof b, "%.4g", std::exp(log_beta(rng)));
+    std::snprintf(g, sizeof g, "%.4g", gamma_range(rng));
+    SCOPED_TRACE(std::string("beta ") + b + ", gamma " + g + ", " + type);
+    Result<Real> r;
+    {
+      PrecisionScope scope(static_cast<unsigned>(digits));  // mpfr's working precision; the fixed types ignore it
+      r = solve(*make_waveform<Real>(spec), parse_real<Real>(b, "beta"), parse_real<Real>(g, "gamma"));
+    }
+    PrecisionScope scope(60);
+    const auto ref = solve(*make_waveform<mpfr>(spec), parse_real<mpfr>(b, "beta"), parse_real<mpfr>(g, "gamma"));
+    ASSERT_LE(ref.area_error, mpfr("1e-50"));
+    EXPECT_LE(abs(mpfr(r.retained_area) - ref.retained_area), mpfr(r.retained_error) + ref.area_error) << "retained area";
+    EXPECT_LE(abs(mpfr(r.normal_area) - ref.normal_area), mpfr(r.normal_error) + ref.area_error) << "normal area";
+    EXPECT_EQ(r.area_error, std::max(r.retained_error, r.normal_error));
+  }
+}
+
+TEST(MeasuredSignal, AreaBoundsHoldInEveryType) {
+  const WaveSpec spec = rig_wave(200, 3);
+  expect_area_bounds_against_sixty_digits<long double>(spec, "long double", 20);
+  expect_area_bounds_against_sixty_digits<mpfr>(spec, "mpfr at 20 digits", 20);
+  expect_area_bounds_against_sixty_digits<bin50>(spec, "cpp_bin_float_50", 20);
+}
+
 // The γ' breakpoints of a noisy signal's row are properties of the signal, not of the type: the
 // same number in double, long double and 30 digits, each within 1e-12 of the 30-digit one, none
 // two within 64 ulps of each other. Before 64-ulp neighbours were merged (gamma_breakpoints), a
