@@ -219,6 +219,74 @@ TEST(Interval, WideArgumentsHoldEveryPointsValue) {
   EXPECT_EQ((x - x).sign(), Sign::undecided);
 }
 
+TEST(Interval, NarrowArgumentsHoldEveryPointsValue) {
+  // sin, cos (one mpfr call at the midpoint, widened by the radius), asin, acos and log (widened
+  // by the radius times the largest slope) and exp on narrow intervals: MPFR's value rounded down and up at
+  // 4 × kBits lies inside for every sample point, and the width is the argument's width times
+  // the slope bound (just above the largest |f'| on it) plus eight ulps at most.
+  using F = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
+  struct Case {
+    F exact;
+    Interval (*f)(Interval);
+    double centre, slope;  // slope: a bound on |f'| near the centre
+    const char* name;
+  };
+  // (sin and cos: |cos 1.3| = 0.2675, |sin 2.7| = 0.4274, and at 1.5707963 (π/2 − 2.7e-8) |cos| and
+  // the radius are below 1e-6: the enclosure follows the slope, not the Lipschitz constant 1.)
+  const Case cases[] = {{mpfr_sin, [](Interval x) { return sin(std::move(x)); }, 1.3, 0.268, "sin"},
+                        {mpfr_cos, [](Interval x) { return cos(std::move(x)); }, -2.7, 0.428, "cos"},
+                        {mpfr_sin, [](Interval x) { return sin(std::move(x)); }, 1.5707963, 1e-6, "sin"},
+                        {mpfr_asin, [](Interval x) { return asin(std::move(x)); }, 0.3, 1.05, "asin"},
+                        {mpfr_asin, [](Interval x) { return asin(std::move(x)); }, -0.99, 7.09, "asin"},
+                        {mpfr_acos, [](Interval x) { return acos(std::move(x)); }, 0.6, 1.2501, "acos"},
+                        {mpfr_acos, [](Interval x) { return acos(std::move(x)); }, -0.998, 15.9, "acos"},
+                        {mpfr_exp, [](Interval x) { return exp(std::move(x)); }, 2.3, 9.99, "exp"},
+                        {mpfr_log, [](Interval x) { return log(std::move(x)); }, 0.7, 1.4286, "log"}};
+  mpfr_t v, d, down, up;
+  mpfr_inits2(4 * kBits, v, d, down, up, static_cast<mpfr_ptr>(nullptr));
+  for (const Case& c : cases)
+    for (const double width : {0.0, 1e-30, 1e-12, 1e-7}) {
+      const Interval arg = Interval::hull(mpfr(c.centre), mpfr(c.centre) + mpfr(width), kBits);
+      const Interval out = c.f(arg);
+      for (double t = 0; t <= 1; t += 1.0 / 16) {
+        mpfr_set_d(v, c.centre, MPFR_RNDN);
+        mpfr_set_d(d, width * t, MPFR_RNDN);
+        mpfr_add(v, v, d, MPFR_RNDN);  // exact within 4 × kBits
+        c.exact(down, v, MPFR_RNDD);
+        c.exact(up, v, MPFR_RNDU);
+        EXPECT_TRUE(mpfi_is_inside_fr(down, out.data()) > 0 && mpfi_is_inside_fr(up, out.data()) > 0)
+            << c.name << " at " << c.centre << " + " << width * t;
+      }
+      // Eight ulps: two for the rounding of f(mid), and the argument's rounded midpoint and radius
+      // (an ulp of the argument each, up to two of the result's where its exponent is larger).
+      EXPECT_LE(width_in_ulps(out),
+                8 + c.slope * width * std::pow(2.0, out.precision() - mpfr_get_exp(out.lower().backend().data())))
+          << c.name << " " << c.centre << " " << width;
+    }
+  mpfr_clears(v, d, down, up, static_cast<mpfr_ptr>(nullptr));
+  // An exact value stays a point: sin 0 = asin 0 = 0, cos 0 = 1, acos 1 = 0.
+  EXPECT_EQ(sin(Interval(kBits)).sign(), Sign::zero);
+  EXPECT_EQ(asin(Interval(kBits)).sign(), Sign::zero);
+  EXPECT_EQ((cos(Interval(kBits)) - Interval::integer(1, kBits)).sign(), Sign::zero);
+  EXPECT_EQ(acos(Interval::integer(1, kBits)).sign(), Sign::zero);
+}
+
+TEST(Interval, MovesTakeTheEndpointsAndMovedFromOnesCanBeAssigned) {
+  Interval a = Interval::integer(3, kBits);
+  Interval b(std::move(a));
+  EXPECT_EQ((b - Interval::integer(3, kBits)).sign(), Sign::zero);
+  a = Interval::integer(5, 200);  // move-assigned into a moved-from interval
+  EXPECT_EQ(a.precision(), 200);
+  Interval c = std::move(b);
+  b = a;  // copy-assigned into a moved-from interval
+  EXPECT_EQ((b - Interval::integer(5, kBits)).sign(), Sign::zero);
+  EXPECT_EQ(b.precision(), 200);
+  c = std::move(b);  // replaces an owned value
+  EXPECT_EQ((c - Interval::integer(5, kBits)).sign(), Sign::zero);
+  const Interval sum = std::move(c) + Interval::integer(1, kBits);  // the operators take their operand
+  EXPECT_EQ((sum - Interval::integer(6, kBits)).sign(), Sign::zero);
+}
+
 TEST(Interval, SignsAndComparisonsDecideOnlyWhenCertain) {
   EXPECT_EQ(Interval::hull(mpfr(1), mpfr(2), kBits).sign(), Sign::positive);
   EXPECT_EQ(Interval::hull(mpfr(-2), mpfr(-1), kBits).sign(), Sign::negative);

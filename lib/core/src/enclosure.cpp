@@ -2,6 +2,7 @@
 #include "vibrofric/core/enclosure.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -79,8 +80,60 @@ Interval bracketed_root(F f, DF df, mpfr lo, mpfr hi, mpfr_prec_t bits, const st
   }
 }
 
-// The rising flank r(t), t ∈ [−1/4, 1/4], of a wave with the sine's symmetries (enclosure.hpp).
-// Arguments are intervals inside [−1/4, 1/4]; an interval may straddle 0.
+// The root of F in (lo, hi), where F' < 0 (so there is at most one), from a seed x0 (found in
+// long double; its accuracy is not relied on): the first box X of half-width 2^−56, 2^−46,
+// 2^−36 or 2^−26 about it that lies inside (lo, hi), has F' < 0 certainly on it and is mapped
+// into itself by interval Newton (then X holds exactly one root, inside N(X)) is narrowed by
+// Newton. Else nothing: the caller brackets from scratch. Most points take two interval steps
+// instead of a bisection; the wider boxes serve seeds that lose digits where F' is small (a
+// stick phase that barely exists, β just below β_c).
+template <class F, class DF>
+std::optional<Interval> seeded_root(F f, DF df, long double x0, const mpfr& lo, const mpfr& hi, mpfr_prec_t bits,
+                                    const std::string& what) {
+  if (!std::isfinite(x0)) return std::nullopt;
+  for (const long e : {-56L, -46L, -36L, -26L}) {
+    mpfr l, u;
+    mpfr_set_prec(l.backend().data(), bits);
+    mpfr_set_prec(u.backend().data(), bits);
+    mpfr_set_ld(l.backend().data(), x0, MPFR_RNDD);
+    mpfr_set_ld(u.backend().data(), x0, MPFR_RNDU);
+    mpfr_sub_d(l.backend().data(), l.backend().data(), std::ldexp(1.0, e), MPFR_RNDD);
+    mpfr_add_d(u.backend().data(), u.backend().data(), std::ldexp(1.0, e), MPFR_RNDU);
+    if (!(l > lo && u < hi)) continue;
+    const Interval X = Interval::hull(l, u, bits);
+    const Interval slope = df(X);
+    if (slope.sign() != Sign::negative) continue;
+    const Interval m = point(X.midpoint(), bits);
+    const Interval N = m - f(m) / slope;
+    if (N.bounded() && X.contains(N)) return newton(N, f, df, bits, what);
+  }
+  return std::nullopt;
+}
+
+// The root of a decreasing f in (a, b) in long double: Newton, kept inside a bracket that
+// shrinks by the sign of f (bisection where a step leaves it). Only a seed for seeded_root.
+template <class F, class DF>
+long double seed_root(F f, DF df, long double a, long double b) {
+  long double x = (a + b) / 2;
+  for (int k = 0; k < 100 && a < b; ++k) {
+    const long double v = f(x);
+    if (v > 0)
+      a = x;
+    else if (v < 0)
+      b = x;
+    else
+      break;
+    long double next = x - v / df(x);
+    if (!(next > a && next < b)) next = a + (b - a) / 2;
+    if (next == x) break;
+    x = next;
+  }
+  return x;
+}
+
+// The rising flank r(t), t ∈ [−1/4, 1/4], of a wave with the sine's symmetries (enclosure.hpp),
+// and from it the wave over one period (w, dw, W). The flank's arguments are intervals inside
+// [−1/4, 1/4]; an interval may straddle 0.
 class Flank {
  public:
   explicit Flank(mpfr_prec_t bits) : bits_(bits) {}
@@ -91,10 +144,65 @@ class Flank {
   virtual Interval inverse(const Interval& y) const = 0;  // r(t) = y, −1 < y < 1
   virtual Interval top(const Interval& b) const = 0;      // t ∈ (0, 1/4): r'(t) = b < r'(0)
   virtual Interval steepest() const = 0;                  // r'(0)
+  // r and r' in long double, only to seed the stick end's verified Newton box (enclose).
+  virtual long double r_seed(long double t) const = 0;
+  virtual long double dr_seed(long double t) const = 0;
   mpfr_prec_t bits() const { return bits_; }
+  // Values at the points the enclosure knows more about: r' and R at t where r(t) = y (first
+  // contact), r and R at t where r'(t) = b, t > 0 (the turning point), and R(1/4). By default
+  // from t itself; the sine's are algebraic (a transcendental call fewer each, and tighter).
+  virtual Interval dr_where_r(const Interval& t, const Interval&) const { return dr(t); }
+  virtual Interval R_where_r(const Interval& t, const Interval&) const { return R(t); }
+  virtual Interval r_where_dr(const Interval& t, const Interval&) const { return r(t); }
+  virtual Interval R_where_dr(const Interval& t, const Interval&) const { return R(t); }
+  virtual Interval R_quarter() const { return R(at(0.25)); }
+  // The wave and its slope over one period from its flank, in long double (seeds only).
+  long double w_seed(long double x) const {
+    return x <= 0.25L ? r_seed(x) : x <= 0.75L ? r_seed(0.5L - x) : r_seed(x - 1);
+  }
+  long double dw_seed(long double x) const {
+    return x <= 0.25L ? dr_seed(x) : x <= 0.75L ? -dr_seed(0.5L - x) : dr_seed(x - 1);
+  }
+  // The wave over one period from φ = −1/4, from its flank: r on [−1/4, 1/4], r(1/2 − φ) on
+  // [1/4, 3/4], r(φ − 1) on [3/4, 5/4]; an interval is split at 1/4 and 3/4 and the parts hulled.
+  virtual Interval w(const Interval& x) const {
+    return over(x, [&](const Interval& t) { return r(t); }, [&](const Interval& t) { return r(t); },
+                [&](const Interval& t) { return r(t); });
+  }
+  virtual Interval dw(const Interval& x) const {
+    return over(x, [&](const Interval& t) { return dr(t); }, [&](const Interval& t) { return -dr(t); },
+                [&](const Interval& t) { return dr(t); });
+  }
+  // A continuous antiderivative of w: R, then 2R(1/4) − R(1/2 − φ), then R(φ − 1).
+  virtual Interval W(const Interval& x) const {
+    const Interval quarter = R_quarter();
+    return over(x, [&](const Interval& t) { return R(t); }, [&](const Interval& t) { return quarter * 2 - R(t); },
+                [&](const Interval& t) { return R(t); });
+  }
 
  protected:
   mpfr_prec_t bits_;
+  Interval at(double v) const { return Interval::exact(mpfr(v), bits_); }
+  // first(t) on x ∩ [−1/4, 1/4] with t = φ, second on x ∩ [1/4, 3/4] with t = 1/2 − φ, third on
+  // x ∩ [3/4, 5/4] with t = φ − 1, each t clipped to [−1/4, 1/4] (beyond it only by rounding).
+  template <class A, class B, class C>
+  Interval over(const Interval& x, A first, B second, C third) const {
+    std::optional<Interval> out;
+    const Interval flank = Interval::hull(mpfr(-0.25), mpfr(0.25), bits_);
+    auto add = [&](double a, double b, const Interval& shift, bool reflect, auto f) {
+      const auto part = intersection(x, Interval::hull(mpfr(a), mpfr(b), bits_));
+      if (!part) return;
+      const auto t = intersection(reflect ? shift - *part : *part - shift, flank);
+      if (!t) return;
+      const Interval v = f(*t);
+      out = out ? hull(*out, v) : v;
+    };
+    add(-0.25, 0.25, at(0), false, first);
+    add(0.25, 0.75, at(0.5), true, second);
+    add(0.75, 1.25, at(1), false, third);
+    if (!out) throw SolverError("enclosure: a phase outside [-1/4, 5/4] (a bug)");
+    return *out;
+  }
 };
 
 class SineFlank final : public Flank {
@@ -106,15 +214,55 @@ class SineFlank final : public Flank {
   Interval inverse(const Interval& y) const override { return asin(y) / two_pi_; }
   Interval top(const Interval& b) const override { return acos(b / two_pi_) / two_pi_; }
   Interval steepest() const override { return two_pi_; }
+  // sin 2πφ on the whole period: the three pieces of the flank's are this one function.
+  Interval w(const Interval& x) const override { return r(x); }
+  Interval dw(const Interval& x) const override { return dr(x); }
+  Interval W(const Interval& x) const override { return R(x); }
+  // cos 2πt = √(1 − y²) where sin 2πt = y, |t| < 1/4; sin 2πt = √(1 − c²) and R = (1 − c)/2π
+  // where cos 2πt = c = b/2π, 0 < t < 1/4; R(1/4) = 1/2π.
+  Interval dr_where_r(const Interval& t, const Interval& y) const override {
+    const std::optional<Interval> c = root_of_one_minus_square(y);
+    return c ? two_pi_ * *c : dr(t);
+  }
+  Interval R_where_r(const Interval& t, const Interval& y) const override {
+    const std::optional<Interval> c = root_of_one_minus_square(y);
+    return c ? (Interval::integer(1, bits_) - *c) / two_pi_ : R(t);
+  }
+  Interval r_where_dr(const Interval& t, const Interval& b) const override {
+    const std::optional<Interval> s = root_of_one_minus_square(b / two_pi_);
+    return s ? *s : r(t);
+  }
+  Interval R_where_dr(const Interval&, const Interval& b) const override {
+    return (Interval::integer(1, bits_) - b / two_pi_) / two_pi_;
+  }
+  Interval R_quarter() const override { return Interval::integer(1, bits_) / two_pi_; }
+  // Arguments kept within ±π/4 (sinl and cosl reduce larger ones the slow way).
+  long double r_seed(long double t) const override {
+    if (std::fabs(t) <= 0.125L) return std::sin(two_pi_seed * t);
+    const long double c = std::cos(two_pi_seed * (0.25L - std::fabs(t)));
+    return t < 0 ? -c : c;
+  }
+  long double dr_seed(long double t) const override {
+    if (std::fabs(t) <= 0.125L) return two_pi_seed * std::cos(two_pi_seed * t);
+    return two_pi_seed * std::sin(two_pi_seed * (0.25L - std::fabs(t)));
+  }
 
  private:
+  static constexpr long double two_pi_seed = 6.283185307179586476925286766559L;
+  // √(1 − y²) where 1 − y² > 0 certainly; else none (the caller takes the transcendental way).
+  std::optional<Interval> root_of_one_minus_square(const Interval& y) const {
+    Interval d = Interval::integer(1, bits_) - sqr(y);
+    if (d.sign() != Sign::positive) return std::nullopt;
+    return sqrt(std::move(d));
+  }
   Interval two_pi_;
 };
 
 // power:p: r(t) = 1 − (1 − 4t)^p for t ≥ 0, odd (model.md).
 class PowerFlank final : public Flank {
  public:
-  PowerFlank(const Interval& p, mpfr_prec_t bits) : Flank(bits), p_(p) {}
+  PowerFlank(const Interval& p, mpfr_prec_t bits)
+      : Flank(bits), p_(p), p_seed_(mpfr_get_ld(p.midpoint().backend().data(), MPFR_RNDN)) {}
   Interval r(const Interval& t) const override {
     return split(t, [&](const Interval& a) { return one() - pw(one() - a * 4, p_); }, true);
   }
@@ -130,13 +278,31 @@ class PowerFlank final : public Flank {
     return (one() - pw(b / (p_ * 4), one() / (p_ - one()))) / Interval::integer(4, bits_);
   }
   Interval steepest() const override { return p_ * 4; }
+  long double r_seed(long double t) const override {
+    const long double v = 1 - std::pow(std::max(1 - 4 * std::fabs(t), 0.0L), p_seed_);
+    return t < 0 ? -v : v;
+  }
+  long double dr_seed(long double t) const override {
+    return 4 * p_seed_ * std::pow(std::max(1 - 4 * std::fabs(t), 0.0L), p_seed_ - 1);
+  }
 
  private:
   Interval one() const { return Interval::integer(1, bits_); }
-  // x^q for x ≥ 0 (the part of x below 0 is rounding: dropped), q > 0: increasing in x.
+  // x^q for x ≥ 0 (the part of x below 0 is rounding: dropped), q > 0: increasing in x. A whole
+  // q up to 64 (power:2, power:3 and their p ± 1) by multiplications, else exp(q log x).
   Interval pw(const Interval& x, const Interval& q) const {
     const mpfr hi = x.upper();
     if (hi <= 0) return Interval(bits_);
+    const mpfr q_lo = q.lower();
+    if (q_lo == q.upper() && mpfr_integer_p(q_lo.backend().data()) && q_lo >= 1 && q_lo <= 64) {
+      Interval base = x.lower() > 0 ? x : Interval::hull(mpfr(0), hi, bits_);
+      Interval out = Interval::integer(1, bits_);
+      for (unsigned long k = q_lo.convert_to<unsigned long>(); k != 0; k >>= 1) {
+        if (k & 1) out *= base;
+        if (k > 1) base = sqr(std::move(base));
+      }
+      return out;
+    }
     if (x.lower() > 0) return exp(q * log(x));
     return Interval::hull(mpfr(0), exp(q * log(Interval::exact(hi, bits_))).upper(), bits_);
   }
@@ -154,51 +320,7 @@ class PowerFlank final : public Flank {
     return out ? *out : Interval(bits_);
   }
   Interval p_;
-};
-
-// The wave over one period from φ = −1/4, from its flank: r on [−1/4, 1/4], r(1/2 − φ) on
-// [1/4, 3/4], r(φ − 1) on [3/4, 5/4]; an interval is split at 1/4 and 3/4 and the parts hulled.
-class Wave {
- public:
-  explicit Wave(const Flank& f) : f_(f) {}
-  Interval w(const Interval& x) const {
-    return over(x, [&](const Interval& t) { return f_.r(t); }, [&](const Interval& t) { return f_.r(t); },
-                [&](const Interval& t) { return f_.r(t); });
-  }
-  Interval dw(const Interval& x) const {
-    return over(x, [&](const Interval& t) { return f_.dr(t); }, [&](const Interval& t) { return -f_.dr(t); },
-                [&](const Interval& t) { return f_.dr(t); });
-  }
-  // A continuous antiderivative of w: R, then 2R(1/4) − R(1/2 − φ), then R(φ − 1).
-  Interval W(const Interval& x) const {
-    const Interval quarter = f_.R(at(0.25));
-    return over(x, [&](const Interval& t) { return f_.R(t); }, [&](const Interval& t) { return quarter * 2 - f_.R(t); },
-                [&](const Interval& t) { return f_.R(t); });
-  }
-
- private:
-  Interval at(double v) const { return Interval::exact(mpfr(v), f_.bits()); }
-  // first(t) on x ∩ [−1/4, 1/4] with t = φ, second on x ∩ [1/4, 3/4] with t = 1/2 − φ, third on
-  // x ∩ [3/4, 5/4] with t = φ − 1, each t clipped to [−1/4, 1/4] (beyond it only by rounding).
-  template <class A, class B, class C>
-  Interval over(const Interval& x, A first, B second, C third) const {
-    std::optional<Interval> out;
-    const Interval flank = Interval::hull(mpfr(-0.25), mpfr(0.25), f_.bits());
-    auto add = [&](double a, double b, const Interval& shift, bool reflect, auto f) {
-      const auto part = intersection(x, Interval::hull(mpfr(a), mpfr(b), f_.bits()));
-      if (!part) return;
-      const auto t = intersection(reflect ? shift - *part : *part - shift, flank);
-      if (!t) return;
-      const Interval v = f(*t);
-      out = out ? hull(*out, v) : v;
-    };
-    add(-0.25, 0.25, at(0), false, first);
-    add(0.25, 0.75, at(0.5), true, second);
-    add(0.75, 1.25, at(1), false, third);
-    if (!out) throw SolverError("enclosure: a phase outside [-1/4, 5/4] (a bug)");
-    return *out;
-  }
-  const Flank& f_;
+  long double p_seed_;
 };
 
 // The exact sign of β − r'(t) where r'(t) = s·c^e has a rational closed form (power:p with p = a/b
@@ -225,14 +347,13 @@ SineEnclosure enclose(const Flank& flank, const char* name, const exact::Rationa
   if (!(beta > 0)) throw InputError("beta = " + beta.str() + ": expected a number > 0");
   if (!(gamma > -1)) throw DomainError("gamma = " + gamma.str() + " gives no contact for wave " + name + ": expected gamma > -1");
   SineEnclosure e(bits);
-  const Wave wave(flank);
   const Interval B = of(beta, bits), G = of(gamma, bits), one = Interval::integer(1, bits), half = one / Interval::integer(2, bits);
   e.jumping = gamma < 1;
   // First contact on the rising flank (jumping): r(t_c) = −γ, t_c ∈ (−1/4, 1/4).
   const std::optional<Interval> contact = e.jumping ? std::optional<Interval>(flank.inverse(-G)) : std::nullopt;
-  e.beta_c = gamma >= 0 ? flank.steepest() : flank.dr(*contact);
+  e.beta_c = gamma >= 0 ? flank.steepest() : flank.dr_where_r(*contact, -G);
   if (e.jumping) {
-    e.normal_area = G * (half - *contact * 2) + (flank.R(Interval::exact(mpfr(0.25), bits)) - flank.R(*contact)) * 2;
+    e.normal_area = G * (half - *contact * 2) + (flank.R_quarter() - flank.R_where_r(*contact, -G)) * 2;
   } else {
     e.normal_area = G;
   }
@@ -253,22 +374,31 @@ SineEnclosure enclose(const Flank& flank, const char* name, const exact::Rationa
   e.stick = true;
   const Interval top = flank.top(B);  // n' = β on the concave side, where F = n − ramp is largest
   e.onset_at_contact =
-      gamma < 0 || (e.jumping && slope_sign(flank.dr(*contact), exact::Rational(1 - gamma), "beta against n' at first contact") ==
+      gamma < 0 || (e.jumping && slope_sign(flank.dr_where_r(*contact, -G), exact::Rational(1 - gamma), "beta against n' at first contact") ==
                                      Sign::negative);
   const Interval phi1 = e.onset_at_contact ? *contact : -top;
-  const Interval level = e.onset_at_contact ? Interval(bits) : G - flank.r(top);
+  const Interval level = e.onset_at_contact ? Interval(bits) : G - flank.r_where_dr(top, B);
   // F falls from `top` to the end of contact (jumping) or to 1 − top (where it is −β).
   const Interval right = e.jumping ? half - *contact : one - top;
-  auto F = [&](const Interval& x) { return G + wave.w(x) - level - B * (x - phi1); };
-  auto dF = [&](const Interval& x) { return wave.dw(x) - B; };
-  const Interval X = bracketed_root(F, dF, top.upper(), right.lower(), bits, where + ": the stick end");
+  auto F = [&](const Interval& x) { return G + flank.w(x) - level - B * (x - phi1); };
+  auto dF = [&](const Interval& x) { return flank.dw(x) - B; };
+  auto ld = [](const Interval& x) { return mpfr_get_ld(x.midpoint().backend().data(), MPFR_RNDN); };
+  const long double g0 = ld(G), b0 = ld(B), level0 = ld(level), phi0 = ld(phi1);
+  const long double seed = seed_root([&](long double x) { return g0 + flank.w_seed(x) - level0 - b0 * (x - phi0); },
+                                     [&](long double x) { return flank.dw_seed(x) - b0; },
+                                     mpfr_get_ld(top.upper().backend().data(), MPFR_RNDU),
+                                     mpfr_get_ld(right.lower().backend().data(), MPFR_RNDD));
+  std::optional<Interval> seeded = seeded_root(F, dF, seed, top.upper(), right.lower(), bits, where + ": the stick end");
+  const Interval X = seeded ? *seeded : bracketed_root(F, dF, top.upper(), right.lower(), bits, where + ": the stick end");
   e.onset = phi1;
   e.end = X;
   e.level = level;
   // lost = ∫_{φ1}^{φ2} (n − ramp) = A(φ2) − A(φ1) − level·L − β L²/2, L = φ2 − φ1, A = γφ + W.
-  auto A = [&](const Interval& x) { return G * x + wave.W(x); };
+  auto A = [&](const Interval& x) { return G * x + flank.W(x); };
   const Interval L = X - phi1;
-  e.lost_area = A(X) - A(phi1) - level * L - B * sqr(L) / Interval::integer(2, bits);
+  // W(φ1) = R(φ1): φ1 lies on the rising flank (first contact, or −top, R being even).
+  const Interval W1 = e.onset_at_contact ? flank.R_where_r(*contact, -G) : flank.R_where_dr(top, B);
+  e.lost_area = A(X) - (G * phi1 + W1) - level * L - B * sqr(L) / Interval::integer(2, bits);
   e.retained_area = e.normal_area - e.lost_area;
   e.mu = e.retained_area / e.normal_area;
   return e;

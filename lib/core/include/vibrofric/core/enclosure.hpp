@@ -8,9 +8,10 @@
 //    contact; then μ̄ = 1 exactly;
 //  - onset (Eq. 4) at first contact, level 0, where n' = r'(t_c) > β there, else where n' falls
 //    to β on the convex side, t_1 = −top, r'(top) = β, level γ − r(top);
-//  - end (Eq. 8) at the root of F(φ) = n(φ) − level − β(φ − t_1) on the falling flank: a bracket
-//    with certain signs, then interval Newton once F' = w' − β < 0 certainly on it, so the root
-//    exists and is unique for every value of the enclosed parameters;
+//  - end (Eq. 8) at the root of F(φ) = n(φ) − level − β(φ − t_1) on the falling flank, where
+//    F' = w' − β < 0: a small box about a long double seed that interval Newton maps into itself
+//    (so the root exists and is unique in it for every value of the enclosed parameters), or,
+//    where no box verifies, a bracket with certain signs, bisected until Newton contracts;
 //  - areas from the antiderivative R of r (Eqs. 9–12): ∫n = γ without jumping, else
 //    γ(1/2 − 2t_c) + 2(R(1/4) − R(t_c)); lost = ∫ over the stick phase of n minus the ramp.
 // Comparisons of a rational with an irrational number (β against β_c for the sine) are decided

@@ -33,22 +33,36 @@ class Interval {
     mpfi_init2(v_, mpfi_get_prec(other.v_));
     mpfi_set(v_, other.v_);
   }
-  Interval(Interval&& other) noexcept {
-    mpfi_init2(v_, mpfi_get_prec(other.v_));
-    mpfi_swap(v_, other.v_);
+  // A move takes the endpoints' limbs (no allocation: most operations return a temporary); a
+  // moved-from interval may only be assigned to or destroyed.
+  Interval(Interval&& other) noexcept : owns_(other.owns_) {
+    *v_ = *other.v_;
+    other.owns_ = false;
   }
   Interval& operator=(const Interval& other) {
     if (this != &other) {
-      mpfi_set_prec(v_, mpfi_get_prec(other.v_));
+      if (owns_) {
+        mpfi_set_prec(v_, mpfi_get_prec(other.v_));
+      } else {
+        mpfi_init2(v_, mpfi_get_prec(other.v_));
+        owns_ = true;
+      }
       mpfi_set(v_, other.v_);
     }
     return *this;
   }
   Interval& operator=(Interval&& other) noexcept {
-    mpfi_swap(v_, other.v_);
+    if (this != &other) {
+      if (owns_) mpfi_clear(v_);
+      *v_ = *other.v_;
+      owns_ = other.owns_;
+      other.owns_ = false;
+    }
     return *this;
   }
-  ~Interval() { mpfi_clear(v_); }
+  ~Interval() {
+    if (owns_) mpfi_clear(v_);
+  }
 
   // The integer k, exactly.
   static Interval integer(long k, mpfr_prec_t bits) {
@@ -115,10 +129,22 @@ class Interval {
   Interval& operator*=(const Interval& b) { return apply(mpfi_mul, b); }
   // Division by an interval that holds 0 gives an unbounded interval (bounded() is false).
   Interval& operator/=(const Interval& b) { return apply(mpfi_div, b); }
-  friend Interval operator+(Interval a, const Interval& b) { return a += b; }
-  friend Interval operator-(Interval a, const Interval& b) { return a -= b; }
-  friend Interval operator*(Interval a, const Interval& b) { return a *= b; }
-  friend Interval operator/(Interval a, const Interval& b) { return a /= b; }
+  friend Interval operator+(Interval a, const Interval& b) {
+    a += b;
+    return a;
+  }
+  friend Interval operator-(Interval a, const Interval& b) {
+    a -= b;
+    return a;
+  }
+  friend Interval operator*(Interval a, const Interval& b) {
+    a *= b;
+    return a;
+  }
+  friend Interval operator/(Interval a, const Interval& b) {
+    a /= b;
+    return a;
+  }
   friend Interval operator-(Interval a) {
     mpfi_neg(a.v_, a.v_);
     return a;
@@ -130,9 +156,11 @@ class Interval {
 
   friend Interval sqr(Interval a) { return a.unary(mpfi_sqr); }
   friend Interval abs(Interval a) { return a.unary(mpfi_abs); }
-  friend Interval sin(Interval a) { return a.unary(mpfi_sin); }
-  friend Interval cos(Interval a) { return a.unary(mpfi_cos); }
-  friend Interval exp(Interval a) { return a.unary(mpfi_exp); }
+  // sin, cos, exp, log, asin and acos of a narrow interval (radius < 2^−20) cost one MPFR call
+  // at its midpoint (see narrow), mpfi's two and its argument checks on a wide one.
+  friend Interval sin(Interval a) { return a.narrow(mpfr_sin, mpfi_sin, trig_spread); }
+  friend Interval cos(Interval a) { return a.narrow(mpfr_cos, mpfi_cos, trig_spread); }
+  friend Interval exp(Interval a) { return a.narrow(mpfr_exp, mpfi_exp, exp_spread); }
   // sin and cos together. A narrow interval (radius r < 2^−20) costs one mpfr_sin_cos at its
   // midpoint: each correctly rounded value widened by an ulp either way, then by r (both are
   // 1-Lipschitz); a wide one is mpfi_sin and mpfi_cos.
@@ -170,8 +198,8 @@ class Interval {
     return {std::move(s), std::move(c)};
   }
   // asin and acos of an interval reaching outside [−1, 1] are an error, not a NaN end.
-  friend Interval asin(Interval a) { return a.in_unit_range("asin").unary(mpfi_asin); }
-  friend Interval acos(Interval a) { return a.in_unit_range("acos").unary(mpfi_acos); }
+  friend Interval asin(Interval a) { return a.in_unit_range("asin").narrow(mpfr_asin, mpfi_asin, arc_slope); }
+  friend Interval acos(Interval a) { return a.in_unit_range("acos").narrow(mpfr_acos, mpfi_acos, arc_slope); }
   // sqrt and log of an interval reaching below their domain are an error, not a NaN end.
   friend Interval sqrt(Interval a) {
     if (mpfr_sgn(&a.v_->left) < 0) throw SolverError("interval sqrt of an interval reaching below 0");
@@ -179,10 +207,13 @@ class Interval {
   }
   friend Interval log(Interval a) {
     if (mpfr_sgn(&a.v_->left) <= 0) throw SolverError("interval log of an interval reaching 0 or below");
-    return a.unary(mpfi_log);
+    return a.narrow(mpfr_log, mpfi_log, log_spread);
   }
   // The smallest interval holding both; their intersection, if not empty.
-  friend Interval hull(Interval a, const Interval& b) { return a.apply(mpfi_union, b); }
+  friend Interval hull(Interval a, const Interval& b) {
+    a.apply(mpfi_union, b);
+    return a;
+  }
   friend std::optional<Interval> intersection(Interval a, const Interval& b) {
     mpfi_intersect(a.v_, a.v_, b.v_);
     if (mpfi_is_empty(a.v_)) return std::nullopt;
@@ -218,6 +249,80 @@ class Interval {
       throw SolverError(std::string("interval ") + f + " of an interval reaching outside [-1, 1]");
     return *this;
   }
+  // f on a narrow interval (radius r < 2^−20): f(mid), correctly rounded, widened by an ulp
+  // either way where inexact (an exact value, as sin 0, stays a point), then by spread(v, mid,
+  // r), a bound on |f(x) − f(mid)| over the interval (false where it has none); on a wide
+  // interval, one with a NaN or infinite end, or without a spread, `wide` (mpfi's, two calls).
+  template <class F, class G, class S>
+  Interval narrow(F f, G wide, S spread) {
+    const mpfr_prec_t bits = precision();
+    mpfr_t mid, radius, lo, hi;
+    mpfr_inits2(bits, mid, radius, lo, hi, static_cast<mpfr_ptr>(nullptr));
+    mpfi_mid(mid, v_);
+    mpfr_sub(radius, &v_->right, mid, MPFR_RNDU);
+    mpfr_sub(lo, mid, &v_->left, MPFR_RNDU);
+    mpfr_max(radius, radius, lo, MPFR_RNDU);
+    bool done = false;
+    if (mpfr_number_p(radius) && (mpfr_zero_p(radius) || mpfr_get_exp(radius) < -20)) {
+      const int inexact = f(hi, mid, MPFR_RNDN);  // hi: f(mid); lo: the spread
+      if (mpfr_number_p(hi) && spread(lo, hi, mid, radius)) {
+        mpfr_swap(lo, mid);
+        mpfr_sub(lo, hi, mid, MPFR_RNDD);
+        mpfr_add(hi, hi, mid, MPFR_RNDU);
+        if (inexact != 0) {
+          mpfr_nextbelow(lo);
+          mpfr_nextabove(hi);
+        }
+        mpfi_interv_fr(v_, lo, hi);
+        done = true;
+      }
+    }
+    if (!done) wide(v_, v_);
+    mpfr_clears(mid, radius, lo, hi, static_cast<mpfr_ptr>(nullptr));
+    return std::move(*this);
+  }
+  // The spreads: r·(c + r) for sin and cos, c = √(1 − (|v| − ulp)²) rounded up bounding |f'(mid)|
+  // (the other function's size, from v = f(mid) rounded) and |f''| ≤ 1 (Taylor: r·c + r²/2;
+  // near an extremum r alone would be far wider than the true range, and Newton stall); r/√(1 − m²), m = |mid| + r, for asin and acos
+  // where m < 1 − 2^−10 (the largest slope on the interval); r·v·(1 + 2^−10) for exp, v = e^mid
+  // rounded (e^r − 1 ≤ r(1 + r), and e^mid ≤ v(1 + 2^(1−bits)), bits ≥ 16); r/(mid − r) for log.
+  static bool trig_spread(mpfr_ptr out, mpfr_srcptr v, mpfr_srcptr, mpfr_srcptr r) {
+    mpfr_abs(out, v, MPFR_RNDD);
+    mpfr_nextbelow(out);  // ≤ |f(mid)|: v is within half an ulp of it
+    if (mpfr_sgn(out) > 0) {
+      mpfr_sqr(out, out, MPFR_RNDD);
+      mpfr_ui_sub(out, 1, out, MPFR_RNDU);
+      if (mpfr_sgn(out) < 0) mpfr_set_ui(out, 0, MPFR_RNDN);
+      mpfr_sqrt(out, out, MPFR_RNDU);
+    } else {
+      mpfr_set_ui(out, 1, MPFR_RNDN);
+    }
+    mpfr_mul(out, out, r, MPFR_RNDU);
+    mpfr_fma(out, r, r, out, MPFR_RNDU);
+    return true;
+  }
+  static bool arc_slope(mpfr_ptr out, mpfr_srcptr, mpfr_srcptr mid, mpfr_srcptr r) {
+    mpfr_abs(out, mid, MPFR_RNDU);
+    mpfr_add(out, out, r, MPFR_RNDU);
+    if (mpfr_cmp_d(out, 1 - 1.0 / 1024) >= 0) return false;
+    mpfr_sqr(out, out, MPFR_RNDU);
+    mpfr_ui_sub(out, 1, out, MPFR_RNDD);
+    mpfr_sqrt(out, out, MPFR_RNDD);
+    mpfr_div(out, r, out, MPFR_RNDU);
+    return true;
+  }
+  static bool exp_spread(mpfr_ptr out, mpfr_srcptr v, mpfr_srcptr, mpfr_srcptr r) {
+    if (mpfr_get_prec(out) < 16) return false;
+    mpfr_mul(out, v, r, MPFR_RNDU);
+    mpfr_mul_d(out, out, 1 + 1.0 / 1024, MPFR_RNDU);
+    return true;
+  }
+  static bool log_spread(mpfr_ptr out, mpfr_srcptr, mpfr_srcptr mid, mpfr_srcptr r) {
+    mpfr_sub(out, mid, r, MPFR_RNDD);
+    if (mpfr_sgn(out) <= 0) return false;
+    mpfr_div(out, r, out, MPFR_RNDU);
+    return true;
+  }
   template <class F>
   Interval unary(F f) {
     f(v_, v_);
@@ -225,6 +330,7 @@ class Interval {
   }
 
   mpfi_t v_;
+  bool owns_ = true;  // false once moved from
 };
 
 // The certain sign of a − b, or undecided where they overlap.
