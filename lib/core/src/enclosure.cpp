@@ -33,10 +33,18 @@ mpfr midpoint(const mpfr& lo, const mpfr& hi, mpfr_prec_t bits) {
 // A thin interval at the point x.
 Interval point(const mpfr& x, mpfr_prec_t bits) { return Interval::exact(x, bits); }
 
-// Interval Newton on X, where f' excludes 0: X ∩ (m − f(m)/f'(X)) while it halves.
+// X within 64 ulps of its larger end at `bits`: a Newton step could not halve it any more.
+bool at_rounding_floor(const Interval& X, mpfr_prec_t bits) {
+  const mpfr w = X.width(), top = std::max(abs(X.lower()), abs(X.upper()));
+  if (w == 0) return true;
+  return mpfr_get_exp(w.backend().data()) <= mpfr_get_exp(top.backend().data()) - bits + 6;
+}
+
+// Interval Newton on X, where f' excludes 0: X ∩ (m − f(m)/f'(X)) while it halves, or until X is
+// at the rounding floor (a verified box's first step often lands there).
 template <class F, class DF>
 Interval newton(Interval X, F f, DF df, mpfr_prec_t bits, const std::string& what) {
-  for (int k = 0; k < 200; ++k) {
+  for (int k = 0; k < 200 && !at_rounding_floor(X, bits); ++k) {
     const Interval m = point(X.midpoint(), bits);
     const Interval N = m - f(m) / df(X);
     std::optional<Interval> next = intersection(X, N);
@@ -136,7 +144,13 @@ long double seed_root(F f, DF df, long double a, long double b) {
 // [−1/4, 1/4]; an interval may straddle 0.
 class Flank {
  public:
-  explicit Flank(mpfr_prec_t bits) : bits_(bits) {}
+  explicit Flank(mpfr_prec_t bits)
+      : bits_(bits),
+        flank_(Interval::hull(mpfr(-0.25), mpfr(0.25), bits)),
+        second_(Interval::hull(mpfr(0.25), mpfr(0.75), bits)),
+        third_(Interval::hull(mpfr(0.75), mpfr(1.25), bits)),
+        half_(at(0.5)),
+        whole_(at(1)) {}
   virtual ~Flank() = default;
   virtual Interval r(const Interval& t) const = 0;
   virtual Interval dr(const Interval& t) const = 0;
@@ -182,24 +196,24 @@ class Flank {
 
  protected:
   mpfr_prec_t bits_;
+  Interval flank_, second_, third_, half_, whole_;  // [−1/4, 1/4], [1/4, 3/4], [3/4, 5/4]; 1/2, 1
   Interval at(double v) const { return Interval::exact(mpfr(v), bits_); }
   // first(t) on x ∩ [−1/4, 1/4] with t = φ, second on x ∩ [1/4, 3/4] with t = 1/2 − φ, third on
   // x ∩ [3/4, 5/4] with t = φ − 1, each t clipped to [−1/4, 1/4] (beyond it only by rounding).
   template <class A, class B, class C>
   Interval over(const Interval& x, A first, B second, C third) const {
     std::optional<Interval> out;
-    const Interval flank = Interval::hull(mpfr(-0.25), mpfr(0.25), bits_);
-    auto add = [&](double a, double b, const Interval& shift, bool reflect, auto f) {
-      const auto part = intersection(x, Interval::hull(mpfr(a), mpfr(b), bits_));
+    auto add = [&](const Interval& piece, const Interval* shift, bool reflect, auto f) {
+      const auto part = intersection(x, piece);
       if (!part) return;
-      const auto t = intersection(reflect ? shift - *part : *part - shift, flank);
+      const auto t = !shift ? intersection(*part, flank_) : intersection(reflect ? *shift - *part : *part - *shift, flank_);
       if (!t) return;
-      const Interval v = f(*t);
-      out = out ? hull(*out, v) : v;
+      Interval v = f(*t);
+      out = out ? hull(std::move(*out), v) : std::move(v);
     };
-    add(-0.25, 0.25, at(0), false, first);
-    add(0.25, 0.75, at(0.5), true, second);
-    add(0.75, 1.25, at(1), false, third);
+    add(flank_, nullptr, false, first);
+    add(second_, &half_, true, second);
+    add(third_, &whole_, false, third);
     if (!out) throw SolverError("enclosure: a phase outside [-1/4, 5/4] (a bug)");
     return *out;
   }
@@ -262,22 +276,29 @@ class SineFlank final : public Flank {
 class PowerFlank final : public Flank {
  public:
   PowerFlank(const Interval& p, mpfr_prec_t bits)
-      : Flank(bits), p_(p), p_seed_(mpfr_get_ld(p.midpoint().backend().data(), MPFR_RNDN)) {}
+      : Flank(bits),
+        one_(Interval::integer(1, bits)),
+        four_(Interval::integer(4, bits)),
+        p_(p),
+        p_minus_one_(p - one_),
+        p_plus_one_(p + one_),
+        inverse_p_(one_ / p),
+        inverse_p_minus_one_(one_ / (p - one_)),
+        four_p_(p * 4),
+        p_seed_(mpfr_get_ld(p.midpoint().backend().data(), MPFR_RNDN)) {}
   Interval r(const Interval& t) const override {
-    return split(t, [&](const Interval& a) { return one() - pw(one() - a * 4, p_); }, true);
+    return split(t, [&](const Interval& a) { return one_ - pw(one_ - a * 4, p_); });
   }
-  Interval dr(const Interval& t) const override { return p_ * 4 * pw(one() - abs(t) * 4, p_ - one()); }
+  Interval dr(const Interval& t) const override { return four_p_ * pw(one_ - abs(t) * 4, p_minus_one_); }
   Interval R(const Interval& t) const override {
     const Interval a = abs(t);
-    return a - (one() - pw(one() - a * 4, p_ + one())) / ((p_ + one()) * 4);
+    return a - (one_ - pw(one_ - a * 4, p_plus_one_)) / (p_plus_one_.value * 4);
   }
   Interval inverse(const Interval& y) const override {
-    return split(y, [&](const Interval& v) { return (one() - pw(one() - v, one() / p_)) / Interval::integer(4, bits_); }, true);
+    return split(y, [&](const Interval& v) { return (one_ - pw(one_ - v, inverse_p_)) / four_; });
   }
-  Interval top(const Interval& b) const override {
-    return (one() - pw(b / (p_ * 4), one() / (p_ - one()))) / Interval::integer(4, bits_);
-  }
-  Interval steepest() const override { return p_ * 4; }
+  Interval top(const Interval& b) const override { return (one_ - pw(b / four_p_, inverse_p_minus_one_)) / four_; }
+  Interval steepest() const override { return four_p_; }
   long double r_seed(long double t) const override {
     const long double v = 1 - std::pow(std::max(1 - 4 * std::fabs(t), 0.0L), p_seed_);
     return t < 0 ? -v : v;
@@ -287,39 +308,45 @@ class PowerFlank final : public Flank {
   }
 
  private:
-  Interval one() const { return Interval::integer(1, bits_); }
-  // x^q for x ≥ 0 (the part of x below 0 is rounding: dropped), q > 0: increasing in x. A whole
-  // q up to 64 (power:2, power:3 and their p ± 1) by multiplications, else exp(q log x).
-  Interval pw(const Interval& x, const Interval& q) const {
-    const mpfr hi = x.upper();
-    if (hi <= 0) return Interval(bits_);
-    const mpfr q_lo = q.lower();
-    if (q_lo == q.upper() && mpfr_integer_p(q_lo.backend().data()) && q_lo >= 1 && q_lo <= 64) {
-      Interval base = x.lower() > 0 ? x : Interval::hull(mpfr(0), hi, bits_);
-      Interval out = Interval::integer(1, bits_);
-      for (unsigned long k = q_lo.convert_to<unsigned long>(); k != 0; k >>= 1) {
+  // An exponent, and whether it is a whole number up to 64 (power:2, power:3 and their p ± 1):
+  // then powers are products, else exp(q log x). Set once: the enclosure raises to it often.
+  struct Exponent {
+    explicit Exponent(Interval q) : value(std::move(q)) {
+      const mpfr lo = value.lower();
+      if (lo == value.upper() && mpfr_integer_p(lo.backend().data()) && lo >= 1 && lo <= 64)
+        whole = lo.convert_to<unsigned long>();
+    }
+    Interval value;
+    std::optional<unsigned long> whole;
+  };
+  // x^q for x ≥ 0 (the part of x below 0 is rounding: dropped), q > 0: increasing in x.
+  Interval pw(const Interval& x, const Exponent& q) const {
+    if (mpfr_sgn(&x.data()->right) <= 0) return Interval(bits_);
+    const bool positive = mpfr_sgn(&x.data()->left) > 0;
+    if (q.whole) {
+      Interval base = positive ? x : Interval::hull(mpfr(0), x.upper(), bits_);
+      Interval out = one_;
+      for (unsigned long k = *q.whole; k != 0; k >>= 1) {
         if (k & 1) out *= base;
         if (k > 1) base = sqr(std::move(base));
       }
       return out;
     }
-    if (x.lower() > 0) return exp(q * log(x));
-    return Interval::hull(mpfr(0), exp(q * log(Interval::exact(hi, bits_))).upper(), bits_);
+    if (positive) return exp(q.value * log(x));
+    return Interval::hull(mpfr(0), exp(q.value * log(Interval::exact(x.upper(), bits_))).upper(), bits_);
   }
-  // f on |x| with x's sign restored (an odd function from its positive half), over each sign of x.
+  // An odd f from its positive half: f on |x| with x's sign restored, over each sign of x.
   template <class F>
-  Interval split(const Interval& x, F f, bool odd) const {
-    std::optional<Interval> out;
+  Interval split(const Interval& x, F f) const {
+    const int lo = mpfr_sgn(&x.data()->left), hi = mpfr_sgn(&x.data()->right);
+    if (lo >= 0) return hi > 0 ? f(x) : Interval(bits_);
+    if (hi <= 0) return -f(-x);
     const mpfr zero = 0;
-    if (x.upper() > 0) out = f(Interval::hull(std::max(x.lower(), zero), x.upper(), bits_));
-    if (x.lower() < 0) {
-      Interval neg = f(Interval::hull(std::max(mpfr(-x.upper()), zero), mpfr(-x.lower()), bits_));
-      if (odd) neg = -neg;
-      out = out ? hull(*out, neg) : neg;
-    }
-    return out ? *out : Interval(bits_);
+    return hull(f(Interval::hull(zero, x.upper(), bits_)), -f(Interval::hull(zero, mpfr(-x.lower()), bits_)));
   }
-  Interval p_;
+  Interval one_, four_;
+  Exponent p_, p_minus_one_, p_plus_one_, inverse_p_, inverse_p_minus_one_;
+  Interval four_p_;
   long double p_seed_;
 };
 

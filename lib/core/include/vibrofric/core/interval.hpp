@@ -256,8 +256,7 @@ class Interval {
   template <class F, class G, class S>
   Interval narrow(F f, G wide, S spread) {
     const mpfr_prec_t bits = precision();
-    mpfr_t mid, radius, lo, hi;
-    mpfr_inits2(bits, mid, radius, lo, hi, static_cast<mpfr_ptr>(nullptr));
+    mpfr_ptr mid = scratch(0, bits), radius = scratch(1, bits), lo = scratch(2, bits), hi = scratch(3, bits);
     mpfi_mid(mid, v_);
     mpfr_sub(radius, &v_->right, mid, MPFR_RNDU);
     mpfr_sub(lo, mid, &v_->left, MPFR_RNDU);
@@ -278,8 +277,23 @@ class Interval {
       }
     }
     if (!done) wide(v_, v_);
-    mpfr_clears(mid, radius, lo, hi, static_cast<mpfr_ptr>(nullptr));
     return std::move(*this);
+  }
+  // Scratch number i of four per thread at `bits` (set_prec reallocates only to grow): narrow()
+  // runs for every transcendental function, and its temporaries were four allocations a call.
+  static mpfr_ptr scratch(int i, mpfr_prec_t bits) {
+    struct Scratch {
+      Scratch() {
+        for (mpfr_t& x : v) mpfr_init2(x, MPFR_PREC_MIN);
+      }
+      ~Scratch() {
+        for (mpfr_t& x : v) mpfr_clear(x);
+      }
+      mpfr_t v[4];
+    };
+    thread_local Scratch s;
+    mpfr_set_prec(s.v[i], bits);
+    return s.v[i];
   }
   // The spreads: r·(c + r) for sin and cos, c = √(1 − (|v| − ulp)²) rounded up bounding |f'(mid)|
   // (the other function's size, from v = f(mid) rounded) and |f''| ≤ 1 (Taylor: r·c + r²/2;
