@@ -26,12 +26,15 @@ std::vector<Vertex> clipped(const Wave& w, const Rational& gamma, Result& r) {
   const auto& v = w.vertices;
   const std::size_t m = v.size();
   auto clip = [](const Rational& y) { return y > 0 ? y : Rational(0); };
+  std::vector<Rational> left(m), right(m);  // γ + w at each vertex, from the left and the right
+  for (std::size_t k = 0; k < m; ++k) left[k] = gamma + v[k].left, right[k] = gamma + v[k].right;
+  const Rational one = 1;
   std::vector<Vertex> n;
   n.reserve(2 * m);
   for (std::size_t k = 0; k < m; ++k) {
-    n.push_back({v[k].x, clip(gamma + v[k].left), clip(gamma + v[k].right)});
-    const Rational a = v[k].x, b = k + 1 < m ? v[k + 1].x : Rational(1);
-    const Rational ya = gamma + v[k].right, yb = gamma + v[(k + 1) % m].left;
+    n.push_back({v[k].x, clip(left[k]), clip(right[k])});
+    const Rational &a = v[k].x, &b = k + 1 < m ? v[k + 1].x : one;
+    const Rational &ya = right[k], &yb = left[(k + 1) % m];
     if ((ya < 0 && yb > 0) || (ya > 0 && yb < 0)) {
       n.push_back({a + (b - a) * ya / (ya - yb), 0, 0});
       ++r.contact_boundaries;
@@ -133,25 +136,34 @@ Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
   Result r;
   const std::vector<Vertex> n = clipped(w, gamma, r);
   const std::size_t m = n.size();
-  auto end_of = [&](std::size_t k) { return k + 1 < m ? n[k + 1].x : Rational(1); };
+  const Rational one = 1;
+  auto end_of = [&](std::size_t k) -> const Rational& { return k + 1 < m ? n[k + 1].x : one; };
 
+  // Per piece k, on [a, b): n's slope, and h = n − βφ at a (from the right) and at b (from the
+  // left), computed once for both passes below.
+  std::vector<Rational> slope(m), h_begin(m), h_end(m);
   // β_c: the largest slope of a piece, or none (∞) at an upward jump of n.
   bool jump_up = false;
   Rational steepest = 0;
   for (std::size_t k = 0; k < m; ++k) {
+    const Rational &a = n[k].x, &b = end_of(k), &na = n[k].right, &nb = n[(k + 1) % m].left;
     if (n[k].right > n[k].left) jump_up = true;
-    const Rational slope = (n[(k + 1) % m].left - n[k].right) / (end_of(k) - n[k].x);
-    steepest = std::max(steepest, slope);
-    r.normal_area += (end_of(k) - n[k].x) * (n[k].right + n[(k + 1) % m].left) / 2;
+    const Rational length = b - a;
+    slope[k] = (nb - na) / length;
+    if (slope[k] > steepest) steepest = slope[k];
+    r.normal_area += length * (na + nb) / 2;
+    h_begin[k] = na - beta * a;
+    h_end[k] = nb - beta * b;
   }
   if (!jump_up) r.beta_c = steepest;
 
   // min of h = n − βψ over the period before [0, 1): β + its minimum over [0, 1), one-sided
-  // limits included (the left limit at 1 is n's at 0 from the left, minus β).
-  Rational low = n[0].left - beta;
+  // limits included (the left limit at 1 is n's at 0 from the left, minus β: h_end of the last
+  // piece; the left limit at a vertex x_k > 0 is h_end of the piece before).
+  Rational low = h_end[m - 1];
   for (std::size_t k = 0; k < m; ++k) {
-    low = std::min(low, n[k].right - beta * n[k].x);
-    if (k > 0) low = std::min(low, n[k].left - beta * n[k].x);
+    if (h_begin[k] < low) low = h_begin[k];
+    if (h_end[k] < low) low = h_end[k];
   }
   Rational M = low + beta;  // min of h over ψ ≤ φ, so far; s = βφ + M
 
@@ -172,16 +184,14 @@ Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
     strict = false;
   };
   for (std::size_t k = 0; k < m; ++k) {
-    const Rational a = n[k].x, b = end_of(k);
-    const Rational& na = n[k].right;
-    const Rational& nb = n[(k + 1) % m].left;
-    const Rational ha = na - beta * a, hb = nb - beta * b;
+    const Rational &a = n[k].x, &b = end_of(k), &na = n[k].right, &nb = n[(k + 1) % m].left;
+    const Rational &ha = h_begin[k], &hb = h_end[k];
     if (ha < M) {  // n jumps down below the ramp at a: slip onto n
       close_ramp(a);
       M = ha;
       ramp_from = a;
     }
-    const Rational slope_h = (nb - na) / (b - a) - beta;
+    const Rational slope_h = slope[k] - beta;
     if (M <= hb) {  // the minimum stays on the whole piece: ramp
       if (M < ha || slope_h > 0) strict = true;
       r.retained_area += (b - a) * (M + beta * (a + b) / 2);
