@@ -299,6 +299,7 @@ class PowerFlank final : public Flank {
   }
   Interval top(const Interval& b) const override { return (one_ - pw(b / four_p_, inverse_p_minus_one_)) / four_; }
   Interval steepest() const override { return four_p_; }
+  Interval R_quarter() const override { return p_.value / (p_plus_one_.value * 4); }  // 1/4 − 1/(4(p + 1))
   long double r_seed(long double t) const override {
     const long double v = 1 - std::pow(std::max(1 - 4 * std::fabs(t), 0.0L), p_seed_);
     return t < 0 ? -v : v;
