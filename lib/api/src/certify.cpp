@@ -49,8 +49,16 @@ std::string text_of(const Rational& x) {
 
 Integer power(long base, long e) { return pow(Integer(base), static_cast<unsigned>(e)); }
 
-// x · base^e, exactly.
+// x · base^e, exactly (base 2 by GMP's shifts: the binary types ask for it on every point).
 Rational scaled(const Rational& x, long base, long e) {
+  if (base == 2) {
+    Rational r;
+    if (e >= 0)
+      mpq_mul_2exp(r.backend().data(), x.backend().data(), static_cast<mp_bitcnt_t>(e));
+    else
+      mpq_div_2exp(r.backend().data(), x.backend().data(), static_cast<mp_bitcnt_t>(-e));
+    return r;
+  }
   return e >= 0 ? Rational(x * Rational(power(base, e))) : Rational(x / Rational(power(base, -e)));
 }
 

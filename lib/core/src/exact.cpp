@@ -140,21 +140,25 @@ Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
   auto end_of = [&](std::size_t k) -> const Rational& { return k + 1 < m ? n[k + 1].x : one; };
 
   // Per piece k, on [a, b): n's slope, and h = n − βφ at a (from the right) and at b (from the
-  // left), computed once for both passes below.
+  // left), computed once for both passes below. The arithmetic is in place, on scratch rationals
+  // t and u reused from piece to piece: a temporary per operation was most of the cost.
   std::vector<Rational> slope(m), h_begin(m), h_end(m);
+  Rational t, u, twice_area;  // twice_area: 2 ∫n, then 2 ∫s
   // β_c: the largest slope of a piece, or none (∞) at an upward jump of n.
   bool jump_up = false;
   Rational steepest = 0;
   for (std::size_t k = 0; k < m; ++k) {
     const Rational &a = n[k].x, &b = end_of(k), &na = n[k].right, &nb = n[(k + 1) % m].left;
     if (n[k].right > n[k].left) jump_up = true;
-    const Rational length = b - a;
-    slope[k] = (nb - na) / length;
+    u = b, u -= a;                                    // the piece's length
+    slope[k] = nb, slope[k] -= na, slope[k] /= u;     // (nb − na)/(b − a)
     if (slope[k] > steepest) steepest = slope[k];
-    r.normal_area += length * (na + nb) / 2;
-    h_begin[k] = na - beta * a;
-    h_end[k] = nb - beta * b;
+    t = na, t += nb, t *= u, twice_area += t;         // (b − a)(na + nb)
+    t = beta, t *= a, h_begin[k] = na, h_begin[k] -= t;
+    t = beta, t *= b, h_end[k] = nb, h_end[k] -= t;
   }
+  r.normal_area = twice_area / 2;
+  twice_area = 0;
   if (!jump_up) r.beta_c = steepest;
 
   // min of h = n − βψ over the period before [0, 1): β + its minimum over [0, 1), one-sided
@@ -191,24 +195,29 @@ Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
       M = ha;
       ramp_from = a;
     }
-    const Rational slope_h = slope[k] - beta;
+    // Twice the ramp's integral over [a, b], (b − a)(2M + β(a + b)), into twice_area.
+    auto add_ramp = [&](const Rational& from, const Rational& to) {
+      t = from, t += to, t *= beta, t += M, t += M, u = to, u -= from, t *= u, twice_area += t;
+    };
     if (M <= hb) {  // the minimum stays on the whole piece: ramp
-      if (M < ha || slope_h > 0) strict = true;
-      r.retained_area += (b - a) * (M + beta * (a + b) / 2);
+      if (M < ha || slope[k] > beta) strict = true;
+      add_ramp(a, b);
       continue;
     }
     // h falls below M at c ∈ [a, b): ramp on [a, c], then s = n (slip) to b.
     Rational c = a;
     if (M < ha) {
-      c = a + (M - ha) / slope_h;
+      t = slope[k], t -= beta, c = M, c -= ha, c /= t, c += a;  // a + (M − h(a))/(n' − β)
       strict = true;
-      r.retained_area += (c - a) * (M + beta * (a + c) / 2);
+      add_ramp(a, c);
     }
     close_ramp(c);
-    r.retained_area += (b - c) * (na + (c - a) * (slope_h + beta) + nb) / 2;
+    // Twice the slip's integral, (b − c)(n(c) + nb), n(c) = na + (c − a) n'.
+    t = c, t -= a, t *= slope[k], t += na, t += nb, u = b, u -= c, t *= u, twice_area += t;
     M = hb;
     ramp_from = b;
   }
+  r.retained_area = twice_area / 2;
   // The ramp running at φ = 1 goes on into the next period to the initial ramp's end.
   if (!first_end) throw SolverError("exact solve of " + w.name + ": the minimum never follows n (a bug)");
   Rational end = *first_end + 1;
