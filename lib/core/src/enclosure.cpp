@@ -204,6 +204,8 @@ class Flank {
   Interval over(const Interval& x, A first, B second, C third) const {
     std::optional<Interval> out;
     auto add = [&](const Interval& piece, const Interval* shift, bool reflect, auto f) {
+      // (most arguments lie in one piece: the others are passed over by their ends, no copies)
+      if (mpfr_cmp(&x.data()->right, &piece.data()->left) < 0 || mpfr_cmp(&x.data()->left, &piece.data()->right) > 0) return;
       const auto part = intersection(x, piece);
       if (!part) return;
       const auto t = !shift ? intersection(*part, flank_) : intersection(reflect ? *shift - *part : *part - *shift, flank_);
