@@ -21,6 +21,7 @@
 
 #include "common.hpp"
 #include "ladder.hpp"
+#include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/core/solver.hpp"
 #include "vibrofric/verification/baseline.hpp"
@@ -311,6 +312,29 @@ void BM_accuracy(benchmark::State& state, const std::string& wave, const PathInf
     std::vector<Point> grid;
     for (const Reference& r : refs) grid.push_back({exact_decimal(r.at.beta), exact_decimal(r.at.gamma)});
     rung_counters(state, wave, grid);
+    // The estimate against the proof (api/certify.hpp): the double printed at every grid point,
+    // corners included, is the proven correct rounding of the exact value. A miss, or a point the
+    // certificate cannot decide, is a bug: the benchmark stops with an error naming it.
+    const Certifier certifier(eval.spec, ProfileSpec{});
+    std::size_t proven = 0;
+    for (const Point& q : grid) {
+      std::string what;
+      try {
+        const std::string printed = evaluate(eval.spec, Quantity::mu, {q}, eval.precision, eval.options).at(0);
+        const Certificate c = certifier(Quantity::mu, q, eval.precision, printed);
+        if (c.correctly_rounded)
+          ++proven;
+        else
+          what = "printed " + printed + ", proven " + c.nearest.front();
+      } catch (const std::exception& ex) {
+        what = ex.what();
+      }
+      if (!what.empty()) {
+        state.SkipWithError(("not proven correctly rounded at beta = " + q.beta + ", gamma = " + q.gamma + ": " + what).c_str());
+        break;
+      }
+    }
+    state.counters["certified_proven"] = double(proven);
   }
 }
 

@@ -246,7 +246,11 @@ TEST(Interval, NarrowArgumentsHoldEveryPointsValue) {
   mpfr_inits2(4 * kBits, v, d, down, up, static_cast<mpfr_ptr>(nullptr));
   for (const Case& c : cases)
     for (const double width : {0.0, 1e-30, 1e-12, 1e-7}) {
-      const Interval arg = Interval::hull(mpfr(c.centre), mpfr(c.centre) + mpfr(width), kBits);
+      mpfr hi;  // centre + width exactly (4 × kBits hold it), as the sample points below
+      mpfr_set_prec(hi.backend().data(), 4 * kBits);
+      mpfr_set_d(hi.backend().data(), c.centre, MPFR_RNDN);
+      mpfr_add_d(hi.backend().data(), hi.backend().data(), width, MPFR_RNDN);
+      const Interval arg = Interval::hull(mpfr(c.centre), hi, kBits);
       const Interval out = c.f(arg);
       for (double t = 0; t <= 1; t += 1.0 / 16) {
         mpfr_set_d(v, c.centre, MPFR_RNDN);
@@ -257,10 +261,11 @@ TEST(Interval, NarrowArgumentsHoldEveryPointsValue) {
         EXPECT_TRUE(mpfi_is_inside_fr(down, out.data()) > 0 && mpfi_is_inside_fr(up, out.data()) > 0)
             << c.name << " at " << c.centre << " + " << width * t;
       }
-      // Eight ulps: two for the rounding of f(mid), and the argument's rounded midpoint and radius
-      // (an ulp of the argument each, up to two of the result's where its exponent is larger).
-      EXPECT_LE(width_in_ulps(out),
-                8 + c.slope * width * std::pow(2.0, out.precision() - mpfr_get_exp(out.lower().backend().data())))
+      // Four ulps of the result (f(mid)'s rounding, the spread's outward rounding), and the slope
+      // times the argument's width plus its rounded midpoint and radius (an ulp of the argument
+      // each way, 2^(e_arg − e_out) ulps of the result).
+      const long e_out = mpfr_get_exp(out.lower().backend().data()), e_arg = mpfr_get_exp(arg.lower().backend().data());
+      EXPECT_LE(width_in_ulps(out), 4 + c.slope * (width * std::pow(2.0, out.precision() - e_out) + 2 * std::ldexp(1.0, e_arg - e_out)))
           << c.name << " " << c.centre << " " << width;
     }
   mpfr_clears(v, d, down, up, static_cast<mpfr_ptr>(nullptr));

@@ -33,12 +33,15 @@ mpfr midpoint(const mpfr& lo, const mpfr& hi, mpfr_prec_t bits) {
 // A thin interval at the point x.
 Interval point(const mpfr& x, mpfr_prec_t bits) { return Interval::exact(x, bits); }
 
-// X within 64 ulps of its larger end at `bits`: a Newton step could not halve it any more.
-bool at_rounding_floor(const Interval& X, mpfr_prec_t bits) {
+// X within 2^ulps ulps of its larger end at `bits`.
+bool within_ulps(const Interval& X, mpfr_prec_t bits, long ulps) {
   const mpfr w = X.width(), top = std::max(abs(X.lower()), abs(X.upper()));
   if (w == 0) return true;
-  return mpfr_get_exp(w.backend().data()) <= mpfr_get_exp(top.backend().data()) - bits + 6;
+  return mpfr_get_exp(w.backend().data()) <= mpfr_get_exp(top.backend().data()) - bits + ulps;
 }
+
+// X within 64 ulps: a Newton step could not halve it any more.
+bool at_rounding_floor(const Interval& X, mpfr_prec_t bits) { return within_ulps(X, bits, 6); }
 
 // Interval Newton on X, where f' excludes 0: X ∩ (m − f(m)/f'(X)) while it halves, or until X is
 // at the rounding floor (a verified box's first step often lands there).
@@ -92,7 +95,8 @@ Interval bracketed_root(F f, DF df, mpfr lo, mpfr hi, mpfr_prec_t bits, const st
 // long double; its accuracy is not relied on): the first box X of half-width 2^−56, 2^−46,
 // 2^−36 or 2^−26 about it that lies inside (lo, hi), has F' < 0 certainly on it and is mapped
 // into itself by interval Newton (then X holds exactly one root, inside N(X)) is narrowed by
-// Newton. Else nothing: the caller brackets from scratch. Most points take two interval steps
+// Newton, and taken if that reaches within 2^20 ulps. Else nothing: the caller brackets from
+// scratch. Most points take two interval steps
 // instead of a bisection; the wider boxes serve seeds that lose digits where F' is small (a
 // stick phase that barely exists, β just below β_c).
 template <class F, class DF>
@@ -113,7 +117,12 @@ std::optional<Interval> seeded_root(F f, DF df, long double x0, const mpfr& lo, 
     if (slope.sign() != Sign::negative) continue;
     const Interval m = point(X.midpoint(), bits);
     const Interval N = m - f(m) / slope;
-    if (N.bounded() && X.contains(N)) return newton(N, f, df, bits, what);
+    if (!N.bounded() || !X.contains(N)) continue;
+    // Newton stalls short of the rounding where F' varies much across the box (F' near 0 at
+    // one end, a stick phase that barely exists): then the bracket decides, as without a seed.
+    Interval root = newton(N, f, df, bits, what);
+    if (within_ulps(root, bits, 20)) return root;
+    return std::nullopt;
   }
   return std::nullopt;
 }

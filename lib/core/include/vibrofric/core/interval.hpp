@@ -156,8 +156,8 @@ class Interval {
 
   friend Interval sqr(Interval a) { return a.unary(mpfi_sqr); }
   friend Interval abs(Interval a) { return a.unary(mpfi_abs); }
-  // sin, cos, exp, log, asin and acos of a narrow interval (radius < 2^−20) cost one MPFR call
-  // at its midpoint (see narrow), mpfi's two and its argument checks on a wide one.
+  // sin, cos, exp, log, asin and acos of a narrow interval (radius < 2^−(bits/2)) cost one MPFR
+  // call at its midpoint (see narrow), mpfi's two and its argument checks on a wide one.
   friend Interval sin(Interval a) { return a.narrow(mpfr_sin, mpfi_sin, trig_spread); }
   friend Interval cos(Interval a) { return a.narrow(mpfr_cos, mpfi_cos, trig_spread); }
   friend Interval exp(Interval a) { return a.narrow(mpfr_exp, mpfi_exp, exp_spread); }
@@ -249,10 +249,13 @@ class Interval {
       throw SolverError(std::string("interval ") + f + " of an interval reaching outside [-1, 1]");
     return *this;
   }
-  // f on a narrow interval (radius r < 2^−20): f(mid), correctly rounded, widened by an ulp
-  // either way where inexact (an exact value, as sin 0, stays a point), then by spread(v, mid,
-  // r), a bound on |f(x) − f(mid)| over the interval (false where it has none); on a wide
-  // interval, one with a NaN or infinite end, or without a spread, `wide` (mpfi's, two calls).
+  // f on a narrow interval (radius r < 2^−(bits/2), so that the spreads' second-order terms,
+  // about r², lie below the rounding): f(mid), correctly rounded, widened by an ulp either way
+  // where inexact (an exact value, as sin 0, stays a point), then by spread(v, mid, r), a bound
+  // on |f(x) − f(mid)| over the interval (false where it has none); on a wide interval, one with
+  // a NaN or infinite end, or without a spread, `wide` (mpfi's two calls, exact at the ends:
+  // where f' vanishes at an end, as F' at a stick that barely exists, a spread about the
+  // midpoint would overshoot the end's value and make Newton stall).
   template <class F, class G, class S>
   Interval narrow(F f, G wide, S spread) {
     const mpfr_prec_t bits = precision();
@@ -262,7 +265,7 @@ class Interval {
     mpfr_sub(lo, mid, &v_->left, MPFR_RNDU);
     mpfr_max(radius, radius, lo, MPFR_RNDU);
     bool done = false;
-    if (mpfr_number_p(radius) && (mpfr_zero_p(radius) || mpfr_get_exp(radius) < -20)) {
+    if (mpfr_number_p(radius) && (mpfr_zero_p(radius) || mpfr_get_exp(radius) <= -bits / 2)) {
       const int inexact = f(hi, mid, MPFR_RNDN);  // hi: f(mid); lo: the spread
       if (mpfr_number_p(hi) && spread(lo, hi, mid, radius)) {
         mpfr_swap(lo, mid);
