@@ -96,9 +96,8 @@ Interval bracketed_root(F f, DF df, mpfr lo, mpfr hi, mpfr_prec_t bits, const st
 // 2^−36 or 2^−26 about it that lies inside (lo, hi), has F' < 0 certainly on it and is mapped
 // into itself by interval Newton (then X holds exactly one root, inside N(X)) is narrowed by
 // Newton, and taken if that reaches within 2^20 ulps. Else nothing: the caller brackets from
-// scratch. Most points take two interval steps
-// instead of a bisection; the wider boxes serve seeds that lose digits where F' is small (a
-// stick phase that barely exists, β just below β_c).
+// scratch. Most points take two interval steps instead of a bisection; the wider boxes serve
+// seeds that lose digits where F' is small (a stick phase that barely exists, β just below β_c).
 template <class F, class DF>
 std::optional<Interval> seeded_root(F f, DF df, long double x0, const mpfr& lo, const mpfr& hi, mpfr_prec_t bits,
                                     const std::string& what) {

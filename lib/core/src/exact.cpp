@@ -187,6 +187,10 @@ Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
     }
     strict = false;
   };
+  // Twice the ramp's integral over [from, to], (to − from)(2M + β(from + to)), into twice_area.
+  auto add_ramp = [&](const Rational& from, const Rational& to) {
+    t = from, t += to, t *= beta, t += M, t += M, u = to, u -= from, t *= u, twice_area += t;
+  };
   for (std::size_t k = 0; k < m; ++k) {
     const Rational &a = n[k].x, &b = end_of(k), &na = n[k].right, &nb = n[(k + 1) % m].left;
     const Rational &ha = h_begin[k], &hb = h_end[k];
@@ -195,10 +199,6 @@ Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {
       M = ha;
       ramp_from = a;
     }
-    // Twice the ramp's integral over [a, b], (b − a)(2M + β(a + b)), into twice_area.
-    auto add_ramp = [&](const Rational& from, const Rational& to) {
-      t = from, t += to, t *= beta, t += M, t += M, u = to, u -= from, t *= u, twice_area += t;
-    };
     if (M <= hb) {  // the minimum stays on the whole piece: ramp
       if (M < ha || slope[k] > beta) strict = true;
       add_ramp(a, b);

@@ -298,11 +298,14 @@ class Interval {
     mpfr_set_prec(s.v[i], bits);
     return s.v[i];
   }
-  // The spreads: r·(c + r) for sin and cos, c = √(1 − (|v| − ulp)²) rounded up bounding |f'(mid)|
-  // (the other function's size, from v = f(mid) rounded) and |f''| ≤ 1 (Taylor: r·c + r²/2;
-  // near an extremum r alone would be far wider than the true range, and Newton stall); r/√(1 − m²), m = |mid| + r, for asin and acos
-  // where m < 1 − 2^−10 (the largest slope on the interval); r·v·(1 + 2^−10) for exp, v = e^mid
-  // rounded (e^r − 1 ≤ r(1 + r), and e^mid ≤ v(1 + 2^(1−bits)), bits ≥ 16); r/(mid − r) for log.
+  // The spreads:
+  //  - sin, cos: r·(c + r), c = √(1 − (|v| − ulp)²) rounded up bounding |f'(mid)| (the other
+  //    function's size, from v = f(mid) rounded), and |f''| ≤ 1 (Taylor: r·c + r²/2; near an
+  //    extremum r alone would be far wider than the true range);
+  //  - asin, acos: r/√(1 − m²), m = |mid| + r < 1 − 2^−10 (the largest slope on the interval);
+  //  - exp: r·v·(1 + 2^−10), v = e^mid rounded (e^r − 1 ≤ r(1 + r), e^mid ≤ v(1 + 2^(1−bits)),
+  //    bits ≥ 16);
+  //  - log: r/(mid − r).
   static bool trig_spread(mpfr_ptr out, mpfr_srcptr v, mpfr_srcptr, mpfr_srcptr r) {
     mpfr_abs(out, v, MPFR_RNDD);
     mpfr_nextbelow(out);  // ≤ |f(mid)|: v is within half an ulp of it
