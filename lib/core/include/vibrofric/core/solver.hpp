@@ -102,6 +102,7 @@ class Contact {
     const std::size_t pieces = w.piece_count();
     using std::abs;
     using std::max;
+    segs_.reserve(3 * pieces);  // a piece splits at most at two contact boundaries
     for (std::size_t i = 0; i < pieces; ++i) {
       if (i == w.argmin_break()) start_ = segs_.size();
       const Real& a = w.piece_begin(i);
@@ -232,7 +233,6 @@ class EventPass {
     r.beta_c = c_.beta_c();
     r.jumping = c_.jumping();
     r.area = method_;
-    r.stick_phases = stick_;
     // First-order rounding bounds (in eps) of the areas, relative to the areas themselves: large
     // where the areas are small differences of O(1) phases and values (β → 0, γ → −min w).
     const Real eps = std::numeric_limits<Real>::epsilon();
@@ -256,6 +256,7 @@ class EventPass {
     r.root_iterations = stats_.iterations + c_.root_iterations();
     r.quadratures = quadratures_;
     r.evaluations = evaluations_;
+    r.stick_phases = std::move(stick_);  // last: the bounds above ask whether there was a stick
     return r;
   }
 

@@ -291,13 +291,13 @@ class Sine final : public Waveform<Real> {
       Real phi;
       std::pair<Real, Real> sc;
     };
-    thread_local Entry last[2];
+    thread_local Entry last[4];
     thread_local int next = 0;
     const int d = working_digits10<Real>();
     for (const Entry& e : last)
       if (e.digits == d && e.phi == phi) return e.sc;
     Entry& e = last[next];
-    next ^= 1;
+    next = (next + 1) % 4;
     e.digits = d;
     e.phi = phi;
     e.sc = sin_cos_2pi(phi);
