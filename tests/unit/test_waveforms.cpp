@@ -484,4 +484,38 @@ TEST(Waveforms, ValueErrorBoundsTheEvaluationError) {
   }
 }
 
+// acos_fast (the sine's contact boundaries and onsets in mpfr; its early Halley steps at reduced
+// precision) against MPFR's own acos at four times the bits: within 4·2^−p of the result (2 to
+// 4 ulp), as Halley's last step leaves about eps/4096 and the rounding of 2h and of π − acos(−y)
+// adds an ulp each. The points reach the ends: y = ±1, and y = 1 − 10^(−digits/2) and
+// 1 − 10^(2−digits), whose √((1 − y)/2) is below double's range at 1000 and 3000 digits (the
+// guess is then 0 and the reduced-precision steps are skipped).
+TEST(Waveforms, AcosFastIsMpfrsAcosToWithinFourUlp) {
+  for (unsigned digits : {20u, 50u, 300u, 1000u, 3000u}) {
+    PrecisionScope scope(digits);
+    const mpfr_prec_t bits = mpfr_get_prec(mpfr(1).backend().data());
+    std::vector<mpfr> ys;
+    for (const char* y : {"-1", "-0.99999999", "-0.5", "-1e-30", "0", "1e-30", "0.3", "0.5", "0.70710678118654752440", "0.9", "0.999999"})
+      ys.emplace_back(y);
+    ys.push_back(1 - pow(mpfr(10), -static_cast<int>(digits) / 2));
+    ys.push_back(1 - pow(mpfr(10), -static_cast<int>(digits) + 2));
+    ys.push_back(mpfr(1));
+    for (const mpfr& y : ys) {
+      const mpfr got = detail::acos_fast(y);
+      mpfr_t ref, diff;
+      mpfr_inits2(4 * bits, ref, diff, static_cast<mpfr_ptr>(nullptr));
+      mpfr_acos(ref, y.backend().data(), MPFR_RNDN);
+      mpfr_sub(diff, got.backend().data(), ref, MPFR_RNDN);
+      mpfr_abs(diff, diff, MPFR_RNDN);
+      mpfr_t allowed;
+      mpfr_init2(allowed, 4 * bits);
+      mpfr_abs(allowed, ref, MPFR_RNDN);
+      mpfr_mul_2si(allowed, allowed, 2 - bits, MPFR_RNDN);  // 4 ulp of the result
+      EXPECT_LE(mpfr_cmp(diff, allowed), 0) << "digits " << digits << ", y = " << y.str(30) << ": off by "
+                                            << mpfr_get_d(diff, MPFR_RNDN) << ", allowed " << mpfr_get_d(allowed, MPFR_RNDN);
+      mpfr_clears(ref, diff, allowed, static_cast<mpfr_ptr>(nullptr));
+    }
+  }
+}
+
 }  // namespace

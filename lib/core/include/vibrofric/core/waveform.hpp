@@ -45,9 +45,36 @@ std::pair<Real, Real> sin_cos(const Real& x) {
   return {s, c};
 }
 
+// Halley steps on sin h = t (acos_fast) at the precision each can use: a guess with `bits`
+// correct bits comes out with about 3·bits, so a step needs 3·bits + 16, not h's precision.
+// Stops while a step at h's own precision is still to come; acos_fast's loop takes it there
+// and decides convergence. mpfr only (raw MPFR: each step's numbers at their own precision).
+inline void coarse_halley(mpfr& h, const mpfr& t) {
+  const mpfr_ptr hp = h.backend().data();
+  const mpfr_prec_t full = mpfr_get_prec(hp);
+  mpfr_t x, s, c, f, num, den;
+  mpfr_inits2(full, x, s, c, f, num, den, static_cast<mpfr_ptr>(nullptr));
+  for (mpfr_prec_t bits = 50; 3 * bits + 16 < full; bits *= 3) {
+    const mpfr_prec_t q = 3 * bits + 16;
+    for (mpfr_ptr v : {x, s, c, f, num, den}) mpfr_set_prec(v, q);
+    mpfr_set(x, hp, MPFR_RNDN);
+    mpfr_sin_cos(s, c, x, MPFR_RNDN);
+    mpfr_sub(f, s, t.backend().data(), MPFR_RNDN);
+    mpfr_mul(num, f, c, MPFR_RNDN);  // Δ = 2 f c / (2 c² + f s), as in acos_fast
+    mpfr_mul_2ui(num, num, 1, MPFR_RNDN);
+    mpfr_sqr(den, c, MPFR_RNDN);
+    mpfr_mul_2ui(den, den, 1, MPFR_RNDN);
+    mpfr_fma(den, f, s, den, MPFR_RNDN);
+    mpfr_div(num, num, den, MPFR_RNDN);
+    mpfr_sub(hp, x, num, MPFR_RNDN);
+  }
+  mpfr_clears(x, s, c, f, num, den, static_cast<mpfr_ptr>(nullptr));
+}
+
 // acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
 // from a double guess (two steps to 100 digits; θ/2 ≤ π/4 keeps it well conditioned, and small
-// θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos.
+// θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos. In
+// mpfr the steps before the last run at reduced precision (coarse_halley).
 template <class Real>
 Real acos_fast(const Real& y) {
   using std::acos;
@@ -61,6 +88,9 @@ Real acos_fast(const Real& y) {
     if (y >= 1) return Real(0);
     const Real t = sqrt((1 - y) / 2);
     Real h = std::asin(static_cast<double>(t));
+    // A guess of 0 (t below double's range) has no correct bits to triple.
+    if constexpr (is_runtime_precision_v<Real>)
+      if (h != 0) coarse_halley(h, t);
     const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
     for (int it = 0; it < 64; ++it) {
       const auto [sh, ch] = sin_cos(h);
