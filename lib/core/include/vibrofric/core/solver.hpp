@@ -451,8 +451,12 @@ class EventPass {
       // d is a difference of values of size |γ| + |w| ≤ |γ| + 2 and of the ramp: its rounding.
       using std::abs;
       const Real noise = 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
+      // d = w − βx + k: the wave may refine the guess at reduced precision first
+      // (Waveform::coarse_ramp_root); a guess it moved out of the bracket is replaced there.
+      Real x0(guess);
+      if (g.contact && coarse_steps_pay<Real>()) w_.coarse_ramp_root(g.piece, x0, beta_, Real(gamma_ - level_ + beta_ * (a_ - (shift - a_shift_))));
       return polished_root<Real>(d_joint, [&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi, dlo, dhi,
-                                 Real(guess), noise, "stick end (Eq. 8)", stats_);
+                                 std::move(x0), noise, "stick end (Eq. 8)", stats_);
     }
   }
 

@@ -45,16 +45,27 @@ std::pair<Real, Real> sin_cos(const Real& x) {
   return {s, c};
 }
 
+// Reduced-precision steps (coarse_halley, coarse_sine_newton) pay from 500 bits: below, the first
+// would run at a third of the working precision or more, and its temporaries cost more than it
+// saves (measured 5-8% slower at 50 digits, equal at 100).
+inline constexpr long coarse_from_bits = 500;
+template <class Real>
+bool coarse_steps_pay() {
+  if constexpr (is_runtime_precision_v<Real>)
+    return boost::multiprecision::detail::digits10_2_2(mpfr::thread_default_precision()) >= coarse_from_bits;
+  else
+    return false;
+}
+
 // Halley steps on sin h = t (acos_fast) at the precision each can use: a guess with `bits`
 // correct bits comes out with about 3·bits, so a step needs 3·bits + 16, not h's precision.
 // Stops while a step at h's own precision is still to come; acos_fast's loop takes it there
 // and decides convergence. mpfr only (raw MPFR: each step's numbers at their own precision).
-// Not below 500 bits, where the first step would run at a third of h's precision or more: there
-// its temporaries cost more than it saves (measured 5-8% slower at 50 digits, even at 100).
+// From coarse_from_bits.
 inline void coarse_halley(mpfr& h, const mpfr& t) {
   const mpfr_ptr hp = h.backend().data();
   const mpfr_prec_t full = mpfr_get_prec(hp);
-  if (full < 500) return;
+  if (full < coarse_from_bits) return;
   mpfr_t x, s, c, f, num, den;
   mpfr_inits2(full, x, s, c, f, num, den, static_cast<mpfr_ptr>(nullptr));
   for (mpfr_prec_t bits = 50; 3 * bits + 16 < full; bits *= 3) {
@@ -72,6 +83,40 @@ inline void coarse_halley(mpfr& h, const mpfr& t) {
     mpfr_sub(hp, x, num, MPFR_RNDN);
   }
   mpfr_clears(x, s, c, f, num, den, static_cast<mpfr_ptr>(nullptr));
+}
+
+// Newton steps on sin 2πx − βx + k = 0 (a sine's stick end, Eq. 8, solver.hpp) at the precision
+// each can use: a guess with `bits` correct bits comes out with about 2·bits, so a step needs
+// 2·bits + 16. Stops while a step at x's own precision is still to come (the caller's Newton
+// takes it and decides convergence), and at a step not below half the one before (near a
+// tangency, where the guess is not yet in Newton's quadratic range): x then keeps the last
+// value before it. From coarse_from_bits.
+inline void coarse_sine_newton(mpfr& x, const mpfr& beta, const mpfr& k, const mpfr& two_pi) {
+  const mpfr_ptr xp = x.backend().data();
+  const mpfr_prec_t full = mpfr_get_prec(xp);
+  if (full < coarse_from_bits) return;
+  mpfr_t y, s, c, d, dd, last;
+  mpfr_inits2(full, y, s, c, d, dd, last, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_inf(last, 1);
+  for (mpfr_prec_t bits = 50; 2 * bits + 16 < full; bits *= 2) {
+    const mpfr_prec_t q = 2 * bits + 16;
+    for (mpfr_ptr v : {y, s, c, d, dd}) mpfr_set_prec(v, q);
+    mpfr_mul(y, two_pi.backend().data(), xp, MPFR_RNDN);
+    mpfr_sin_cos(s, c, y, MPFR_RNDN);
+    mpfr_mul(d, beta.backend().data(), xp, MPFR_RNDN);
+    mpfr_sub(d, s, d, MPFR_RNDN);
+    mpfr_add(d, d, k.backend().data(), MPFR_RNDN);  // sin 2πx − βx + k
+    mpfr_mul(dd, two_pi.backend().data(), c, MPFR_RNDN);
+    mpfr_sub(dd, dd, beta.backend().data(), MPFR_RNDN);  // its slope 2π cos 2πx − β
+    if (mpfr_zero_p(dd)) break;
+    mpfr_div(d, d, dd, MPFR_RNDN);  // the step
+    mpfr_abs(s, d, MPFR_RNDN);
+    mpfr_mul_2si(c, s, 1, MPFR_RNDN);
+    if (mpfr_cmp(c, last) > 0) break;
+    mpfr_set(last, s, MPFR_RNDN);
+    mpfr_sub(xp, xp, d, MPFR_RNDN);
+  }
+  mpfr_clears(y, s, c, d, dd, last, static_cast<mpfr_ptr>(nullptr));
 }
 
 // acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
@@ -148,6 +193,10 @@ class Waveform {
   // Called only when the root exists on the piece; the generic root finder is the fallback.
   virtual std::optional<Real> solve_value(std::size_t, const Real&) const { return std::nullopt; }
   virtual std::optional<Real> solve_slope(std::size_t, const Real&) const { return std::nullopt; }
+  // A guess x of the root of w(x) − βx + k on piece i (a stick end, Eq. 8), good to about 50
+  // bits, refined at reduced precision where the wave knows how (the sine in mpfr); the
+  // caller's Newton at the working precision finishes it. Default: x as it is.
+  virtual void coarse_ramp_root(std::size_t, Real&, const Real& /*beta*/, const Real& /*k*/) const {}
   // Why the current working precision cannot resolve this waveform ("" if it can): the solver's
   // rounding bounds take n' as nearly constant over a phase's rounding error.
   virtual std::string unresolved() const { return {}; }
@@ -302,6 +351,9 @@ class Sine final : public Waveform<Real> {
       case 2: return 3 * q - acos_fast(Real(-y)) / two_pi_;
       default: return 3 * q + acos_fast(Real(-y)) / two_pi_;
     }
+  }
+  void coarse_ramp_root(std::size_t, Real& x, const Real& beta, const Real& k) const override {
+    if constexpr (is_runtime_precision_v<Real>) detail::coarse_sine_newton(x, beta, k, two_pi_);
   }
   // Rising pieces only (0 and 3): the solver asks for positive slopes.
   std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
