@@ -101,6 +101,15 @@ TEST(Events, StickPhasesMpfr40) {
   PrecisionScope scope(40);
   event_phases_at_working_precision<mpfr>();
 }
+// From 500 bits the sine's stick ends and acos (contact boundaries, onsets) take their first
+// steps at reduced precision (waveform.hpp, coarse_from_bits): the same checks at 300 and 1000
+// digits, against 620 and 2020.
+TEST(Events, StickPhasesMpfr300And1000) {
+  for (unsigned digits : {300u, 1000u}) {
+    PrecisionScope scope(digits);
+    event_phases_at_working_precision<mpfr>();
+  }
+}
 
 // sin 2πφ and 2π cos 2πφ of the double sine within 4 ulp (relative) at phases 2^-j from the
 // quarters, where one of them is small: the reduction to the nearest quarter keeps them accurate.

@@ -487,9 +487,9 @@ TEST(Waveforms, ValueErrorBoundsTheEvaluationError) {
 // acos_fast (the sine's contact boundaries and onsets in mpfr; its early Halley steps at reduced
 // precision) against MPFR's own acos at four times the bits: within 4·2^−p of the result (2 to
 // 4 ulp), as Halley's last step leaves about eps/4096 and the rounding of 2h and of π − acos(−y)
-// adds an ulp each. The points reach the ends: y = ±1, and y = 1 − 10^(−digits/2) and
-// 1 − 10^(2−digits), whose √((1 − y)/2) is below double's range at 1000 and 3000 digits (the
-// guess is then 0 and the reduced-precision steps are skipped).
+// adds an ulp each. The points reach the ends: y = ±1, y = 1 − 10^(−digits/2) and
+// y = 1 − 10^(2−digits). The last's √((1 − y)/2) is below double's range at 1000 and 3000 digits,
+// as is the first's at 3000: the guess is then 0 and the reduced-precision steps are skipped.
 TEST(Waveforms, AcosFastIsMpfrsAcosToWithinFourUlp) {
   for (unsigned digits : {20u, 50u, 300u, 1000u, 3000u}) {
     PrecisionScope scope(digits);
