@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "floor.hpp"
 #include "vibrofric/core/solver.hpp"
 
 namespace vibrofric::bench {
@@ -29,6 +30,7 @@ void BM_solver(benchmark::State& state, const std::string& wave, int digits) {
   state.SetItemsProcessed(state.iterations());
   state.counters["digits"] = working_digits10<Real>();
   state.counters["inputs"] = static_cast<double>(in.size());
+  if constexpr (is_runtime_precision_v<Real>) floor_counters(state, *w, in, wave == "sine");
 }
 
 // Registers speed/<wave>/<path> for every wave.

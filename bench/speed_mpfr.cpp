@@ -1,9 +1,14 @@
 // Speed of the solver in mpfr at 50, 100, 300 and 1000 working digits (the cost-versus-digits
 // series that bench/run fits), and of the guaranteed mpfr path of evaluate.hpp (what `vibrofric mu
 // --digits D` computes: D + 10 + D/20 working digits, raised where the rounding bound asks for
-// it, correctly rounded decimal output) at 50 and 1000 digits.
+// it, correctly rounded decimal output) at 50 and 1000 digits. And the unit of the counted floor
+// (floor.hpp): one mpfr_sin_cos at each of those working precisions.
+#include <mpfr.h>
+
+#include "floor.hpp"
 #include "speed.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/ladder.hpp"
 
 namespace vibrofric::bench {
 namespace {
@@ -25,6 +30,43 @@ void BM_evaluate_mpfr(benchmark::State& state, const std::string& wave, int digi
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["digits"] = digits;
+  // Untimed: transcendental calls per point at the requested digits' precision or more, and for
+  // the sine the floor of the events at the first working precision (digits + guard digits).
+  {
+    PrecisionScope scope(static_cast<unsigned>(digits));
+    count_reset(static_cast<long>(mpfr_get_prec(mpfr(0).backend().data())));
+  }
+  for (const auto& point : in) benchmark::DoNotOptimize(evaluate(spec, Quantity::mu, point, precision, options).data());
+  const CallCount c = count_read();
+  state.counters["fp_calls"] = static_cast<double>(c.full) / static_cast<double>(in.size());
+  state.counters["reduced_calls"] = static_cast<double>(c.reduced) / static_cast<double>(in.size());
+  state.counters["working_digits"] = digits + guard_digits(digits);
+  if (wave == "sine") {
+    PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
+    const auto w = make_waveform<mpfr>(spec);
+    std::size_t floor = 0;
+    for (const Input& p : speed_inputs()) {
+      const Contact<mpfr> contact = make_contact(*w, mpfr(p.gamma));
+      floor += sine_floor_calls(contact, solve(contact, mpfr(p.beta)));
+    }
+    state.counters["floor_calls"] = static_cast<double>(floor) / static_cast<double>(in.size());
+  }
+}
+
+// One mpfr_sin_cos at `digits` working digits, on phases 2πk/17 of the period (the solver's
+// arguments lie in [0, 2π]): the unit of the counted floor.
+void BM_sin_cos(benchmark::State& state, int digits) {
+  PrecisionScope scope(static_cast<unsigned>(digits));
+  std::vector<mpfr> x;
+  for (int k = 1; k <= 16; ++k) x.push_back(2 * boost::math::constants::pi<mpfr>() * k / 17);
+  mpfr s, c;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    mpfr_sin_cos(s.backend().data(), c.backend().data(), x[i].backend().data(), MPFR_RNDN);
+    benchmark::DoNotOptimize(s.backend().data());
+    if (++i == x.size()) i = 0;
+  }
+  state.counters["digits"] = digits;
 }
 
 }  // namespace
@@ -36,6 +78,10 @@ void register_speed_mpfr() {
       const std::string name = "speed/" + wave + "/guaranteed_mpfr_" + std::to_string(digits);
       speed_settings(benchmark::RegisterBenchmark(name.c_str(), BM_evaluate_mpfr, wave, digits));
     }
+  for (int digits : {50, 100, 300, 1000, 50 + guard_digits(50), 1000 + guard_digits(1000)}) {
+    const std::string name = "floor/mpfr_sin_cos_" + std::to_string(digits);
+    speed_settings(benchmark::RegisterBenchmark(name.c_str(), BM_sin_cos, digits));
+  }
 }
 
 }  // namespace vibrofric::bench
