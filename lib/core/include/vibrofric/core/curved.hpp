@@ -186,8 +186,18 @@ class SpringRow {
   SpringValue<Real> at(const Real& g) {
     if (!(g + w_.maximum() > 0)) return {Real(0), Real(0), Real(0), Real(0)};
     ++solves;
-    const Result<Real> r = solve(make_contact(w_, g, opt_), beta_, opt_);
-    return {r.retained_area, r.normal_area, r.retained_error, r.normal_error};
+    if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<double>::digits) {
+      // Continuation: the last spring's stick ends guess this one's (EventPass takes a guess only
+      // inside a stick end's bracket, where Newton cannot leave the root; double only, see
+      // EventPass::stick_end_root for the wider types).
+      const Result<Real> r = detail::solve_near(make_contact(w_, g, opt_), beta_, opt_, ends_);
+      ends_.clear();
+      for (const auto& st : r.stick_phases) ends_.push_back(st.end);
+      return {r.retained_area, r.normal_area, r.retained_error, r.normal_error};
+    } else {
+      const Result<Real> r = solve(make_contact(w_, g, opt_), beta_, opt_);
+      return {r.retained_area, r.normal_area, r.retained_error, r.normal_error};
+    }
   }
   Result<Real> result(const Real& g) {
     ++solves;
@@ -203,6 +213,7 @@ class SpringRow {
   Real beta_;
   Options opt_;
   RootStats stats_;
+  std::vector<Real> ends_;  // the last spring's stick ends (continuation)
 };
 
 // A piecewise-linear wave (triangle, sawtooth, square, samples): between two γ' breakpoints every

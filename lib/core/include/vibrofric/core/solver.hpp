@@ -199,8 +199,13 @@ boost::math::quadrature::tanh_sinh<Real>& integrator(std::size_t levels) {
 template <class Real>
 class EventPass {
  public:
-  EventPass(const Contact<Real>& contact, const Real& beta, const Options& opt)
-      : c_(contact), w_(contact.wave()), beta_(beta), gamma_(contact.gamma()), opt_(opt) {
+  // `guesses`: phases near which stick ends are expected (a neighbouring spring's, curved.hpp);
+  // used in double only, where they replace toms748 from the whole bracket by Newton within it.
+  // (Long double's guess comes from toms748 in double: started from a neighbour's end instead,
+  // the long double solve took 1.25 times as long, sphere + sine at β = 1, γ = −0.3.)
+  EventPass(const Contact<Real>& contact, const Real& beta, const Options& opt,
+            const std::vector<Real>* guesses = nullptr)
+      : c_(contact), w_(contact.wave()), beta_(beta), gamma_(contact.gamma()), opt_(opt), guesses_(guesses) {
     const Waveform<Real>& w = w_;
     stats_.max_iterations = root_budget<Real>(opt);
     method_ = opt.area;
@@ -420,12 +425,33 @@ class EventPass {
 
   // Eq. 8 on [lo, hi] where d = n − ramp changes sign monotonically: a double-precision root
   // from the waveform's shadow, then Newton at the working precision (or toms748 for types no
-  // wider than double, where the guess is already the answer's precision). long double takes
+  // wider than double, where the guess is already the answer's precision; Newton there from a
+  // neighbouring spring's end inside the bracket, 0.76–0.82 of the instructions of a curved solve). long double takes
   // the Newton path too: from the double guess it needs fewer x87 sin-cos evaluations than
   // toms748 from the bracket (measured: the long double sine solve 2.97 -> 1.80 us).
   Real stick_end_root(const Segment& g, const Real& shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
     auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
+    // Newton asks for d and d' at the same phase: evaluate n and n' together, remember both.
+    auto d_joint = [&](const Real& x) -> Real {
+      if (!g.contact || n_memo_.find(g.piece, x)) return d(x);
+      auto [v, sl] = w_.value_and_slope(g.piece, x);
+      evaluations_ += 2;
+      n_memo_.put(g.piece, x, gamma_ + v);
+      dn_memo_.put(g.piece, x, std::move(sl));
+      return d(x);
+    };
+    // d is a difference of values of size |γ| + |w| ≤ |γ| + 2 and of the ramp: its rounding.
+    using std::abs;
+    const Real noise = 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
     if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<double>::digits) {
+      // A guess inside the bracket: Newton, safeguarded by the bracket (d changes sign on it
+      // monotonically, so the root it converges to is this stick's end, whatever the guess).
+      if (guesses_ && g.contact)
+        for (const Real& e : *guesses_)
+          for (const Real x : {e, Real(e - 1)})
+            if (x > lo && x < hi)
+              return polished_root<Real>(d_joint, [&](const Real& y) -> Real { return dn(g, y) - beta_; }, lo, hi, dlo,
+                                         dhi, x, noise, "stick end (Eq. 8)", stats_);
       return bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
     } else {
       const double g_ = static_cast<double>(gamma_), b_ = static_cast<double>(beta_);
@@ -439,18 +465,6 @@ class EventPass {
         const auto r = boost::math::tools::toms748_solve(dd, l, h, fl, fh, boost::math::tools::eps_tolerance<double>(), it);
         guess = (r.first + r.second) / 2;
       }
-      // Newton asks for d and d' at the same phase: evaluate n and n' together, remember both.
-      auto d_joint = [&](const Real& x) -> Real {
-        if (!g.contact || n_memo_.find(g.piece, x)) return d(x);
-        auto [v, sl] = w_.value_and_slope(g.piece, x);
-        evaluations_ += 2;
-        n_memo_.put(g.piece, x, gamma_ + v);
-        dn_memo_.put(g.piece, x, std::move(sl));
-        return d(x);
-      };
-      // d is a difference of values of size |γ| + |w| ≤ |γ| + 2 and of the ramp: its rounding.
-      using std::abs;
-      const Real noise = 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
       // d = w − βx + k: the wave may refine the guess at reduced precision first
       // (Waveform::coarse_ramp_root); a guess it moved out of the bracket is replaced there.
       Real x0(guess);
@@ -593,6 +607,7 @@ class EventPass {
   const Waveform<Real>& w_;
   Real beta_, gamma_;
   Options opt_;
+  const std::vector<Real>* guesses_;
   AreaMethod method_;
   RootStats stats_;
   bool sticking_ = false;
@@ -661,6 +676,20 @@ Result<Real> solve(const Contact<Real>& contact, const Real& beta, const Options
     throw SolverError(detail::context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
   }
 }
+
+namespace detail {
+// solve() with guesses of the stick ends (EventPass; a spring row's neighbour, curved.hpp).
+template <class Real>
+Result<Real> solve_near(const Contact<Real>& contact, const Real& beta, const Options& opt,
+                        const std::vector<Real>& guesses) {
+  check_beta(contact.wave(), beta);
+  try {
+    return EventPass<Real>(contact, beta, opt, &guesses).run();
+  } catch (const SolverError& e) {
+    throw SolverError(context(contact.wave(), beta, &contact.gamma()) + ": " + e.what());
+  }
+}
+}  // namespace detail
 
 // The same from (w, β, γ): make_contact's checks on γ, then solve.
 template <class Real>
