@@ -4,6 +4,12 @@
 #include "floor.hpp"
 
 #include <mpfr.h>
+#include <time.h>
+
+#include <boost/math/constants/constants.hpp>
+#include <vector>
+
+extern "C" int __real_mpfr_sin_cos(mpfr_ptr, mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
 
 namespace vibrofric::bench {
 namespace {
@@ -22,6 +28,29 @@ void seen(mpfr_srcptr result) {
 
 void count_reset(long bits) { counter = Counter{bits, {}}; }
 CallCount count_read() { return counter.count; }
+
+double thread_cpu_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
+}
+
+std::vector<mpfr> sin_cos_phases() {
+  std::vector<mpfr> x;
+  for (int k = 1; k <= 16; ++k) x.push_back(2 * boost::math::constants::pi<mpfr>() * k / 17);
+  return x;
+}
+
+double time_sin_cos(std::size_t calls) {
+  const std::vector<mpfr> x = sin_cos_phases();
+  mpfr s, c;
+  const double t0 = thread_cpu_ns();
+  for (std::size_t i = 0; i < calls; ++i) {
+    __real_mpfr_sin_cos(s.backend().data(), c.backend().data(), x[i % x.size()].backend().data(), MPFR_RNDN);
+    benchmark::DoNotOptimize(s.backend().data());
+  }
+  return (thread_cpu_ns() - t0) / static_cast<double>(calls);
+}
 
 }  // namespace vibrofric::bench
 

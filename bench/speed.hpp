@@ -30,7 +30,7 @@ void BM_solver(benchmark::State& state, const std::string& wave, int digits) {
   state.SetItemsProcessed(state.iterations());
   state.counters["digits"] = working_digits10<Real>();
   state.counters["inputs"] = static_cast<double>(in.size());
-  if constexpr (is_runtime_precision_v<Real>) floor_counters(state, *w, in, wave == "sine");
+  if constexpr (is_runtime_precision_v<Real>) floor_counters(state, *w, in, wave == "sine", digits);
 }
 
 // Registers speed/<wave>/<path> for every wave.

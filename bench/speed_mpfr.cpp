@@ -42,23 +42,28 @@ void BM_evaluate_mpfr(benchmark::State& state, const std::string& wave, int digi
   state.counters["reduced_calls"] = static_cast<double>(c.reduced) / static_cast<double>(in.size());
   state.counters["working_digits"] = digits + guard_digits(digits);
   if (wave == "sine") {
-    PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
-    const auto w = make_waveform<mpfr>(spec);
-    std::size_t floor = 0;
-    for (const Input& p : speed_inputs()) {
-      const Contact<mpfr> contact = make_contact(*w, mpfr(p.gamma));
-      floor += sine_floor_calls(contact, solve(contact, mpfr(p.beta)));
+    const int working = digits + guard_digits(digits);
+    double floor;
+    {
+      PrecisionScope scope(static_cast<unsigned>(working));
+      const auto w = make_waveform<mpfr>(spec);
+      std::vector<std::pair<mpfr, mpfr>> exact;
+      for (const Input& p : speed_inputs()) exact.emplace_back(mpfr(p.beta), mpfr(p.gamma));
+      floor = mean_sine_floor(*w, exact);
     }
-    state.counters["floor_calls"] = static_cast<double>(floor) / static_cast<double>(in.size());
+    state.counters["floor_calls"] = floor;
+    interleaved_floor(
+        state, [&] {
+          for (const auto& point : in) benchmark::DoNotOptimize(evaluate(spec, Quantity::mu, point, precision, options).data());
+        },
+        in.size(), floor, working);
   }
 }
 
-// One mpfr_sin_cos at `digits` working digits, on phases 2πk/17 of the period (the solver's
-// arguments lie in [0, 2π]): the unit of the counted floor.
+// One mpfr_sin_cos at `digits` working digits, on sin_cos_phases(): the unit of the counted floor.
 void BM_sin_cos(benchmark::State& state, int digits) {
   PrecisionScope scope(static_cast<unsigned>(digits));
-  std::vector<mpfr> x;
-  for (int k = 1; k <= 16; ++k) x.push_back(2 * boost::math::constants::pi<mpfr>() * k / 17);
+  const std::vector<mpfr> x = sin_cos_phases();
   mpfr s, c;
   std::size_t i = 0;
   for (auto _ : state) {

@@ -423,12 +423,12 @@ class EventPass {
     return true;
   }
 
-  // Eq. 8 on [lo, hi] where d = n − ramp changes sign monotonically: a double-precision root
-  // from the waveform's shadow, then Newton at the working precision (or toms748 for types no
-  // wider than double, where the guess is already the answer's precision; Newton there from a
-  // neighbouring spring's end inside the bracket, 0.76–0.82 of the instructions of a curved solve). long double takes
-  // the Newton path too: from the double guess it needs fewer x87 sin-cos evaluations than
-  // toms748 from the bracket (measured: the long double sine solve 2.97 -> 1.80 us).
+  // Eq. 8 on [lo, hi] where d = n − ramp changes sign monotonically.
+  // - Types no wider than double: toms748 on the bracket, or Newton from a neighbouring spring's
+  //   end inside it (the curved row's continuation: 0.76–0.82 of a curved solve's instructions).
+  // - Wider types: a double root from the waveform's shadow, then Newton at the working
+  //   precision. long double too: from the double guess it needs fewer x87 sin-cos evaluations
+  //   than toms748 from the bracket (measured: the long double sine solve 2.97 -> 1.80 us).
   Real stick_end_root(const Segment& g, const Real& shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
     auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
     // Newton asks for d and d' at the same phase: evaluate n and n' together, remember both.
@@ -441,8 +441,10 @@ class EventPass {
       return d(x);
     };
     // d is a difference of values of size |γ| + |w| ≤ |γ| + 2 and of the ramp: its rounding.
-    using std::abs;
-    const Real noise = 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
+    auto noise = [&]() -> Real {
+      using std::abs;
+      return 8 * std::numeric_limits<Real>::epsilon() * (abs(gamma_) + 2 + abs(level_) + beta_);
+    };
     if constexpr (std::numeric_limits<Real>::digits <= std::numeric_limits<double>::digits) {
       // A guess inside the bracket: Newton, safeguarded by the bracket (d changes sign on it
       // monotonically, so the root it converges to is this stick's end, whatever the guess).
@@ -451,7 +453,7 @@ class EventPass {
           for (const Real x : {e, Real(e - 1)})
             if (x > lo && x < hi)
               return polished_root<Real>(d_joint, [&](const Real& y) -> Real { return dn(g, y) - beta_; }, lo, hi, dlo,
-                                         dhi, x, noise, "stick end (Eq. 8)", stats_);
+                                         dhi, x, noise(), "stick end (Eq. 8)", stats_);
       return bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
     } else {
       const double g_ = static_cast<double>(gamma_), b_ = static_cast<double>(beta_);
@@ -470,7 +472,7 @@ class EventPass {
       Real x0(guess);
       if (g.contact && coarse_steps_pay<Real>()) w_.coarse_ramp_root(g.piece, x0, beta_, Real(gamma_ - level_ + beta_ * (a_ - (shift - a_shift_))));
       return polished_root<Real>(d_joint, [&](const Real& x) -> Real { return dn(g, x) - beta_; }, lo, hi, dlo, dhi,
-                                 std::move(x0), noise, "stick end (Eq. 8)", stats_);
+                                 std::move(x0), noise(), "stick end (Eq. 8)", stats_);
     }
   }
 
