@@ -25,17 +25,18 @@ struct CallCount {
 void count_reset(long bits);
 CallCount count_read();
 
-// Full-precision transcendental calls that the events of one sine point need at the least, with
-// the solver's rounding analysis as it is (paper Eqs. 4 and 8; model.md, the waveform catalogue):
-// one per contact boundary (the last step of its inverse, w = −γ), one per onset by Eq. 4 (n' = β,
-// a stick with level > 0; a stick from first contact starts at a boundary), and two per stick end
-// by Eq. 8 (the last Newton step and the value of n at the root, which the rounding bound
-// evaluates rather than infers from the ramp). n' and the antiderivative at these phases are
-// algebraic in the sine and cosine the same calls give.
+// Full-precision transcendental calls that the events of one sine point need at the least (paper
+// Eqs. 4 and 8; model.md, the waveform catalogue): one per event phase, a contact boundary, an
+// onset by Eq. 4 (n' = β, a stick with level > 0; a stick from first contact starts at a
+// boundary) and a stick end by Eq. 8. Each phase is a new transcendental number, and its sine
+// and cosine come from no other event's. The steps of its root finding, n' and the
+// antiderivative there, and the value of n at the root that the rounding bound evaluates are all
+// within reach of that one call (waveform.hpp, TrigAnchor: Taylor from it, decided by
+// mpfr_can_round).
 template <class Real>
 std::size_t sine_floor_calls(const Contact<Real>& contact, const Result<Real>& r) {
   std::size_t calls = contact.boundaries();
-  for (const auto& st : r.stick_phases) calls += (st.level > 0 ? 1 : 0) + 2;
+  for (const auto& st : r.stick_phases) calls += (st.level > 0 ? 1 : 0) + 1;
   return calls;
 }
 

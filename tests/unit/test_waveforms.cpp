@@ -518,4 +518,85 @@ TEST(Waveforms, AcosFastIsMpfrsAcosToWithinFourUlp) {
   }
 }
 
+// The sine's trig anchor (mpfr): one MPFR sin_cos at an anchor h, at 64 bits more, gives sin and
+// cos near h and near ±2h + jπ/2 by Taylor and a rotation, rounded only where mpfr_can_round
+// decides. Every value it gives must be MPFR's own sin_cos at the working precision, bit for bit
+// (the reference: mpfr_sin_cos itself); it must decide nearly always (a refusal costs the call),
+// and refuse a phase too far from its anchor for its Taylor terms.
+TEST(Waveforms, TrigAnchorGivesMpfrsSinCosBitForBit) {
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (unsigned digits : {20u, 50u, 300u, 1000u}) {
+    PrecisionScope scope(digits);
+    const mpfr_prec_t p = mpfr_get_prec(mpfr(1).backend().data());
+    const mpfr half_pi = boost::math::constants::half_pi<mpfr>();
+    int tried = 0, decided = 0;
+    for (int trial = 0; trial < 100; ++trial) {
+      // h in (0, π/4] with all p bits in use.
+      mpfr h = mpfr(unit(rng)) * boost::math::constants::pi<mpfr>() / 4;
+      h += ldexp(mpfr(unit(rng)), -60) * h;
+      detail::TrigAnchor anchor;
+      anchor.set(h.backend().data());
+      for (int k = 0; k < 4; ++k) {
+        // |δ| from 2^−17 down to below h's last bit.
+        const int e = 17 + static_cast<int>(unit(rng) * static_cast<double>(p));
+        const mpfr delta = ldexp(mpfr(unit(rng) - 0.5), -e);
+        const int j = static_cast<int>(unit(rng) * 5) - 2, sigma = unit(rng) < 0.5 ? -1 : 1;
+        for (int near_2h = 0; near_2h < 2; ++near_2h) {
+          const mpfr x = near_2h ? mpfr(sigma * 2 * h + j * half_pi + delta) : mpfr(h + delta);
+          mpfr s, c, rs, rc;
+          mpfr_sin_cos(rs.backend().data(), rc.backend().data(), x.backend().data(), MPFR_RNDN);
+          const bool ok = near_2h ? anchor.near_twice(x.backend().data(), s.backend().data(), c.backend().data())
+                                  : anchor.near(x.backend().data(), s.backend().data(), c.backend().data());
+          ++tried;
+          if (!ok) continue;
+          ++decided;
+          EXPECT_TRUE(mpfr_equal_p(s.backend().data(), rs.backend().data()) && mpfr_equal_p(c.backend().data(), rc.backend().data()))
+              << digits << " digits, x = " << x.str(40) << (near_2h ? " near 2h" : " near h") << ": sin " << s.str(40)
+              << " against " << rs.str(40);
+        }
+      }
+      mpfr s, c;
+      EXPECT_FALSE(anchor.near(mpfr(h + ldexp(mpfr(1), -10)).backend().data(), s.backend().data(), c.backend().data()));
+    }
+    EXPECT_GE(decided, tried * 99 / 100) << digits << " digits";
+    std::printf("%u digits: %d of %d decided by the anchor\n", digits, decided, tried);
+  }
+}
+
+// The sine's contact boundaries and onsets in mpfr take their sine and cosine from acos's anchor
+// (primed into the trig cache): the value and slope there are those of MPFR's sin_cos of the
+// reduced argument, bit for bit, as the phase's own call gives them (computed here from the
+// definition: φ = k/4 + r, 2πr at the working precision, k quarter turns).
+TEST(Waveforms, SineBoundaryAndOnsetTrigIsTheCallsBits) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (unsigned digits : {50u, 1000u}) {
+    PrecisionScope scope(digits);
+    const auto w = make_waveform<mpfr>(parse_wave("sine"));
+    const mpfr two_pi = boost::math::constants::two_pi<mpfr>();
+    auto reference = [&](const mpfr& phi) {
+      const long k = static_cast<long>(floor(4 * phi + mpfr(1) / 2));
+      const mpfr arg = two_pi * (phi - mpfr(k) / 4);
+      mpfr s, c;
+      mpfr_sin_cos(s.backend().data(), c.backend().data(), arg.backend().data(), MPFR_RNDN);
+      const long q = ((k % 4) + 4) % 4;
+      return q == 0 ? std::pair{s, c} : q == 1 ? std::pair{c, mpfr(-s)} : q == 2 ? std::pair{mpfr(-s), mpfr(-c)} : std::pair{mpfr(-c), s};
+    };
+    auto expect_same = [&](std::size_t i, const mpfr& phi, const char* what) {
+      const auto [v, sl] = w->value_and_slope(i, phi);
+      const auto [s, c] = reference(phi);
+      EXPECT_TRUE(mpfr_equal_p(v.backend().data(), s.backend().data())) << digits << " digits, " << what << " at " << phi.str(30);
+      EXPECT_TRUE(mpfr_equal_p(sl.backend().data(), mpfr(two_pi * c).backend().data()))
+          << digits << " digits, " << what << " at " << phi.str(30);
+    };
+    for (int trial = 0; trial < 20; ++trial) {
+      const mpfr y = mpfr(2 * unit(rng) - 1) + ldexp(mpfr(unit(rng)), -70);
+      for (std::size_t i = 0; i < 4; ++i) expect_same(i, *w->solve_value(i, y), "boundary");
+      const mpfr b = mpfr(unit(rng)) * two_pi;
+      for (std::size_t i : {std::size_t(0), std::size_t(3)}) expect_same(i, *w->solve_slope(i, b), "onset");
+    }
+  }
+}
+
 }  // namespace

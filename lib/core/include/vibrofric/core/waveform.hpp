@@ -9,6 +9,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -119,12 +120,150 @@ inline void coarse_sine_newton(mpfr& x, const mpfr& beta, const mpfr& k, const m
   mpfr_clears(y, s, c, d, dd, last, static_cast<mpfr_ptr>(nullptr));
 }
 
+// Sine and cosine near an anchor (mpfr). One MPFR sin_cos at an anchor phase θ, taken at
+// trig_guard_bits above the working precision p, gives those of any phase x = σθ + jπ/2 + δ
+// (σ = ±1, j an integer, |δ| small) by Taylor of δ and a rotation. They are rounded to p bits
+// only where mpfr_can_round decides the correctly rounded value, so a result is MPFR's own
+// sin_cos at x, bit for bit, or there is none and the caller makes the call. acos_fast anchors
+// at its first full-precision Halley iterate h: its later iterates are near h, and the sine's
+// contact boundary and onset (Eq. 4), whose 2π-phase is jπ/2 ± 2h, near 2h.
+inline constexpr mpfr_prec_t trig_guard_bits = 64;
+
+// x = σθ + jπ/2 + δ with the σ and |j| ≤ 4 that make |δ| least; sin x and cos x to the precision of
+// s and c from S ≈ sin θ, C ≈ cos θ within err·2^−P absolute (P = prec(S) ≥ prec(x), prec(s) + 32).
+// The error of the result before rounding, absolute (every value is at most 1 in size):
+//  - the anchor's, err·(|cos δ| + |sin δ|) ≤ 1.5·err;
+//  - δ's: π/2 at P bits and j·π/2 (8·2^−P), x − σθ (2·2^−P);
+//  - Taylor's (terms to 2^−(P+4), each rounded) and the rotation's fmma: 2·2^−P.
+// That is at most (1.5·err + 12)·2^−P, below 2^(6−P) for err ≤ 4 (the bound used).
+inline bool sin_cos_near(mpfr_srcptr x, mpfr_srcptr theta, mpfr_srcptr S, mpfr_srcptr C, int err, mpfr_ptr s,
+                         mpfr_ptr c) {
+  const mpfr_prec_t P = mpfr_get_prec(S), p = std::max(mpfr_get_prec(s), mpfr_get_prec(c));
+  if (err > 4 || P < p + 32 || mpfr_get_prec(x) > P) return false;
+  mpfr_t hp, d, best, t, sd, cd, u, v;
+  mpfr_inits2(P, hp, d, best, t, sd, cd, u, v, static_cast<mpfr_ptr>(nullptr));
+  struct Clear {
+    mpfr_ptr a[8];
+    ~Clear() {
+      for (mpfr_ptr z : a) mpfr_clear(z);
+    }
+  } clear{{hp, d, best, t, sd, cd, u, v}};
+  mpfr_const_pi(hp, MPFR_RNDN);
+  mpfr_div_2ui(hp, hp, 1, MPFR_RNDN);
+  int sigma = 0;
+  long j = 0;
+  for (int sg : {1, -1}) {
+    (sg > 0 ? mpfr_sub : mpfr_add)(d, x, theta, MPFR_RNDN);
+    const double q = std::nearbyint(mpfr_get_d(d, MPFR_RNDN) / mpfr_get_d(hp, MPFR_RNDN));
+    if (!(std::abs(q) <= 4)) continue;
+    mpfr_mul_si(t, hp, static_cast<long>(q), MPFR_RNDN);
+    mpfr_sub(d, d, t, MPFR_RNDN);
+    if (sigma == 0 || mpfr_cmpabs(d, best) < 0) {
+      mpfr_swap(d, best);
+      sigma = sg;
+      j = static_cast<long>(q);
+    }
+  }
+  if (sigma == 0 || (!mpfr_zero_p(best) && mpfr_get_exp(best) > -16)) return false;
+  // sin δ and cos δ: Taylor to terms below 2^−(P+4) (at most 2^−16 each step, so few terms).
+  mpfr_set(sd, best, MPFR_RNDN);
+  mpfr_set_ui(cd, 1, MPFR_RNDN);
+  mpfr_set(t, best, MPFR_RNDN);
+  for (unsigned long n = 2; !mpfr_zero_p(t); ++n) {
+    mpfr_mul(t, t, best, MPFR_RNDN);
+    mpfr_div_ui(t, t, n, MPFR_RNDN);
+    if (mpfr_zero_p(t) || mpfr_get_exp(t) < -(P + 4)) break;
+    switch (n % 4) {
+      case 2: mpfr_sub(cd, cd, t, MPFR_RNDN); break;
+      case 3: mpfr_sub(sd, sd, t, MPFR_RNDN); break;
+      case 0: mpfr_add(cd, cd, t, MPFR_RNDN); break;
+      default: mpfr_add(sd, sd, t, MPFR_RNDN); break;
+    }
+  }
+  // sin(σθ + δ) = σS cos δ + C sin δ, cos(σθ + δ) = C cos δ − σS sin δ.
+  if (sigma > 0) {
+    mpfr_fmma(u, S, cd, C, sd, MPFR_RNDN);
+    mpfr_fmms(v, C, cd, S, sd, MPFR_RNDN);
+  } else {
+    mpfr_fmms(u, C, sd, S, cd, MPFR_RNDN);
+    mpfr_fmma(v, C, cd, S, sd, MPFR_RNDN);
+  }
+  // Then j quarter turns.
+  switch (((j % 4) + 4) % 4) {
+    case 1: mpfr_swap(u, v); mpfr_neg(v, v, MPFR_RNDN); break;
+    case 2: mpfr_neg(u, u, MPFR_RNDN); mpfr_neg(v, v, MPFR_RNDN); break;
+    case 3: mpfr_swap(u, v); mpfr_neg(u, u, MPFR_RNDN); break;
+    default: break;
+  }
+  for (mpfr_srcptr z : {static_cast<mpfr_srcptr>(u), static_cast<mpfr_srcptr>(v)}) {
+    if (mpfr_zero_p(z)) return false;
+    const mpfr_exp_t bits = mpfr_get_exp(z) + P - 6;
+    if (bits <= 0 || !mpfr_can_round(z, bits, MPFR_RNDN, MPFR_RNDZ, (z == u ? mpfr_get_prec(s) : mpfr_get_prec(c)) + 1))
+      return false;
+  }
+  mpfr_set(s, u, MPFR_RNDN);
+  mpfr_set(c, v, MPFR_RNDN);
+  return true;
+}
+
+// The anchor of acos_fast's Halley loop (mpfr): its first full-precision iterate h and the sine
+// and cosine of h at trig_guard_bits more (from one MPFR call). Empty until set; costs nothing
+// for the other types, which never set it.
+class TrigAnchor {
+ public:
+  TrigAnchor() = default;
+  TrigAnchor(const TrigAnchor&) = delete;
+  TrigAnchor& operator=(const TrigAnchor&) = delete;
+  ~TrigAnchor() {
+    if (set_) mpfr_clears(h_, s_, c_, static_cast<mpfr_ptr>(nullptr));
+  }
+  bool empty() const { return !set_; }
+  void set(mpfr_srcptr h) {
+    if (!set_) {
+      mpfr_init2(h_, mpfr_get_prec(h));
+      mpfr_inits2(mpfr_get_prec(h) + trig_guard_bits, s_, c_, static_cast<mpfr_ptr>(nullptr));
+      set_ = true;
+    }
+    mpfr_set_prec(h_, mpfr_get_prec(h));
+    mpfr_set(h_, h, MPFR_RNDN);  // exact
+    mpfr_set_prec(s_, mpfr_get_prec(h) + trig_guard_bits);
+    mpfr_set_prec(c_, mpfr_get_prec(h) + trig_guard_bits);
+    mpfr_sin_cos(s_, c_, h_, MPFR_RNDN);
+  }
+  // sin x, cos x near ±h + jπ/2 (a later Halley iterate; a later phase of the sine's trig).
+  bool near(mpfr_srcptr x, mpfr_ptr s, mpfr_ptr c) const { return set_ && sin_cos_near(x, h_, s_, c_, 1, s, c); }
+  // sin x, cos x near ±2h + jπ/2 (the acos 2h, and π − 2h): from sin 2h = 2SC, cos 2h = 1 − 2S²
+  // (each within 4·2^−P: the anchor's half ulps doubled, and the products' roundings).
+  bool near_twice(mpfr_srcptr x, mpfr_ptr s, mpfr_ptr c) const {
+    if (!set_) return false;
+    const mpfr_prec_t P = mpfr_get_prec(s_);
+    mpfr_t h2, s2, c2;
+    mpfr_init2(h2, mpfr_get_prec(h_));
+    mpfr_inits2(P, s2, c2, static_cast<mpfr_ptr>(nullptr));
+    mpfr_mul_2ui(h2, h_, 1, MPFR_RNDN);  // exact
+    mpfr_mul(s2, s_, c_, MPFR_RNDN);
+    mpfr_mul_2ui(s2, s2, 1, MPFR_RNDN);
+    mpfr_sqr(c2, s_, MPFR_RNDN);
+    mpfr_mul_2ui(c2, c2, 1, MPFR_RNDN);
+    mpfr_ui_sub(c2, 1, c2, MPFR_RNDN);
+    const bool ok = sin_cos_near(x, h2, s2, c2, 4, s, c);
+    mpfr_clears(h2, s2, c2, static_cast<mpfr_ptr>(nullptr));
+    return ok;
+  }
+
+ private:
+  bool set_ = false;
+  mpfr_t h_, s_, c_;
+};
+
 // acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
 // from a double guess (two steps to 100 digits; θ/2 ≤ π/4 keeps it well conditioned, and small
 // θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos. In
-// mpfr the steps before the last run at reduced precision (coarse_halley).
+// mpfr the steps before the last run at reduced precision (coarse_halley), and one sin_cos at
+// the first full-precision iterate serves the later ones (TrigAnchor); `anchor`, if given,
+// keeps it for the caller.
 template <class Real>
-Real acos_fast(const Real& y) {
+Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
   using std::acos;
   if constexpr (!wider_than_hardware_v<Real>) {
     return acos(y);
@@ -132,7 +271,7 @@ Real acos_fast(const Real& y) {
     using std::abs;
     using std::cbrt;
     using std::sqrt;
-    if (y < 0) return boost::math::constants::pi<Real>() - acos_fast(Real(-y));
+    if (y < 0) return boost::math::constants::pi<Real>() - acos_fast(Real(-y), anchor);
     if (y >= 1) return Real(0);
     const Real t = sqrt((1 - y) / 2);
     Real h = std::asin(static_cast<double>(t));
@@ -140,8 +279,16 @@ Real acos_fast(const Real& y) {
     if constexpr (is_runtime_precision_v<Real>)
       if (h != 0) coarse_halley(h, t);
     const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
+    [[maybe_unused]] TrigAnchor own;
     for (int it = 0; it < 64; ++it) {
-      const auto [sh, ch] = sin_cos(h);
+      Real sh, ch;
+      if constexpr (is_runtime_precision_v<Real>) {
+        TrigAnchor& a = anchor ? *anchor : own;
+        if (a.empty()) a.set(h.backend().data());
+        if (!a.near(h.backend().data(), sh.backend().data(), ch.backend().data())) std::tie(sh, ch) = sin_cos(h);
+      } else {
+        std::tie(sh, ch) = sin_cos(h);
+      }
       const Real f = sh - t;
       if (f == 0) break;
       // Halley: Δ = 2 f f' / (2 f'² − f f''), with f' = cos h, f'' = −sin h.
@@ -342,26 +489,32 @@ class Sine final : public Waveform<Real> {
   bool has_antiderivative() const override { return true; }
   Real antiderivative(std::size_t, const Real& phi) const override { return -trig(phi).second / two_pi_; }
   // acos keeps the distance from the nearest extremum accurate (the contact width near γ = −1).
+  // In mpfr the boundary's sine and cosine come from acos's own anchor (primed into trig's cache).
   std::optional<Real> solve_value(std::size_t i, const Real& y) const override {
-    using detail::acos_fast;
+    detail::TrigAnchor anchor;
+    auto acos = [&](const Real& v) { return detail::acos_fast(v, is_runtime_precision_v<Real> ? &anchor : nullptr); };
     const Real q = Real(1) / 4;
+    Real phase;
     switch (i) {
-      case 0: return q - acos_fast(y) / two_pi_;
-      case 1: return q + acos_fast(y) / two_pi_;
-      case 2: return 3 * q - acos_fast(Real(-y)) / two_pi_;
-      default: return 3 * q + acos_fast(Real(-y)) / two_pi_;
+      case 0: phase = q - acos(y) / two_pi_; break;
+      case 1: phase = q + acos(y) / two_pi_; break;
+      case 2: phase = 3 * q - acos(Real(-y)) / two_pi_; break;
+      default: phase = 3 * q + acos(Real(-y)) / two_pi_; break;
     }
+    prime(phase, anchor);
+    return phase;
   }
   void coarse_ramp_root(std::size_t, Real& x, const Real& beta, const Real& k) const override {
     if constexpr (is_runtime_precision_v<Real>) detail::coarse_sine_newton(x, beta, k, two_pi_);
   }
   // Rising pieces only (0 and 3): the solver asks for positive slopes.
   std::optional<Real> solve_slope(std::size_t i, const Real& b) const override {
-    using detail::acos_fast;
-    const Real c = b / two_pi_;
-    if (i == 0) return acos_fast(c) / two_pi_;
-    if (i == 3) return 1 - acos_fast(c) / two_pi_;
-    return std::nullopt;
+    if (i != 0 && i != 3) return std::nullopt;
+    detail::TrigAnchor anchor;
+    const Real a = detail::acos_fast(Real(b / two_pi_), is_runtime_precision_v<Real> ? &anchor : nullptr);
+    const Real phase = i == 0 ? Real(a / two_pi_) : Real(1 - a / two_pi_);
+    prime(phase, anchor);
+    return phase;
   }
 
  private:
@@ -370,28 +523,48 @@ class Sine final : public Waveform<Real> {
   // sin and cos 2πφ of the last phases asked for on this thread (at this precision): value,
   // slope and antiderivative at one event then cost one sin_cos. Every Sine is the same
   // function, so the cache needs no owner.
-  const std::pair<Real, Real>& trig(const Real& phi) const {
+  struct TrigCache {
     struct Entry {
       int digits = -1;
       Real phi;
       std::pair<Real, Real> sc;
     };
-    thread_local Entry last[4];
-    thread_local int next = 0;
-    const int d = working_digits10<Real>();
-    for (const Entry& e : last)
-      if (e.digits == d && e.phi == phi) return e.sc;
-    Entry& e = last[next];
-    next = (next + 1) % 4;
-    e.digits = d;
-    e.phi = phi;
-    e.sc = sin_cos_2pi(phi);
-    return e.sc;
+    Entry last[4];
+    int next = 0;
+    std::pair<Real, Real>& put(const Real& phi) {
+      Entry& e = last[next];
+      next = (next + 1) % 4;
+      e.digits = working_digits10<Real>();
+      e.phi = phi;
+      return e.sc;
+    }
+  };
+  static TrigCache& cache() {
+    thread_local TrigCache c;
+    return c;
   }
-  // sin 2πφ and cos 2πφ from the nearest quarter period: φ = k/4 + r, |r| ≤ 1/8, r exact
-  // (Sterbenz). Exact at the quarters, accurate near the extrema, and it spares MPFR the
-  // hard-to-round arguments next to multiples of π/2.
-  std::pair<Real, Real> sin_cos_2pi(const Real& phi) const {
+  const std::pair<Real, Real>& trig(const Real& phi) const {
+    TrigCache& cc = cache();
+    const int d = working_digits10<Real>();
+    for (const auto& e : cc.last)
+      if (e.digits == d && e.phi == phi) return e.sc;
+    auto& sc = cc.put(phi);
+    sc = sin_cos_2pi(phi);
+    return sc;
+  }
+  // mpfr: the last argument whose sin_cos was called, as an anchor (TrigAnchor) for the next ones.
+  // A Newton iteration's phases (a stick end, Eq. 8) and the value at its root are near each
+  // other: one call at 64 bits more, the rest by Taylor, each decided by mpfr_can_round.
+  struct ArgAnchor {
+    mpfr_prec_t bits = 0;
+    detail::TrigAnchor a;
+  };
+  static ArgAnchor& arg_anchor() {
+    thread_local ArgAnchor a;
+    return a;
+  }
+  // φ = k/4 + r with |r| ≤ 1/8 and r exact (Sterbenz); returns k, and 2πr in `arg`.
+  static long quarter_split(const Real& phi, const Real& two_pi, Real& arg) {
     using std::floor;
     long k;
     if constexpr (std::is_floating_point_v<Real>) {
@@ -406,15 +579,52 @@ class Sine final : public Waveform<Real> {
       k = static_cast<long>(floor(4 * phi + Real(1) / 2));
     }
     const Real r = phi - Real(k) / 4;
+    arg = r == 0 ? Real(0) : Real(two_pi * r);
+    return k;
+  }
+  // sin and cos of 2πr rotated by k quarter turns: those of 2πφ.
+  static std::pair<Real, Real> quarter_turns(long k, Real s, Real c) {
     long q = k % 4;
     if (q < 0) q += 4;
-    Real s = 0, c = 1;
-    if (r != 0) std::tie(s, c) = detail::sin_cos(Real(two_pi_ * r));
-    switch (q) {  // rotate by q quarter turns
+    switch (q) {
       case 0: return {s, c};
       case 1: return {c, Real(-s)};
       case 2: return {Real(-s), Real(-c)};
       default: return {Real(-c), s};
+    }
+  }
+  // sin 2πφ and cos 2πφ from the nearest quarter period: exact at the quarters, accurate near the
+  // extrema, and it spares MPFR the hard-to-round arguments next to multiples of π/2.
+  std::pair<Real, Real> sin_cos_2pi(const Real& phi) const {
+    Real arg;
+    const long k = quarter_split(phi, two_pi_, arg);
+    Real s = 0, c = 1;
+    if constexpr (is_runtime_precision_v<Real>) {
+      if (arg != 0) {
+        ArgAnchor& an = arg_anchor();
+        const mpfr_srcptr x = arg.backend().data();
+        if (an.bits != mpfr_get_prec(x) || !an.a.near(x, s.backend().data(), c.backend().data())) {
+          an.bits = mpfr_get_prec(x);
+          an.a.set(x);
+          if (!an.a.near(x, s.backend().data(), c.backend().data())) std::tie(s, c) = detail::sin_cos(arg);
+        }
+      }
+    } else {
+      if (arg != 0) std::tie(s, c) = detail::sin_cos(arg);
+    }
+    return quarter_turns(k, std::move(s), std::move(c));
+  }
+  // A phase whose acos anchor is at hand (mpfr): its sin_cos_2pi from the anchor into trig's
+  // cache, where mpfr_can_round decides it (the same bits as the call); else nothing.
+  void prime(const Real& phi, const detail::TrigAnchor& anchor) const {
+    if constexpr (is_runtime_precision_v<Real>) {
+      if (anchor.empty()) return;
+      Real arg;
+      const long k = quarter_split(phi, two_pi_, arg);
+      if (arg == 0) return;
+      Real s, c;
+      if (!anchor.near_twice(arg.backend().data(), s.backend().data(), c.backend().data())) return;
+      cache().put(phi) = quarter_turns(k, std::move(s), std::move(c));
     }
   }
   Real two_pi_ = two_pi();
