@@ -572,13 +572,14 @@ TEST(Waveforms, TrigAnchorGivesMpfrsSinCosBitForBit) {
 }
 
 // The sine's contact boundaries and onsets in mpfr take their sine and cosine from acos's anchor
-// (primed into the trig cache): the value and slope there are those of MPFR's sin_cos of the
-// reduced argument, bit for bit, as the phase's own call gives them (computed here from the
-// definition: φ = k/4 + r, 2πr at the working precision, k quarter turns).
+// from 500 bits (primed into the trig cache; at 50 digits the call): the value and slope there
+// are those of MPFR's sin_cos of the reduced argument, bit for bit, as the phase's own call gives
+// them (computed here from the definition: φ = k/4 + r, 2πr at the working precision, k quarter
+// turns).
 TEST(Waveforms, SineBoundaryAndOnsetTrigIsTheCallsBits) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(0, 1);
-  for (unsigned digits : {50u, 1000u}) {
+  for (unsigned digits : {50u, 300u, 1000u}) {
     PrecisionScope scope(digits);
     const auto w = make_waveform<mpfr>(parse_wave("sine"));
     const mpfr two_pi = boost::math::constants::two_pi<mpfr>();

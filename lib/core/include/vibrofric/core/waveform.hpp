@@ -48,7 +48,10 @@ std::pair<Real, Real> sin_cos(const Real& x) {
 
 // Reduced-precision steps (coarse_halley, coarse_sine_newton) pay from 500 bits: below, the first
 // would run at a third of the working precision or more, and its temporaries cost more than it
-// saves (measured 5-8% slower at 50 digits, equal at 100).
+// saves (measured 5-8% slower at 50 digits, equal at 100). So does the trig anchor (TrigAnchor):
+// below, its Taylor terms, rotation and temporaries cost about what the calls it saves do
+// (measured with it everywhere: the flat sine 1.00-1.03 of the time without at 50 and 100 digits,
+// the curved sphere 1.09-1.12 at 20 and 50; from 500 bits 0.88 at 300 digits, 0.77 at 1000).
 inline constexpr long coarse_from_bits = 500;
 template <class Real>
 bool coarse_steps_pay() {
@@ -267,9 +270,9 @@ class TrigAnchor {
 // acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
 // from a double guess (two steps to 100 digits; θ/2 ≤ π/4 keeps it well conditioned, and small
 // θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos. In
-// mpfr the steps before the last run at reduced precision (coarse_halley), and one sin_cos at
-// the first full-precision iterate serves the later ones (TrigAnchor); `anchor`, if given,
-// keeps it for the caller.
+// mpfr from coarse_from_bits the steps before the last run at reduced precision (coarse_halley),
+// and one sin_cos at the first full-precision iterate serves the later ones (TrigAnchor);
+// `anchor`, if given, keeps it for the caller.
 template <class Real>
 Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
   using std::acos;
@@ -292,8 +295,12 @@ Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
       Real sh, ch;
       if constexpr (is_runtime_precision_v<Real>) {
         TrigAnchor& a = anchor ? *anchor : own;
-        if (a.empty()) a.set(h.backend().data());
-        if (!a.near(h.backend().data(), sh.backend().data(), ch.backend().data())) std::tie(sh, ch) = sin_cos(h);
+        if (!coarse_steps_pay<Real>()) {
+          std::tie(sh, ch) = sin_cos(h);
+        } else {
+          if (a.empty()) a.set(h.backend().data());
+          if (!a.near(h.backend().data(), sh.backend().data(), ch.backend().data())) std::tie(sh, ch) = sin_cos(h);
+        }
       } else {
         std::tie(sh, ch) = sin_cos(h);
       }
@@ -560,7 +567,8 @@ class Sine final : public Waveform<Real> {
     sc = sin_cos_2pi(phi);
     return sc;
   }
-  // mpfr: the last argument whose sin_cos was called, as an anchor (TrigAnchor) for the next ones.
+  // mpfr from coarse_from_bits: the last argument whose sin_cos was called, as an anchor
+  // (TrigAnchor) for the next ones.
   // A Newton iteration's phases (a stick end, Eq. 8) and the value at its root are near each
   // other: one call at 64 bits more, the rest by Taylor, each decided by mpfr_can_round.
   struct ArgAnchor {
@@ -608,7 +616,9 @@ class Sine final : public Waveform<Real> {
     const long k = quarter_split(phi, two_pi_, arg);
     Real s = 0, c = 1;
     if constexpr (is_runtime_precision_v<Real>) {
-      if (arg != 0) {
+      if (arg != 0 && !detail::coarse_steps_pay<Real>()) {
+        std::tie(s, c) = detail::sin_cos(arg);
+      } else if (arg != 0) {
         ArgAnchor& an = arg_anchor();
         const mpfr_srcptr x = arg.backend().data();
         if (an.bits != mpfr_get_prec(x) || !an.a.near(x, s.backend().data(), c.backend().data())) {
