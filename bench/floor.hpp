@@ -88,7 +88,8 @@ void interleaved_floor(benchmark::State& state, Pass pass, std::size_t points, d
 
 // After a timed loop over `in` (untimed): the mean full-precision and reduced-precision
 // transcendental calls per point of solve() at the working precision ("fp_calls",
-// "reduced_calls"); for the sine at `digits` working digits the mean counted floor ("floor_calls") and the interleaved ratio.
+// "reduced_calls"); for the sine at `digits` working digits, the mean counted floor ("floor_calls")
+// and the interleaved ratio.
 template <class Real>
 void floor_counters(benchmark::State& state, const Waveform<Real>& w, const std::vector<std::pair<Real, Real>>& in,
                     bool sine, int digits) {

@@ -95,9 +95,9 @@ inline void coarse_halley(mpfr& h, const mpfr& t) {
 // there at full precision, with one sin_cos at its first iterate and Taylor from it after
 // (TrigAnchor: terms of 2^−full/4 converge in four), which costs less than the steps at half
 // and at full precision here (measured on the bench's 12 sine inputs: 0.85–0.89 of the solve's
-// time at 1000 digits, 0.94–0.97 at 300). Stops too at a step not below half the one before (near a tangency, where the guess
-// is not yet in Newton's quadratic range): x then keeps the last value before it. From
-// coarse_from_bits.
+// time at 1000 digits, 0.94–0.97 at 300). Stops too at a step not below half the one before
+// (near a tangency, where the guess is not yet in Newton's quadratic range): x then keeps the
+// last value before it. From coarse_from_bits.
 inline void coarse_sine_newton(mpfr& x, const mpfr& beta, const mpfr& k, const mpfr& two_pi) {
   const mpfr_ptr xp = x.backend().data();
   const mpfr_prec_t full = mpfr_get_prec(xp);
@@ -173,7 +173,7 @@ inline bool sin_cos_near(mpfr_srcptr x, mpfr_srcptr theta, mpfr_srcptr S, mpfr_s
     }
   }
   if (sigma == 0 || (!mpfr_zero_p(best) && 24 * (1 - mpfr_get_exp(best)) < P + 4)) return false;
-  // sin δ and cos δ: Taylor to terms below 2^−(P+4) (at most 2^−16 each step, so few terms).
+  // sin δ and cos δ: Taylor to terms below 2^−(P+4) (at most 24, by the test above).
   mpfr_set(sd, best, MPFR_RNDN);
   mpfr_set_ui(cd, 1, MPFR_RNDN);
   mpfr_set(t, best, MPFR_RNDN);
@@ -291,16 +291,13 @@ Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
       if (h != 0) coarse_halley(h, t);
     const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
     [[maybe_unused]] TrigAnchor own;
+    TrigAnchor* const anchored = coarse_steps_pay<Real>() ? (anchor ? anchor : &own) : nullptr;
     for (int it = 0; it < 64; ++it) {
       Real sh, ch;
       if constexpr (is_runtime_precision_v<Real>) {
-        TrigAnchor& a = anchor ? *anchor : own;
-        if (!coarse_steps_pay<Real>()) {
+        if (anchored && anchored->empty()) anchored->set(h.backend().data());
+        if (!anchored || !anchored->near(h.backend().data(), sh.backend().data(), ch.backend().data()))
           std::tie(sh, ch) = sin_cos(h);
-        } else {
-          if (a.empty()) a.set(h.backend().data());
-          if (!a.near(h.backend().data(), sh.backend().data(), ch.backend().data())) std::tie(sh, ch) = sin_cos(h);
-        }
       } else {
         std::tie(sh, ch) = sin_cos(h);
       }
@@ -615,21 +612,19 @@ class Sine final : public Waveform<Real> {
     Real arg;
     const long k = quarter_split(phi, two_pi_, arg);
     Real s = 0, c = 1;
+    if (arg == 0) return quarter_turns(k, std::move(s), std::move(c));
     if constexpr (is_runtime_precision_v<Real>) {
-      if (arg != 0 && !detail::coarse_steps_pay<Real>()) {
-        std::tie(s, c) = detail::sin_cos(arg);
-      } else if (arg != 0) {
+      if (detail::coarse_steps_pay<Real>()) {
         ArgAnchor& an = arg_anchor();
         const mpfr_srcptr x = arg.backend().data();
-        if (an.bits != mpfr_get_prec(x) || !an.a.near(x, s.backend().data(), c.backend().data())) {
-          an.bits = mpfr_get_prec(x);
-          an.a.set(x);
-          if (!an.a.near(x, s.backend().data(), c.backend().data())) std::tie(s, c) = detail::sin_cos(arg);
-        }
+        if (an.bits == mpfr_get_prec(x) && an.a.near(x, s.backend().data(), c.backend().data()))
+          return quarter_turns(k, std::move(s), std::move(c));
+        an.bits = mpfr_get_prec(x);
+        an.a.set(x);
+        if (an.a.near(x, s.backend().data(), c.backend().data())) return quarter_turns(k, std::move(s), std::move(c));
       }
-    } else {
-      if (arg != 0) std::tie(s, c) = detail::sin_cos(arg);
     }
+    std::tie(s, c) = detail::sin_cos(arg);
     return quarter_turns(k, std::move(s), std::move(c));
   }
   // A phase whose acos anchor is at hand (mpfr): its sin_cos_2pi from the anchor into trig's
