@@ -267,6 +267,27 @@ class TrigAnchor {
   mpfr_t h_, s_, c_;
 };
 
+// cbrt(ε)/16, acos_fast's step tolerance: one cbrt per precision and thread, not one per call (at
+// 1000 digits that call was a third of a sine point's full-precision calls). The same number.
+template <class Real>
+const Real& halley_tolerance() {
+  using std::cbrt;
+  if constexpr (is_runtime_precision_v<Real>) {
+    thread_local unsigned digits = 0;
+    thread_local Real tol;
+    if (const unsigned now = mpfr::thread_default_precision(); now != digits) {
+      const Real fresh = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
+      mpfr_set_prec(tol.backend().data(), mpfr_get_prec(fresh.backend().data()));
+      mpfr_set(tol.backend().data(), fresh.backend().data(), MPFR_RNDN);
+      digits = now;
+    }
+    return tol;
+  } else {
+    static const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
+    return tol;
+  }
+}
+
 // acos y for y ∈ [−1, 1]. Beyond long double: Halley's iteration on sin(θ/2) = √((1 − y)/2)
 // from a double guess (two steps to 100 digits; θ/2 ≤ π/4 keeps it well conditioned, and small
 // θ stays relatively accurate), as MPFR's acos goes through atan and costs five sin_cos. In
@@ -280,7 +301,6 @@ Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
     return acos(y);
   } else {
     using std::abs;
-    using std::cbrt;
     using std::sqrt;
     if (y < 0) return boost::math::constants::pi<Real>() - acos_fast(Real(-y), anchor);
     if (y >= 1) return Real(0);
@@ -289,7 +309,7 @@ Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
     // A guess of 0 (t below double's range) has no correct bits to triple.
     if constexpr (is_runtime_precision_v<Real>)
       if (h != 0) coarse_halley(h, t);
-    const Real tol = cbrt(std::numeric_limits<Real>::epsilon()) / 16;
+    const Real& tol = halley_tolerance<Real>();
     [[maybe_unused]] TrigAnchor own;
     TrigAnchor* const anchored = coarse_steps_pay<Real>() ? (anchor ? anchor : &own) : nullptr;
     for (int it = 0; it < 64; ++it) {
