@@ -5,8 +5,9 @@
 // its nodes on endpoint singularities that are no longer there, needs 260 nodes for 1e-25.
 //
 // Nodes and weights are computed in MPFR with 20 guard digits and rounded once to Real, kept per
-// thread, precision and n. Boost's gauss and gauss_kronrod keep runtime-precision nodes from the
-// first call's precision (toolchain.md), so they are not used.
+// thread, precision and n; so are the Gauss–Kronrod pairs below, which give a segment's first
+// estimate. Boost's gauss and gauss_kronrod keep runtime-precision nodes from the first call's
+// precision (toolchain.md), so they are not used.
 #pragma once
 #include <cmath>
 #include <cstddef>
