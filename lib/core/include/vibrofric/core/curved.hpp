@@ -82,7 +82,15 @@ bool gauss_segment(F f, const Real& rel, const Real& abs_tol, Real& value, Real&
   const double digits = rel > 0 ? -static_cast<double>(log10(rel)) : static_cast<double>(working_digits10<Real>());
   const std::size_t limit = static_cast<std::size_t>(4 * digits) + 40;
   std::size_t n = std::max<std::size_t>(8, static_cast<std::size_t>(std::ceil(digits / 0.75)));
-  auto apply = [&](std::size_t points, Real& sum, Real& norm) { gauss_apply(f, points, sum, norm); };
+  // Two successive values agree: the more accurate one, cur, with their difference as its estimate.
+  auto accepted = [&](const Real& cur, const Real& other, const Real& norm) {
+    const Real diff = abs(cur - other);
+    if (!(diff <= rel * norm || diff <= abs_tol)) return false;
+    value = cur;
+    err = diff;
+    l1 = norm;
+    return true;
+  };
   if (n + n / 2 > limit) return false;
   // The Gauss–Kronrod pair of order n first: the n-point value and one about as accurate as the
   // 3n/2-point rule, from 2n + 1 springs.
@@ -96,13 +104,7 @@ bool gauss_segment(F f, const Real& rel, const Real& abs_tol, Real& value, Real&
       norm += rule.weights[i] * abs(y);
       if (rule.gauss_weights[i] != 0) gauss += rule.gauss_weights[i] * y;
     }
-    const Real diff = abs(kronrod - gauss);
-    if (diff <= rel * norm || diff <= abs_tol) {
-      value = kronrod;
-      err = diff;
-      l1 = norm;
-      return true;
-    }
+    if (accepted(kronrod, gauss, norm)) return true;
     prev = kronrod;
     n += n / 2;
   }
@@ -110,14 +112,8 @@ bool gauss_segment(F f, const Real& rel, const Real& abs_tol, Real& value, Real&
     const std::size_t next = n + n / 2;
     if (next > limit) return false;
     Real cur, norm;
-    apply(next, cur, norm);
-    const Real diff = abs(cur - prev);
-    if (diff <= rel * norm || diff <= abs_tol) {
-      value = cur;
-      err = diff;
-      l1 = norm;
-      return true;
-    }
+    gauss_apply(f, next, cur, norm);
+    if (accepted(cur, prev, norm)) return true;
     prev = cur;
     n = next;
   }

@@ -52,6 +52,20 @@ inline void legendre_slope_mpfr(mpfr_t d, mpfr_t t, const mpfr_t x, const mpfr_t
   mpfr_div(d, d, t, MPFR_RNDN);
 }
 
+// N MPFR numbers at `bits`, a rule's scratch, cleared on every way out.
+template <std::size_t N>
+struct MpfrScratch {
+  mpfr_t v[N];
+  explicit MpfrScratch(mpfr_prec_t bits) {
+    for (auto& e : v) mpfr_init2(e, bits);
+  }
+  ~MpfrScratch() {
+    for (auto& e : v) mpfr_clear(e);
+  }
+  MpfrScratch(const MpfrScratch&) = delete;
+  MpfrScratch& operator=(const MpfrScratch&) = delete;
+};
+
 // The n-point rule: the roots x of P_n by Newton's method, first in double from the classical
 // guess cos(π(i + 3/4)/(n + 1/2)), then in MPFR on a ladder of precisions below the working
 // digits plus 20 (`bits`), each step repeated until it is below the square root of its precision.
@@ -75,15 +89,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
   std::vector<mpfr> x_hi, w_hi;
   {
     PrecisionScope scope(work);
-    struct Scratch {  // cleared on every way out
-      mpfr_t v[6];
-      explicit Scratch(mpfr_prec_t bits) {
-        for (auto& e : v) mpfr_init2(e, bits);
-      }
-      ~Scratch() {
-        for (auto& e : v) mpfr_clear(e);
-      }
-    } scratch(bits);
+    MpfrScratch<6> scratch(bits);
     mpfr_t &x = scratch.v[0], &p = scratch.v[1], &q = scratch.v[2], &t = scratch.v[3], &d = scratch.v[4], &y = scratch.v[5];
     const auto newton_step = [&](mpfr_prec_t prec) {  // x −= P_n/P_n' at prec bits; |step| relative to x in t
       for (mpfr_t* v : {&p, &q, &t, &d}) mpfr_set_prec(*v, prec);
@@ -296,15 +302,7 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
     const Stieltjes<mpfr> E(n);
     std::vector<double> a_double;
     for (const mpfr& c : E.a) a_double.push_back(static_cast<double>(c));
-    struct Scratch {  // cleared on every way out
-      mpfr_t v[10];
-      explicit Scratch(mpfr_prec_t bits) {
-        for (auto& e : v) mpfr_init2(e, bits);
-      }
-      ~Scratch() {
-        for (auto& e : v) mpfr_clear(e);
-      }
-    } scratch(bits);
+    MpfrScratch<10> scratch(bits);
     mpfr_t &x = scratch.v[5], &f = scratch.v[6], &df = scratch.v[7], &q = scratch.v[8], &step = scratch.v[9];
     const auto small = [&] { return mpfr_zero_p(step) || mpfr_get_exp(step) - mpfr_get_exp(x) < -(bits / 2 + 48); };
     const auto fail = [&](const char* what, std::size_t j) {
@@ -348,7 +346,8 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
           flo = ge[j - 1];
         }
         fup = ge[j];
-        if (!((flo < 0 && fup > 0) || (flo > 0 && fup < 0))) throw fail("added node (no sign change of E)", j);
+        if (!((flo < 0 && fup > 0) || (flo > 0 && fup < 0)))
+          throw SolverError("Gauss-Kronrod rule of order " + std::to_string(n) + ": E does not change sign about added node " + std::to_string(j));
         // A double guess by bisection on E in double, then Newton at the working precision.
         double l = static_cast<double>(lo), h = static_cast<double>(up), fl = static_cast<double>(flo);
         for (int k = 0; k < 60 && h - l > 1e-15; ++k) {
