@@ -13,11 +13,15 @@
 // measured file would give it: 21 samples, r = 0, 0.12, …, 2.4, each a kink of the profile;
 // double paths and 30 digits only). Counters: rel_error, the largest relative error over
 // the inputs evaluated against solve_curved<mpfr> at
-// 40 digits (asked for 1e-36); digits. The inputs (β, γ) = (1, −0.3), (2, 0.5), (0.5, 1.5): a
+// 40 digits (asked for 1e-36); digits; for the wear flat and the measured ball's double paths,
+// il_ratio_to_sphere (the case's time over the sphere's, the two measured alternately: see
+// interleaved_sphere). The inputs (β, γ) = (1, −0.3), (2, 0.5), (0.5, 1.5): a
 // jumping centre, a jumping centre near the top, a non-jumping centre. bench/README.md has the
 // results and how the spring row's cost at 6 digits is obtained.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -25,6 +29,7 @@
 #include <utility>
 
 #include "common.hpp"
+#include "floor.hpp"
 #include "vibrofric/api/detail/evaluate_impl.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
@@ -91,6 +96,45 @@ double worst_error(const std::string& profile, const std::vector<double>& got) {
   return worst;
 }
 
+// A profile's time over the sphere's, measured beside each other (untimed by Google Benchmark):
+// `rounds` rounds, each one pass over the inputs with each profile (the order alternating between
+// rounds), so that a shared host's slow and fast phases fall on both; the ratio of two rows timed
+// minutes apart moved by 1.5× between runs at one commit. A pass is repeated to about 5 ms.
+// Counters "il_case_ns" and "il_sphere_ns" (per evaluation, medians over the rounds) and
+// "il_ratio_to_sphere" (the median of the rounds' ratios).
+void interleaved_sphere(benchmark::State& state, const std::function<void()>& case_pass,
+                        const std::function<void()>& sphere_pass) {
+  constexpr int rounds = 9;
+  const double evaluations_per_pass = static_cast<double>(curved_inputs().size());
+  auto timed = [](const std::function<void()>& pass, int reps) {
+    const double t0 = thread_cpu_ns();
+    for (int k = 0; k < reps; ++k) pass();
+    return thread_cpu_ns() - t0;
+  };
+  const int reps = std::max(1, static_cast<int>(5e6 / std::max(1.0, timed(sphere_pass, 1))));
+  std::vector<double> case_ns, sphere_ns, ratio;
+  for (int k = 0; k < rounds; ++k) {
+    double c, s;
+    if (k % 2 == 0) {
+      c = timed(case_pass, reps);
+      s = timed(sphere_pass, reps);
+    } else {
+      s = timed(sphere_pass, reps);
+      c = timed(case_pass, reps);
+    }
+    case_ns.push_back(c / (reps * evaluations_per_pass));
+    sphere_ns.push_back(s / (reps * evaluations_per_pass));
+    ratio.push_back(c / s);
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  state.counters["il_case_ns"] = median(case_ns);
+  state.counters["il_sphere_ns"] = median(sphere_ns);
+  state.counters["il_ratio_to_sphere"] = median(ratio);
+}
+
 void BM_curved_double(benchmark::State& state, const std::string& profile) {
   const auto w = make_waveform<double>(parse_wave("sine"));
   const auto p = make_profile<double>(parse_profile(profile));
@@ -106,6 +150,13 @@ void BM_curved_double(benchmark::State& state, const std::string& profile) {
   state.SetItemsProcessed(state.iterations());
   state.counters["rel_error"] = worst_error(profile, got);
   state.counters["inputs"] = static_cast<double>(in.size());
+  if (profile == "sphere") return;
+  const auto sphere = make_profile<double>(parse_profile("sphere"));
+  auto pass = [&](const Profile<double>& q) {
+    for (const auto& x : in)
+      benchmark::DoNotOptimize(solve_curved(*w, q, std::strtod(x.beta, nullptr), std::strtod(x.gamma, nullptr)).mu);
+  };
+  interleaved_sphere(state, [&] { pass(*p); }, [&] { pass(*sphere); });
 }
 
 void BM_curved_mpfr(benchmark::State& state, const std::string& profile, int digits) {
@@ -158,6 +209,13 @@ void BM_curved_guaranteed(benchmark::State& state, const std::string& profile, i
   state.SetItemsProcessed(state.iterations());
   state.counters["rel_error"] = worst_error(profile, got);
   if (digits) state.counters["digits"] = digits;
+  if (digits || profile == "sphere") return;
+  BatchOptions sphere = options;
+  set_profile(sphere, parse_profile("sphere"));
+  auto pass = [&](const BatchOptions& o) {
+    for (const auto& p : points) benchmark::DoNotOptimize(evaluate(spec, Quantity::mu, p, precision, o).data());
+  };
+  interleaved_sphere(state, [&] { pass(options); }, [&] { pass(sphere); });
 }
 
 // The spring row at (β, γ) = (1, −0.3), M springs and N steps per period.
