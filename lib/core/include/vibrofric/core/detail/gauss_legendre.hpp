@@ -23,6 +23,9 @@ namespace vibrofric::detail {
 template <class Real>
 struct GaussRule {
   std::vector<Real> nodes, weights;  // on [0, 1]; the weights sum to 1
+  // The roots x ≥ 0 on [−1, 1], descending, and P_n' there, at the working digits plus 20, as
+  // computed before rounding: gauss_kronrod's Gauss nodes.
+  std::vector<mpfr> work_roots, work_slopes;
 };
 
 // P_n(x) into p, P_{n−1}(x) into q, by the three-term recurrence at x's precision; t is scratch.
@@ -50,24 +53,6 @@ inline void legendre_slope_mpfr(mpfr_t d, mpfr_t t, const mpfr_t x, const mpfr_t
   mpfr_sqr(t, x, MPFR_RNDN);
   mpfr_sub_ui(t, t, 1, MPFR_RNDN);
   mpfr_div(d, d, t, MPFR_RNDN);
-}
-
-// P_n' at x = y − t after a Newton step t on P_n below 2^-(bits/2 + 48) relative to x, from
-// p = P_n(y) and d = P_n'(y): d −= P_n''(y)·t, P_n'' from Legendre's equation
-// (1 − y²)P'' = 2yP' − n(n+1)P. The neglected term, of order n⁴t² relative (each derivative gains
-// at most n², Markov), is below 2^-(bits+96)·n⁴, under 2^-bits for every n below 2^24. p, q and
-// y are clobbered.
-inline void legendre_slope_after_step(mpfr_t d, mpfr_t p, mpfr_t q, mpfr_t y, const mpfr_t x, const mpfr_t t, std::size_t n) {
-  mpfr_add(y, x, t, MPFR_RNDN);
-  mpfr_mul_ui(p, p, static_cast<unsigned long>(n) * static_cast<unsigned long>(n + 1), MPFR_RNDN);
-  mpfr_mul(q, y, d, MPFR_RNDN);
-  mpfr_mul_2ui(q, q, 1, MPFR_RNDN);
-  mpfr_sub(q, q, p, MPFR_RNDN);
-  mpfr_sqr(y, y, MPFR_RNDN);
-  mpfr_ui_sub(y, 1, y, MPFR_RNDN);
-  mpfr_div(q, q, y, MPFR_RNDN);
-  mpfr_mul(q, q, t, MPFR_RNDN);
-  mpfr_sub(d, d, q, MPFR_RNDN);
 }
 
 // N MPFR numbers at `bits`, a rule's scratch, cleared on every way out.
@@ -104,7 +89,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
   GaussRule<Real> rule;  // kept only once complete: a node that fails to converge throws
   const unsigned work = static_cast<unsigned>(digits + 20);
   const mpfr_prec_t bits = static_cast<mpfr_prec_t>(std::ceil(work * 3.3219280948873623)) + 8;
-  std::vector<mpfr> x_hi, w_hi;
+  std::vector<mpfr> x_hi, w_hi, d_hi;
   {
     PrecisionScope scope(work);
     MpfrScratch<6> scratch(bits);
@@ -157,11 +142,21 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
         }
         if (!converged)
           throw SolverError("Gauss-Legendre node " + std::to_string(i) + " of " + std::to_string(n) + " did not converge");
-        // p, d: P_n and P_n' at the old node x + t.
-        legendre_slope_after_step(d, p, q, y, x, t, n);
+        // p, d: P_n and P_n' at the old node y = x + t. d −= P_n''(y)·t, P_n'' from Legendre's equation.
+        mpfr_add(y, x, t, MPFR_RNDN);
+        mpfr_mul_ui(p, p, static_cast<unsigned long>(n) * static_cast<unsigned long>(n + 1), MPFR_RNDN);
+        mpfr_mul(q, y, d, MPFR_RNDN);
+        mpfr_mul_2ui(q, q, 1, MPFR_RNDN);
+        mpfr_sub(q, q, p, MPFR_RNDN);
+        mpfr_sqr(y, y, MPFR_RNDN);
+        mpfr_ui_sub(y, 1, y, MPFR_RNDN);
+        mpfr_div(q, q, y, MPFR_RNDN);
+        mpfr_mul(q, q, t, MPFR_RNDN);
+        mpfr_sub(d, d, q, MPFR_RNDN);
       }
-      mpfr xv, wv;
+      mpfr xv, wv, dv;
       mpfr_set(xv.backend().data(), x, MPFR_RNDN);
+      mpfr_set(dv.backend().data(), d, MPFR_RNDN);
       // 2/((1 − x²) P'²), halved for [0, 1]
       mpfr_sqr(t, x, MPFR_RNDN);
       mpfr_ui_sub(t, 1, t, MPFR_RNDN);
@@ -170,6 +165,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
       mpfr_ui_div(wv.backend().data(), 1, t, MPFR_RNDN);
       x_hi.push_back(xv);
       w_hi.push_back(wv);
+      d_hi.push_back(dv);
     }
   }
   // u = (1 ∓ x)/2, ascending; the middle node of an odd rule once.
@@ -185,6 +181,8 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
     rule.nodes.push_back(rounded<Real>(mpfr((1 + x_hi[i]) / 2), static_cast<unsigned>(digits)));
     rule.weights.push_back(rounded<Real>(w_hi[i], static_cast<unsigned>(digits)));
   }
+  rule.work_roots = std::move(x_hi);
+  rule.work_slopes = std::move(d_hi);
   return cache.emplace(std::make_pair(digits, n), std::move(rule)).first->second;
 }
 
@@ -267,7 +265,14 @@ struct Stieltjes {
 // E(x) into e and E'(x) into de in raw MPFR at e's precision, from the coefficients a (a[0]
 // unused) of a Stieltjes; s: five scratch numbers. The recurrences are the whole cost of a
 // rule (O(n) per evaluation), and et_off temporaries would allocate at every step.
-inline void stieltjes_mpfr(mpfr_t e, mpfr_t de, const Stieltjes& E, const mpfr_t x, mpfr_t* s) {
+// With `more` (seven scratch numbers then): also E''(x) into more->dde, and P_n(x), P_n'(x) of the
+// Gauss rule (n = degree − 1, passed on the way) into more->pn, more->dpn, by
+// P''_{k+1} = P''_{k−1} + (2k + 1) P'_k.
+struct StieltjesMore {
+  mpfr_ptr dde, pn, dpn;
+};
+inline void stieltjes_mpfr(mpfr_t e, mpfr_t de, const Stieltjes& E, const mpfr_t x, mpfr_t* s,
+                           const StieltjesMore* more = nullptr) {
   mpfr_t &p0 = s[0], &p1 = s[1], &d0 = s[2], &d1 = s[3], &t = s[4];
   const bool odd = E.degree % 2 == 1;
   const mpfr_srcptr a1 = E.a[1].backend().data();
@@ -282,7 +287,21 @@ inline void stieltjes_mpfr(mpfr_t e, mpfr_t de, const Stieltjes& E, const mpfr_t
     mpfr_set(e, a1, MPFR_RNDN);
     mpfr_set_ui(de, 0, MPFR_RNDN);
   }
+  if (more) {
+    mpfr_set_ui(s[5], 0, MPFR_RNDN);  // P''_0, P''_1
+    mpfr_set_ui(s[6], 0, MPFR_RNDN);
+    mpfr_set_ui(more->dde, 0, MPFR_RNDN);
+    if (E.degree == 2) {  // n = 1: P_1 = x
+      mpfr_set(more->pn, x, MPFR_RNDN);
+      mpfr_set_ui(more->dpn, 1, MPFR_RNDN);
+    }
+  }
   for (unsigned long k = 1; k < E.degree; ++k) {
+    if (more) {  // P''_{k+1} = P''_{k−1} + (2k + 1) P'_k into s[5], before P'_k moves
+      mpfr_mul_ui(t, d1, 2 * k + 1, MPFR_RNDN);
+      mpfr_add(s[5], s[5], t, MPFR_RNDN);
+      mpfr_swap(s[5], s[6]);
+    }
     mpfr_mul(t, x, p1, MPFR_RNDN);  // P_{k+1} = ((2k + 1) x P_k − k P_{k−1})/(k + 1) into p0
     mpfr_mul_ui(t, t, 2 * k + 1, MPFR_RNDN);
     mpfr_mul_ui(p0, p0, k, MPFR_RNDN);
@@ -296,23 +315,30 @@ inline void stieltjes_mpfr(mpfr_t e, mpfr_t de, const Stieltjes& E, const mpfr_t
       const mpfr_srcptr c = E.a[odd ? (k + 2) / 2 : (k + 1) / 2 + 1].backend().data();
       mpfr_fma(e, c, p1, e, MPFR_RNDN);
       mpfr_fma(de, c, d1, de, MPFR_RNDN);
+      if (more) mpfr_fma(more->dde, c, s[6], more->dde, MPFR_RNDN);
+    }
+    if (more && k + 2 == E.degree) {
+      mpfr_set(more->pn, p1, MPFR_RNDN);
+      mpfr_set(more->dpn, d1, MPFR_RNDN);
     }
   }
 }
 
 // Nodes and weights in MPFR at the working digits plus 20, rounded once to Real, kept per thread,
-// precision and n; the nodes x < 0 on [−1, 1] computed, the others by symmetry. Each Gauss node x
-// by Newton's method on P_n from gauss_legendre's (P_n' at the last node by the step's correction,
-// legendre_slope_after_step), each added node by Newton on E from a double guess, first on
-// gauss_legendre's ladder of precisions, then at the full precision kept inside its bracket
-// between two Gauss nodes (E changes sign there); both until a step at the full precision is
-// below 2^-(bits/2 + 48) relative: the node before that step was exact to about that, the node
-// after it is exact (quadratic convergence). Kronrod weights, halved for [0, 1]: 2/((n + 1) P_n(x)
-// E'(x)) at an added node, 2/((1 − x²) P_n'(x)²) + 2/((n + 1) P_n'(x) E(x)) at a Gauss node. A
-// node that does not converge, or weights that do not sum to 1, throw SolverError. The ladder and
-// the correction leave every rule bitwise as without them (checked on 602 rules and their Gauss
-// rules, in double, long double, cpp_bin_float_50 and mpfr at 12 to 300 digits) and build them in
-// 0.82 of the instructions at 200 digits, 0.94 at 50.
+// precision and n; the nodes x < 0 on [−1, 1] computed, the others by symmetry. The Gauss nodes
+// and P_n' there are gauss_legendre's before rounding (GaussRule::work_roots, work_slopes). Each
+// added node by Newton on E from a double guess, first on gauss_legendre's ladder of precisions,
+// then at the full precision kept inside its bracket between two Gauss nodes (E changes sign
+// there), until a step at the full precision is below 2^-(bits/2 + 48) relative: the node before
+// that step was exact to about that, the node after it is exact (quadratic convergence). That
+// last evaluation also gives E'' and P_n, P_n' (StieltjesMore), so E' and P_n at the new node are
+// corrected to first order, as gauss_legendre corrects P_n' (the neglected terms are below
+// 2^-bits). Kronrod weights, halved for [0, 1]: 2/((n + 1) P_n(x) E'(x)) at an added node,
+// 2/((1 − x²) P_n'(x)²) + 2/((n + 1) P_n'(x) E(x)) at a Gauss node. A node that does not converge,
+// or weights that do not sum to 1, throw SolverError. The ladder and the corrections leave every
+// rule bitwise as without them (checked on 602 rules and their Gauss rules, in double, long double,
+// cpp_bin_float_50 and mpfr at 12 to 300 digits), and rules of order 40 to 271 are built in 0.75 of
+// the instructions at 50 digits, 0.65 at 200.
 template <class Real>
 const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
   thread_local std::map<std::pair<int, std::size_t>, KronrodRule<Real>> cache;
@@ -328,7 +354,7 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
     const Stieltjes E(n);
     std::vector<double> a_double;
     for (const mpfr& c : E.a) a_double.push_back(static_cast<double>(c));
-    MpfrScratch<10> scratch(bits);
+    MpfrScratch<15> scratch(bits);
     // The rungs of gauss_legendre's ladder, with E's coefficients rounded to each: a step at a
     // rung then costs a product at that precision, where a full-precision coefficient in the fma
     // would cost a full one.
@@ -339,31 +365,22 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
       for (mpfr& c : rungs[r].a) mpfr_prec_round(c.backend().data(), ladder[r], MPFR_RNDN);
     MpfrScratch<10> low(bits);
     mpfr_t &lx = low.v[5], &lf = low.v[6], &ldf = low.v[7], &lstep = low.v[8], &lprev = low.v[9];
-    mpfr_t &x = scratch.v[5], &f = scratch.v[6], &df = scratch.v[7], &q = scratch.v[8], &step = scratch.v[9];
+    mpfr_t &x = scratch.v[7], &f = scratch.v[8], &df = scratch.v[9], &step = scratch.v[10], &dde = scratch.v[11],
+           &pn = scratch.v[12], &dpn = scratch.v[13];
+    const StieltjesMore more{dde, pn, dpn};
     const auto small = [&] { return mpfr_zero_p(step) || mpfr_get_exp(step) - mpfr_get_exp(x) < -(bits / 2 + 48); };
     const auto fail = [&](const char* what, std::size_t j) {
       return SolverError(std::string("Gauss-Kronrod rule of order ") + std::to_string(n) + ": " + what + " " + std::to_string(j) + " did not converge");
     };
-    // Gauss nodes x ≤ 0 (the middle one of an odd rule is 0), with E there: the brackets.
+    // Gauss nodes x ≤ 0 (the middle one of an odd rule is 0), with E there: the brackets. The
+    // roots and slopes gauss_legendre computed before rounding its rule (x ≥ 0, descending):
+    // x = −root, P_n'(−root) = (−1)^(n−1) P_n'(root).
     std::vector<mpfr> ge;
     for (std::size_t j = 0; j < n - half; ++j) {
-      const mpfr guess = 2 * mpfr(gauss.nodes[j]) - 1;
-      mpfr_set(x, guess.backend().data(), MPFR_RNDN);
-      if (n % 2 == 1 && j == half) mpfr_set_ui(x, 0, MPFR_RNDN);
-      bool converged = false;
-      for (int k = 0; k < 64 && !converged; ++k) {
-        legendre_mpfr(f, q, scratch.v[4], x, n);
-        legendre_slope_mpfr(df, scratch.v[4], x, f, q, n);
-        mpfr_div(step, f, df, MPFR_RNDN);
-        converged = small();
-        mpfr_sub(x, x, step, MPFR_RNDN);
-      }
-      if (!converged) throw fail("Gauss node", j);
-      legendre_slope_after_step(df, f, q, scratch.v[4], x, step, n);
-      mpfr xv, e, wv;
-      mpfr_set(xv.backend().data(), x, MPFR_RNDN);
-      stieltjes_mpfr(e.backend().data(), scratch.v[4], E, x, scratch.v);  // E(x); E' unused
-      wv = 1 / ((1 - xv * xv) * mpfr(df) * mpfr(df)) + 1 / (mpfr(n + 1) * mpfr(df) * e);
+      mpfr xv = -gauss.work_roots[j], d = n % 2 == 1 ? gauss.work_slopes[j] : mpfr(-gauss.work_slopes[j]), e, wv;
+      if (n % 2 == 1 && j == half) xv = 0;
+      stieltjes_mpfr(e.backend().data(), scratch.v[4], E, xv.backend().data(), scratch.v);  // E(x); E' unused
+      wv = 1 / ((1 - xv * xv) * d * d) + 1 / (mpfr(n + 1) * d * e);
       gx.push_back(xv);
       gw.push_back(wv);
       ge.push_back(e);
@@ -374,6 +391,8 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
       mpfr lo = j == 0 ? mpfr(-1) : gx[j - 1], up = j < gx.size() ? gx[j] : mpfr(0), flo, fup;
       if (n % 2 == 0 && j == half) {
         mpfr_set_ui(x, 0, MPFR_RNDN);
+        stieltjes_mpfr(f, df, E, x, scratch.v, &more);
+        mpfr_set_ui(step, 0, MPFR_RNDN);
       } else {
         if (j == 0) {
           stieltjes_mpfr(flo.backend().data(), scratch.v[4], E, lo.backend().data(), scratch.v);
@@ -428,7 +447,8 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
         }
         bool converged = false;
         for (int k = 0; k < 200 && !converged; ++k) {
-          stieltjes_mpfr(f, df, E, x, scratch.v);
+          stieltjes_mpfr(f, df, E, x, scratch.v, &more);
+          mpfr_set_ui(step, 0, MPFR_RNDN);
           if (mpfr_zero_p(f)) break;
           mpfr_div(step, f, df, MPFR_RNDN);
           converged = small();
@@ -446,11 +466,15 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
         }
         if (!converged && !mpfr_zero_p(f)) throw fail("added node", j);
       }
-      stieltjes_mpfr(f, df, E, x, scratch.v);
-      legendre_mpfr(f, q, scratch.v[4], x, n);  // P_n(x) into f; E'(x) stays in df
+      // E' and P_n at the node x = y − step from their values and slopes at y, the last
+      // evaluation (as gauss_legendre corrects P_n': the step is below 2^-(bits/2 + 48)).
+      mpfr_mul(f, dde, step, MPFR_RNDN);
+      mpfr_sub(df, df, f, MPFR_RNDN);
+      mpfr_mul(f, dpn, step, MPFR_RNDN);
+      mpfr_sub(pn, pn, f, MPFR_RNDN);
       mpfr xv, wv;
       mpfr_set(xv.backend().data(), x, MPFR_RNDN);
-      wv = 1 / (mpfr(n + 1) * mpfr(f) * mpfr(df));
+      wv = 1 / (mpfr(n + 1) * mpfr(pn) * mpfr(df));
       ax.push_back(xv);
       aw.push_back(wv);
     }
