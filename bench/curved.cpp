@@ -126,10 +126,6 @@ void interleaved_sphere(benchmark::State& state, const std::function<void()>& ca
     sphere_ns.push_back(s / (reps * evaluations_per_pass));
     ratio.push_back(c / s);
   }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
   state.counters["il_case_ns"] = median(case_ns);
   state.counters["il_sphere_ns"] = median(sphere_ns);
   state.counters["il_ratio_to_sphere"] = median(ratio);

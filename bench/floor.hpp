@@ -60,6 +60,12 @@ std::vector<mpfr> sin_cos_phases();
 // the CPU time per call in ns.
 double time_sin_cos(std::size_t calls);
 
+// The median of v (the upper one of an even count).
+inline double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
 // The floor's unit measured beside the path itself (untimed by Google Benchmark): `rounds`
 // alternations of one pass over the inputs (`pass`, `points` evaluations) and one batch of
 // mpfr_sin_cos at `working_digits`, so that a shared host's slow and fast phases fall on both.
@@ -76,10 +82,6 @@ void interleaved_floor(benchmark::State& state, Pass pass, std::size_t points, d
     PrecisionScope scope(static_cast<unsigned>(working_digits));
     unit_ns.push_back(time_sin_cos(8 * points));
   }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
   const double p = median(point_ns), u = median(unit_ns);
   state.counters["il_point_ns"] = p;
   state.counters["il_sin_cos_ns"] = u;

@@ -55,6 +55,14 @@ inline void legendre_slope_mpfr(mpfr_t d, mpfr_t t, const mpfr_t x, const mpfr_t
   mpfr_div(d, d, t, MPFR_RNDN);
 }
 
+// The precisions below `bits` on which a node's first Newton steps run, descending: bits/2 + 64,
+// then halving + 16, above 64 bits (gauss_legendre and gauss_kronrod).
+inline std::vector<mpfr_prec_t> newton_ladder(mpfr_prec_t bits) {
+  std::vector<mpfr_prec_t> ladder;
+  for (mpfr_prec_t prec = bits / 2 + 64; prec < bits && prec > 64; prec = prec / 2 + 16) ladder.push_back(prec);
+  return ladder;
+}
+
 // N MPFR numbers at `bits`, a rule's scratch, cleared on every way out.
 template <std::size_t N>
 struct MpfrScratch {
@@ -104,8 +112,7 @@ const GaussRule<Real>& gauss_legendre(std::size_t n) {
     };
     // The last step, t relative to x, below 2^-limit.
     const auto small = [&](mpfr_prec_t limit) { return mpfr_zero_p(t) || mpfr_get_exp(t) - mpfr_get_exp(x) < -limit; };
-    std::vector<mpfr_prec_t> ladder;  // descending; the same for every node
-    for (mpfr_prec_t prec = bits / 2 + 64; prec < bits && prec > 64; prec = prec / 2 + 16) ladder.push_back(prec);
+    const std::vector<mpfr_prec_t> ladder = newton_ladder(bits);  // the same for every node
     for (std::size_t i = 0; i < n / 2 + n % 2; ++i) {
       if (n % 2 == 1 && i == n / 2) {  // the middle node 0 of an odd rule, P_n'(0) from the recurrence
         mpfr_set_prec(x, bits);
@@ -354,12 +361,11 @@ const KronrodRule<Real>& gauss_kronrod(std::size_t n) {
     const Stieltjes E(n);
     std::vector<double> a_double;
     for (const mpfr& c : E.a) a_double.push_back(static_cast<double>(c));
-    MpfrScratch<15> scratch(bits);
+    MpfrScratch<14> scratch(bits);
     // The rungs of gauss_legendre's ladder, with E's coefficients rounded to each: a step at a
     // rung then costs a product at that precision, where a full-precision coefficient in the fma
     // would cost a full one.
-    std::vector<mpfr_prec_t> ladder;
-    for (mpfr_prec_t prec = bits / 2 + 64; prec < bits && prec > 64; prec = prec / 2 + 16) ladder.push_back(prec);
+    const std::vector<mpfr_prec_t> ladder = newton_ladder(bits);
     std::vector<Stieltjes> rungs(ladder.size(), E);
     for (std::size_t r = 0; r < ladder.size(); ++r)
       for (mpfr& c : rungs[r].a) mpfr_prec_round(c.backend().data(), ladder[r], MPFR_RNDN);
