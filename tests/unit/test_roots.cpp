@@ -7,8 +7,12 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "vibrofric/core/detail/roots.hpp"
 
@@ -118,6 +122,90 @@ TYPED_TEST(Roots, AnExhaustedBudgetIsAnError) {
     polished_root<Real>(cubic, slope, Real(1), Real(2), Real(-1), Real(5), Real(0), Real(0), "stick end", stats);
   });
   EXPECT_NE(p.find("stick end: Newton iteration did not converge in 2 iterations"), std::string::npos) << p;
+}
+
+// The in-place arithmetic of the hot paths (core/numbers.hpp) against the expressions it replaces,
+// bit for bit: value, sign of zero, NaN and, for mpfr, the precision the expression's result has.
+template <class Real>
+bool same(const Real& x, const Real& y) {
+  using std::isnan;
+  using std::signbit;
+  if (isnan(x) || isnan(y)) return isnan(x) && isnan(y);
+  if constexpr (vibrofric::is_runtime_precision_v<Real>)
+    if (mpfr_get_prec(x.backend().data()) != mpfr_get_prec(y.backend().data())) return false;
+  return x == y && signbit(x) == signbit(y);
+}
+
+// Signs, zeros, exact and inexact values, tiny and huge ones; for mpfr also one operand 30 digits
+// wider and one 10 digits narrower than the working precision.
+template <class Real>
+std::vector<Real> operands() {
+  std::vector<Real> v;
+  for (const char* s : {"0", "-0", "1", "-1", "0.1", "-2.5", "3", "1e-30", "-7e20", "0.75"}) {
+    if constexpr (std::is_same_v<Real, double>)
+      v.push_back(std::strtod(s, nullptr));
+    else if constexpr (std::is_same_v<Real, long double>)
+      v.push_back(std::strtold(s, nullptr));
+    else
+      v.emplace_back(s);
+  }
+  v.push_back(Real(1) / 3);
+  v.push_back(Real(-2) / 7);
+  v.push_back(std::numeric_limits<Real>::quiet_NaN());
+  if constexpr (vibrofric::is_runtime_precision_v<Real>) {
+    Real wide, narrow;
+    wide.precision(Real::thread_default_precision() + 30);
+    narrow.precision(Real::thread_default_precision() - 10);
+    mpfr_ui_div(wide.backend().data(), 2, Real(3).backend().data(), MPFR_RNDN);
+    mpfr_ui_div(narrow.backend().data(), 5, Real(7).backend().data(), MPFR_RNDN);
+    v.push_back(std::move(wide));
+    v.push_back(std::move(narrow));
+  }
+  return v;
+}
+
+template <class Real>
+void check_in_place() {
+  using std::abs;
+  using std::floor;
+  using std::signbit;
+  using namespace vibrofric::detail;
+  const std::vector<Real> v = operands<Real>();
+  for (const Real& a : v) {
+    Real n = a;
+    negate(n);  // exact: the value and the sign (the precision is n's)
+    EXPECT_TRUE((a != a && n != n) || (n == -a && signbit(n) != signbit(a))) << a;
+    if (!(a != a) && abs(a) < 1e15) {
+      EXPECT_EQ(floor_to_long(a), static_cast<long>(floor(a))) << a;
+    }
+    for (const Real& b : v) {
+      EXPECT_EQ(abs_le(a, b), abs(a) <= b) << a << " " << b;
+      Real d;
+      difference(d, a, b);
+      EXPECT_TRUE(same(d, Real(a - b))) << a << " - " << b;
+      Real alias = b;
+      difference(alias, a, alias);
+      EXPECT_TRUE(same(alias, Real(a - b))) << a << " - " << b << " into b";
+      Real m;
+      midpoint(m, a, b);
+      EXPECT_TRUE(same(m, Real((a + b) / 2))) << a << " " << b;
+      if (!signbit(a) || a != 0) {  // add_abs: x not −0
+        Real x = a;
+        add_abs(x, b);
+        const Real magnitude = abs(b);  // an lvalue: a + |b| then has the larger precision
+        EXPECT_TRUE(same(x, Real(a + magnitude))) << a << " + |" << b << "|";
+      }
+    }
+  }
+}
+
+TYPED_TEST(Roots, InPlaceArithmeticIsTheExpressionBitForBit) { check_in_place<TypeParam>(); }
+
+TEST(RootsMpfr, InPlaceArithmeticIsTheExpressionBitForBitAtAnyPrecision) {
+  for (unsigned digits : {30u, 300u}) {
+    vibrofric::PrecisionScope scope(digits);
+    check_in_place<vibrofric::mpfr>();
+  }
 }
 
 }  // namespace

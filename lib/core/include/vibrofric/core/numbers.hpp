@@ -6,6 +6,9 @@
 #pragma once
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 
@@ -64,6 +67,72 @@ Real rounded(const mpfr& x, unsigned mpfr_digits10 = static_cast<unsigned>(worki
     mpfr_set_prec(t.backend().data(), std::numeric_limits<Real>::digits);
     mpfr_set(t.backend().data(), x.backend().data(), MPFR_RNDN);
     return static_cast<Real>(t);  // exact: t has Real's bits
+  }
+}
+
+// In-place arithmetic for hot paths, where each mpfr temporary is an allocation: the same
+// correctly rounded operations as the expressions they replace, so every result is bitwise
+// unchanged (every number of a solve is at the working precision; with a wider operand they round
+// at the wider precision, as compound assignment does). x += |y| for x not −0 (a sum of
+// magnitudes): x − y for negative y, as rounding to nearest is symmetric.
+template <class Real>
+void add_abs(Real& x, const Real& y) {
+  if constexpr (std::is_floating_point_v<Real>) {
+    using std::abs;
+    x += abs(y);
+  } else if (y < 0) {
+    x -= y;
+  } else {
+    x += y;
+  }
+}
+// x = −x.
+template <class Real>
+void negate(Real& x) {
+  if constexpr (std::is_floating_point_v<Real>)
+    x = -x;
+  else
+    x.backend().negate();
+}
+// x = a − b (x may be a or b). In place where x already has the precision the expression's
+// result would have (Boost's: the largest of the thread's default and the operands' digits).
+template <class Real>
+void difference(Real& x, const Real& a, const Real& b) {
+  if constexpr (is_runtime_precision_v<Real>) {
+    const unsigned digits = std::max({Real::thread_default_precision(), a.precision(), b.precision()});
+    if (mpfr_get_prec(x.backend().data()) == static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits))) {
+      mpfr_sub(x.backend().data(), a.backend().data(), b.backend().data(), MPFR_RNDN);
+      return;
+    }
+  }
+  x = a - b;
+}
+// x = (a + b) / 2 (x neither a nor b).
+template <class Real>
+void midpoint(Real& x, const Real& a, const Real& b) {
+  x = a;
+  x += b;
+  x /= 2;
+}
+// floor(x) as a long (x within its range).
+template <class Real>
+long floor_to_long(const Real& x) {
+  if constexpr (is_runtime_precision_v<Real>) {
+    return mpfr_get_si(x.backend().data(), MPFR_RNDD);
+  } else {
+    using std::floor;
+    return static_cast<long>(floor(x));
+  }
+}
+// |a| ≤ b.
+template <class Real>
+bool abs_le(const Real& a, const Real& b) {
+  if constexpr (is_runtime_precision_v<Real>) {
+    const mpfr_srcptr x = a.backend().data(), y = b.backend().data();
+    return !mpfr_nan_p(x) && !mpfr_nan_p(y) && mpfr_sgn(y) >= 0 && mpfr_cmpabs(x, y) <= 0;
+  } else {
+    using std::abs;
+    return abs(a) <= b;
   }
 }
 }  // namespace detail

@@ -16,7 +16,9 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "vibrofric/core/detail/roots.hpp"
@@ -110,9 +112,11 @@ class Contact {
       const bool jump = w.jump_at(i);
       // β_c: an upward jump of n, else the largest slope at a contact segment's ends (w' is
       // monotone on the piece).
-      const std::size_t prev = (i + pieces - 1) % pieces;
-      const Real left = clip(gamma + w.end_value(prev)), right = clip(gamma + w.begin_value(i));
-      if (jump && right > 0 && right > left) beta_c_ = std::numeric_limits<Real>::infinity();
+      if (jump) {
+        const std::size_t prev = (i + pieces - 1) % pieces;
+        const Real left = clip(gamma + w.end_value(prev)), right = clip(gamma + w.begin_value(i));
+        if (right > 0 && right > left) beta_c_ = std::numeric_limits<Real>::infinity();
+      }
       Real c0, c1;
       if (!w.contact_part(i, gamma, c0, c1, stats)) {
         push(i, a, b, false, jump, false, false);
@@ -150,21 +154,29 @@ class Contact {
  private:
   static Real clip(const Real& x) { return x > 0 ? x : Real(0); }
   // A contact segment's ends: the cached piece-end values where they are piece ends, exactly 0
-  // for n at a contact boundary (its true value there).
+  // for n at a contact boundary (its true value there). Each number made once, in its place.
   void push(std::size_t i, const Real& u, const Real& v, bool contact, bool jump, bool u_boundary, bool v_boundary) {
-    Segment g{i, u, v, contact, jump, w_.convex(i), w_.linear(i), 0, 0, 0, 0, 0, 0};
-    if (contact) {
-      const bool ub = u == w_.piece_begin(i), ve = v == w_.piece_end(i);
-      g.nu = u_boundary ? Real(0) : Real(gamma_ + (ub ? w_.begin_value(i) : w_.value(i, u)));
-      g.nv = v_boundary ? Real(0) : Real(gamma_ + (ve ? w_.end_value(i) : w_.value(i, v)));
-      g.dnu = ub ? w_.begin_slope(i) : w_.slope(i, u);
-      g.dnv = ve ? w_.end_slope(i) : w_.slope(i, v);
-      if (w_.has_antiderivative()) {
-        g.Wu = w_.antiderivative(i, u);
-        g.Wv = w_.antiderivative(i, v);
-      }
+    if (!contact) {
+      segs_.push_back(Segment{i, u, v, false, jump, w_.convex(i), w_.linear(i), 0, 0, 0, 0, 0, 0});
+      return;
     }
-    segs_.push_back(std::move(g));
+    const bool ub = u == w_.piece_begin(i), ve = v == w_.piece_end(i);
+    const bool anti = w_.has_antiderivative();
+    segs_.push_back(Segment{i, u, v, true, jump, w_.convex(i), w_.linear(i),
+                            end_n(u_boundary, ub, w_.begin_value(i), i, u), end_n(v_boundary, ve, w_.end_value(i), i, v),
+                            ub ? Real(w_.begin_slope(i)) : w_.slope(i, u), ve ? Real(w_.end_slope(i)) : w_.slope(i, v),
+                            anti ? w_.antiderivative(i, u) : Real(0), anti ? w_.antiderivative(i, v) : Real(0)});
+  }
+  // n = γ + w at a contact segment's end x: 0 at a contact boundary, else from the piece's cached
+  // end value where x is the piece's end.
+  Real end_n(bool boundary, bool piece_end, const Real& cached, std::size_t i, const Real& x) const {
+    if (boundary) return Real(0);
+    Real r = gamma_;
+    if (piece_end)
+      r += cached;
+    else
+      r += w_.value(i, x);
+    return r;
   }
 
   const Waveform<Real>& w_;
@@ -225,13 +237,18 @@ class EventPass {
     s_ = c_.n_min();
     sticking_ = false;
     for (std::size_t j = 0; j < m; ++j) sweep_segment(segs[(start + j) % m], start + j >= m);
-    if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), Real(1));
+    if (sticking_) close_stick(w_.piece_begin(w_.argmin_break()), 1);
 
     Result<Real> r;
     r.retained_area = retained_;
     r.normal_area = normal_;
     r.lost_area = lost_;
-    r.mu = stick_.empty() ? Real(1) : Real(retained_ / normal_);
+    if (stick_.empty()) {
+      r.mu = 1;
+    } else {
+      r.mu = retained_;
+      r.mu /= normal_;
+    }
     // s ≤ n pointwise, so ∫s ≤ ∫n: a ratio above 1 (seen in double just below β_c at γ → −1) is
     // rounding, and 1 is nearer the truth.
     if (r.mu > 1) r.mu = 1;
@@ -240,22 +257,36 @@ class EventPass {
     r.area = method_;
     // First-order rounding bounds (in eps) of the areas, relative to the areas themselves: large
     // where the areas are small differences of O(1) phases and values (β → 0, γ → −min w).
+    // In place: eps·(err_retained/retained + err_normal/normal), eps·err_lost/lost.
     const Real eps = std::numeric_limits<Real>::epsilon();
     // An area that rounding drove to zero or below has no relative accuracy at all.
     const Real unknown = std::numeric_limits<Real>::infinity();
-    if (stick_.empty())
+    if (stick_.empty()) {
       r.relative_error = 0;
-    else if (!(retained_ > 0 && normal_ > 0))
+    } else if (!(retained_ > 0 && normal_ > 0)) {
       r.relative_error = unknown;
-    else
-      r.relative_error = eps * (err_retained_ / retained_ + err_normal_ / normal_);
-    r.retained_error = eps * err_retained_;
-    r.normal_error = eps * err_normal_;
+    } else {
+      Real part = err_normal_;
+      part /= normal_;
+      r.relative_error = err_retained_;
+      r.relative_error /= retained_;
+      r.relative_error += part;
+      r.relative_error *= eps;
+    }
+    r.retained_error = err_retained_;
+    r.retained_error *= eps;
+    r.normal_error = err_normal_;
+    r.normal_error *= eps;
     r.area_error = r.retained_error > r.normal_error ? r.retained_error : r.normal_error;
-    if (stick_.empty())
+    if (stick_.empty()) {
       r.lost_relative_error = 0;
-    else
-      r.lost_relative_error = lost_ > 0 ? Real(eps * err_lost_ / lost_) : unknown;
+    } else if (lost_ > 0) {
+      r.lost_relative_error = err_lost_;
+      r.lost_relative_error *= eps;
+      r.lost_relative_error /= lost_;
+    } else {
+      r.lost_relative_error = unknown;
+    }
     r.events = events_ + c_.boundaries();
     r.root_solves = stats_.solves + c_.root_solves();
     r.root_iterations = stats_.iterations + c_.root_iterations();
@@ -269,15 +300,25 @@ class EventPass {
   using Segment = typename Contact<Real>::Segment;
 
   // n and n' on a segment, remembering the last few evaluations: the sweep asks for the same
-  // ends and events several times.
+  // ends and events several times. A slot's numbers are made when it is first filled (a point
+  // fills few of them). A reference from put() or find() holds until the next put().
   struct Memo {
     static constexpr std::size_t size = 4;
+    static constexpr bool lazy = !std::is_floating_point_v<Real>;
+    using Slot = std::conditional_t<lazy, std::optional<Real>, Real>;
     std::size_t piece[size] = {};
-    Real x[size], v[size];
+    Slot x[size], v[size];
     std::size_t used = 0, next = 0;
+    template <class S>
+    static auto& get(S& s) {
+      if constexpr (lazy)
+        return *s;
+      else
+        return s;
+    }
     const Real* find(std::size_t p, const Real& at) const {
       for (std::size_t k = 0; k < used; ++k)
-        if (piece[k] == p && x[k] == at) return &v[k];
+        if (piece[k] == p && get(x[k]) == at) return &get(v[k]);
       return nullptr;
     }
     const Real& put(std::size_t p, const Real& at, Real value) {
@@ -285,28 +326,44 @@ class EventPass {
       next = (next + 1) % size;
       if (used < size) ++used;
       piece[k] = p;
-      x[k] = at;
-      v[k] = std::move(value);
-      return v[k];
+      if constexpr (lazy) {
+        if (!x[k]) {
+          x[k].emplace(at);
+          v[k].emplace(std::move(value));
+          return *v[k];
+        }
+      }
+      get(x[k]) = at;
+      get(v[k]) = std::move(value);
+      return get(v[k]);
     }
   };
-  Real n(const Segment& g, const Real& x) {
-    if (!g.contact) return Real(0);
+  // n, n' and the antiderivative at x. For multiprecision types references (a copy is an
+  // allocation) to the segment's ends, a memo's slot (valid until that memo's next put) or zero_.
+  using Value = std::conditional_t<std::is_floating_point_v<Real>, Real, const Real&>;
+  Value zero() const {
+    if constexpr (std::is_floating_point_v<Real>)
+      return Real(0);
+    else
+      return zero_;
+  }
+  Value n(const Segment& g, const Real& x) {
+    if (!g.contact) return zero();
     if (x == g.u) return g.nu;
     if (x == g.v) return g.nv;
     if (const Real* hit = n_memo_.find(g.piece, x)) return *hit;
     ++evaluations_;
     return n_memo_.put(g.piece, x, gamma_ + w_.value(g.piece, x));
   }
-  Real antiderivative(const Segment& g, const Real& x) {
+  Value antiderivative(const Segment& g, const Real& x) {
     if (x == g.u) return g.Wu;
     if (x == g.v) return g.Wv;
     if (const Real* hit = w_memo_.find(g.piece, x)) return *hit;
     ++evaluations_;
     return w_memo_.put(g.piece, x, w_.antiderivative(g.piece, x));
   }
-  Real dn(const Segment& g, const Real& x) {
-    if (!g.contact) return Real(0);
+  Value dn(const Segment& g, const Real& x) {
+    if (!g.contact) return zero();
     if (x == g.u) return g.dnu;
     if (x == g.v) return g.dnv;
     if (const Real* hit = dn_memo_.find(g.piece, x)) return *hit;
@@ -314,12 +371,21 @@ class EventPass {
     return dn_memo_.put(g.piece, x, w_.slope(g.piece, x));
   }
 
-  // Ramp of the current stick phase at phase x of a segment shifted by `shift` periods. Phases
-  // stay piece-local: x − a is exact-ish within a period, and the shift difference is an integer.
-  Real ramp(const Real& x, const Real& shift) const { return level_ + beta_ * ((x - a_) + (shift - a_shift_)); }
+  // Ramp of the current stick phase at phase x of a segment shifted by `shift` periods (0 or 1):
+  // level + β·((x − a) + (shift − a_shift)). Phases stay piece-local: x − a is exact-ish within a
+  // period, and the shift difference is an integer. Evaluated in place, with the same roundings:
+  // each multiprecision temporary is an allocation.
+  Real ramp(const Real& x, int shift) const {
+    if constexpr (std::is_floating_point_v<Real>) return level_ + beta_ * ((x - a_) + (shift - a_shift_));
+    Real r = x - a_;
+    if (shift != a_shift_) r += shift - a_shift_;
+    r *= beta_;
+    r += level_;
+    return r;
+  }
 
   void sweep_segment(const Segment& g, bool wrapped) {
-    const Real shift = wrapped ? Real(1) : Real(0);
+    const int shift = wrapped ? 1 : 0;
     Real pos = g.u;
     const Real n_u = n(g, g.u);
     if (!sticking_) {
@@ -376,7 +442,7 @@ class EventPass {
   }
 
   // First t in (p0, v] with n(t) ≤ ramp(t), if any. d = n − ramp has d' = n' − β monotone.
-  bool stick_end(const Segment& g, const Real& p0, const Real& shift, bool convex, Real& t) {
+  bool stick_end(const Segment& g, const Real& p0, int shift, bool convex, Real& t) {
     auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
     auto dd = [&](const Real& x) -> Real { return dn(g, x) - beta_; };
     const Real& v = g.v;
@@ -429,7 +495,7 @@ class EventPass {
   // - Wider types: a double root from the waveform's shadow, then Newton at the working
   //   precision. long double too: from the double guess it needs fewer x87 sin-cos evaluations
   //   than toms748 from the bracket (measured: the long double sine solve 2.97 -> 1.80 us).
-  Real stick_end_root(const Segment& g, const Real& shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
+  Real stick_end_root(const Segment& g, int shift, const Real& lo, const Real& hi, const Real& dlo, const Real& dhi) {
     auto d = [&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); };
     // Newton asks for d and d' at the same phase: evaluate n and n' together, remember both.
     auto d_joint = [&](const Real& x) -> Real {
@@ -457,7 +523,7 @@ class EventPass {
       return bracketed_root<Real>(d, lo, hi, dlo, dhi, "stick end (Eq. 8)", stats_);
     } else {
       const double g_ = static_cast<double>(gamma_), b_ = static_cast<double>(beta_);
-      const double lvl = static_cast<double>(level_), a0 = static_cast<double>(a_), sh = static_cast<double>(shift - a_shift_);
+      const double lvl = static_cast<double>(level_), a0 = static_cast<double>(a_), sh = shift - a_shift_;
       auto dd = [&](double x) { return g_ + w_.approx_value(g.piece, x) - (lvl + b_ * ((x - a0) + sh)); };
       const double l = static_cast<double>(lo), h = static_cast<double>(hi);
       double guess = (l + h) / 2;
@@ -486,7 +552,7 @@ class EventPass {
   }
 
   // `value_err`: the bound of the level as a value of n (value_bound of the anchor's piece).
-  void open_stick(const Real& at, const Real& shift, const Real& level, const Real& value_err) {
+  void open_stick(const Real& at, int shift, const Real& level, const Real& value_err) {
     using std::abs;
     sticking_ = true;
     a_ = at;
@@ -499,7 +565,7 @@ class EventPass {
     level_err_ = value_err + beta_ * (1 + abs(at) + shift);
     ++events_;
   }
-  void close_stick(const Real& at, const Real& shift) {
+  void close_stick(const Real& at, int shift) {
     sticking_ = false;
     stick_.push_back({a_, Real(at + (shift - a_shift_)), level_});
   }
@@ -508,14 +574,17 @@ class EventPass {
   // are stationary in them wherever s and n are continuous (at a stick end d/dt of the retained
   // area is ramp − n = 0; at a contact boundary n = 0; pieces join continuously), so phases
   // enter only through where a ramp is anchored (open_stick). Bound of one evaluation of n = γ + w:
-  Real value_bound() const {
-    using std::abs;
-    return abs(gamma_) + w_.maximum() - w_.minimum() + w_.value_error();
-  }
+  Real value_bound() const { return value_bound_with(w_.value_error()); }
   // The same on piece i.
-  Real value_bound(std::size_t i) const {
-    using std::abs;
-    return abs(gamma_) + w_.maximum() - w_.minimum() + w_.value_error(i);
+  Real value_bound(std::size_t i) const { return value_bound_with(w_.value_error(i)); }
+  // |γ| + max w − min w + e, left to right.
+  Real value_bound_with(const Real& e) const {
+    Real b = 0;
+    detail::add_abs(b, gamma_);
+    b += w_.maximum();
+    b -= w_.minimum();
+    b += e;
+    return b;
   }
 
   // The bound of the level of a stick that begins at pos by n' > β: value_bound, the error of n
@@ -527,22 +596,37 @@ class EventPass {
   Real onset_bound(const Segment& g, const Real& pos, const Real& level) {
     const Real bound = value_bound(g.piece);
     if (level != 0) return bound;
-    const Real slope = dn(g, pos);
+    const Value slope = dn(g, pos);
     const Real reach = 2 * std::numeric_limits<Real>::epsilon() * bound / slope;
     if (!(pos - w_.piece_begin(g.piece) > reach) || !(w_.piece_end(g.piece) - pos > reach)) return bound;
     return bound * beta_ / slope;
   }
 
   // ∫ n over [p, q] of segment g, exact or by quadrature; adds its rounding bound to `err`.
+  // Exact: γ·(q − p) + (W(q) − W(p)), and the bound (q − p)·value_bound + |W(q)| + |W(p)| + the
+  // antiderivative's errors at q and p + |γ|·(q − p), each summed left to right (in place: the
+  // same roundings as the expressions, without their multiprecision temporaries).
   Real area_n(const Segment& g, const Real& p, const Real& q, Real& err) {
     if (!g.contact || !(q > p)) return Real(0);
-    using std::abs;
-    err += (q - p) * value_bound(g.piece);
+    const Real width = q - p;
+    Real t = value_bound(g.piece);
+    t *= width;
+    err += t;
     if (method_ == AreaMethod::exact) {
-      const Real wq = antiderivative(g, q), wp = antiderivative(g, p);
-      err += abs(wq) + abs(wp) + w_.antiderivative_error(g.piece, q, wq) +
-             w_.antiderivative_error(g.piece, p, wp) + abs(gamma_) * (q - p);
-      return gamma_ * (q - p) + (wq - wp);
+      Real wq = antiderivative(g, q);
+      const Real wp = antiderivative(g, p);
+      Real gw = gamma_;
+      gw *= width;
+      t = 0;
+      detail::add_abs(t, wq);
+      detail::add_abs(t, wp);
+      t += w_.antiderivative_error(g.piece, q, wq);
+      t += w_.antiderivative_error(g.piece, p, wp);
+      detail::add_abs(t, gw);  // |γ·(q − p)| = |γ|·(q − p): rounding to nearest is symmetric
+      err += t;
+      wq -= wp;
+      gw += wq;
+      return gw;
     }
     return quad([&](const Real& x) -> Real { return n(g, x); }, p, q, err);
   }
@@ -580,28 +664,40 @@ class EventPass {
     err_normal_ += err;
     err_retained_ += err;
   }
-  void add_stick(const Segment& g, const Real& p, const Real& q, const Real& shift) {
+  void add_stick(const Segment& g, const Real& p, const Real& q, int shift) {
     if (!(q > p)) return;
-    using std::abs;
+    // The ramp's area (q − p)·(r(p) + r(q))/2 and its bound (q − p)·(|r(p)| + |r(q)| + the level's
+    // bound): rounding of its values, and the uncertainty of where it is anchored. In place, as
+    // in area_n.
+    const Real width = q - p;
     const Real rp = ramp(p, shift), rq = ramp(q, shift);
-    const Real r = (q - p) * (rp + rq) / 2;
-    // Ramp: rounding of its values, and the uncertainty of where it is anchored.
-    const Real ramp_err = (q - p) * (abs(rp) + abs(rq) + level_err_);
+    Real r = rp + rq;
+    r *= width;
+    r /= 2;
+    Real ramp_err = 0;
+    detail::add_abs(ramp_err, rp);
+    detail::add_abs(ramp_err, rq);
+    ramp_err += level_err_;
+    ramp_err *= width;
     retained_ += r;
     err_retained_ += ramp_err;
     Real err = 0;
     if (method_ == AreaMethod::exact || !g.contact) {
-      const Real a = area_n(g, p, q, err);
+      Real a = area_n(g, p, q, err);
       normal_ += a;
-      lost_ += a - r;
+      a -= r;
+      lost_ += a;
       err_normal_ += err;
-      err_lost_ += err + ramp_err;
+      err += ramp_err;
+      err_lost_ += err;
     } else {
       normal_ += area_n(g, p, q, err);
       err_normal_ += err;
       Real lerr = 0;
       lost_ += quad([&](const Real& x) -> Real { return n(g, x) - ramp(x, shift); }, p, q, lerr);
-      err_lost_ += lerr + ramp_err + err;
+      lerr += ramp_err;
+      lerr += err;
+      err_lost_ += lerr;
     }
   }
 
@@ -613,9 +709,11 @@ class EventPass {
   AreaMethod method_;
   RootStats stats_;
   bool sticking_ = false;
-  Real s_ = 0, a_ = 0, a_shift_ = 0, level_ = 0;
+  Real s_ = 0, a_ = 0, level_ = 0;
+  int a_shift_ = 0;
   Real retained_ = 0, normal_ = 0, lost_ = 0;
   Memo n_memo_, dn_memo_, w_memo_;
+  const Real zero_ = 0;
   Real err_retained_ = 0, err_normal_ = 0, err_lost_ = 0, level_err_ = 0;
   std::vector<StickPhase<Real>> stick_;
   std::size_t events_ = 0, quadratures_ = 0, evaluations_ = 0;

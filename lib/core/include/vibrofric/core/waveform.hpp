@@ -43,7 +43,7 @@ std::pair<Real, Real> sin_cos(const Real& x) {
     s = sin(x);
     c = cos(x);
   }
-  return {s, c};
+  return {std::move(s), std::move(c)};
 }
 
 // Reduced-precision steps (coarse_halley, coarse_sine_newton) pay from 500 bits: below, the first
@@ -312,8 +312,10 @@ Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
     const Real& tol = halley_tolerance<Real>();
     [[maybe_unused]] TrigAnchor own;
     TrigAnchor* const anchored = coarse_steps_pay<Real>() ? (anchor ? anchor : &own) : nullptr;
+    // The iteration's numbers, made once; each step is the expression in its comment, in place
+    // with the same roundings (an mpfr temporary is an allocation).
+    Real sh, ch, f, num, den, u;
     for (int it = 0; it < 64; ++it) {
-      Real sh, ch;
       if constexpr (is_runtime_precision_v<Real>) {
         if (anchored && anchored->empty()) anchored->set(h.backend().data());
         if (!anchored || !anchored->near(h.backend().data(), sh.backend().data(), ch.backend().data()))
@@ -321,12 +323,28 @@ Real acos_fast(const Real& y, TrigAnchor* anchor = nullptr) {
       } else {
         std::tie(sh, ch) = sin_cos(h);
       }
-      const Real f = sh - t;
+      difference(f, sh, t);  // f = sin h − t
       if (f == 0) break;
-      // Halley: Δ = 2 f f' / (2 f'² − f f''), with f' = cos h, f'' = −sin h.
-      const Real step = 2 * f * ch / (2 * ch * ch + f * sh);
-      h -= step;
-      if (abs(step) <= tol * abs(h)) return 2 * h;
+      // Halley: Δ = 2 f f' / (2 f'² − f f''), with f' = cos h, f'' = −sin h:
+      // Δ = 2·f·ch / (2·ch·ch + f·sh).
+      num = f;
+      num *= 2;
+      num *= ch;
+      den = ch;
+      den *= 2;
+      den *= ch;
+      u = f;
+      u *= sh;
+      den += u;
+      num /= den;
+      h -= num;
+      u = h;  // tol·|h|
+      if (u < 0) negate(u);
+      u *= tol;
+      if (abs_le(num, u)) {
+        h *= 2;
+        return h;
+      }
     }
     if (abs(sin_cos(h).first - t) <= 4 * std::numeric_limits<Real>::epsilon() * t) return 2 * h;
     throw SolverError("acos(" + short_str(y) + "): Halley iteration did not converge");
@@ -609,10 +627,27 @@ class Sine final : public Waveform<Real> {
       k = static_cast<long>(t);
       if (t < static_cast<double>(k)) --k;
     } else {
-      k = static_cast<long>(floor(4 * phi + Real(1) / 2));
+      // floor(4φ + 1/2) as floor((8φ + 1)/2), and φ − k/4 as (4φ − k)/4, in place: scaling by
+      // powers of two is exact, so the roundings are those of 4φ + 1/2 and φ − k/4.
+      arg = phi;
+      arg *= 8;
+      arg += 1;
+      arg /= 2;
+      k = detail::floor_to_long(arg);
     }
-    const Real r = phi - Real(k) / 4;
-    arg = r == 0 ? Real(0) : Real(two_pi * r);
+    if constexpr (std::is_floating_point_v<Real>) {
+      const Real r = phi - Real(k) / 4;
+      arg = r == 0 ? Real(0) : Real(two_pi * r);
+    } else {
+      arg = phi;
+      arg *= 4;
+      arg -= k;
+      arg /= 4;
+      if (arg == 0)
+        arg = 0;
+      else
+        arg *= two_pi;
+    }
     return k;
   }
   // sin and cos of 2πr rotated by k quarter turns: those of 2πφ.
@@ -620,10 +655,10 @@ class Sine final : public Waveform<Real> {
     long q = k % 4;
     if (q < 0) q += 4;
     switch (q) {
-      case 0: return {s, c};
-      case 1: return {c, Real(-s)};
-      case 2: return {Real(-s), Real(-c)};
-      default: return {Real(-c), s};
+      case 0: return {std::move(s), std::move(c)};
+      case 1: detail::negate(s); return {std::move(c), std::move(s)};
+      case 2: detail::negate(s); detail::negate(c); return {std::move(s), std::move(c)};
+      default: detail::negate(c); return {std::move(c), std::move(s)};
     }
   }
   // sin 2πφ and cos 2πφ from the nearest quarter period: exact at the quarters, accurate near the
@@ -631,10 +666,10 @@ class Sine final : public Waveform<Real> {
   std::pair<Real, Real> sin_cos_2pi(const Real& phi) const {
     Real arg;
     const long k = quarter_split(phi, two_pi_, arg);
-    Real s = 0, c = 1;
-    if (arg == 0) return quarter_turns(k, std::move(s), std::move(c));
+    if (arg == 0) return quarter_turns(k, Real(0), Real(1));
     if constexpr (is_runtime_precision_v<Real>) {
       if (detail::coarse_steps_pay<Real>()) {
+        Real s, c;
         ArgAnchor& an = arg_anchor();
         const mpfr_srcptr x = arg.backend().data();
         if (an.bits == mpfr_get_prec(x) && an.a.near(x, s.backend().data(), c.backend().data()))
@@ -644,8 +679,8 @@ class Sine final : public Waveform<Real> {
         if (an.a.near(x, s.backend().data(), c.backend().data())) return quarter_turns(k, std::move(s), std::move(c));
       }
     }
-    std::tie(s, c) = detail::sin_cos(arg);
-    return quarter_turns(k, std::move(s), std::move(c));
+    auto [s2, c2] = detail::sin_cos(arg);
+    return quarter_turns(k, std::move(s2), std::move(c2));
   }
   // A phase whose acos anchor is at hand (mpfr): its sin_cos_2pi from the anchor into trig's
   // cache, where mpfr_can_round decides it (the same bits as the call); else nothing.

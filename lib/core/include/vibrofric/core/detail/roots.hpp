@@ -10,6 +10,7 @@
 #include <string>
 
 #include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric::detail {
 
@@ -79,12 +80,12 @@ template <class Real, class F, class DF>
 Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, const Real& noise, const char* what,
                    RootStats& stats) {
   using std::abs;
-  using std::max;
   using std::sqrt;
+  using std::swap;
   // A root at a bracket end (e.g. a stick that ends exactly at a peak, sine β = 3, γ = −1/2)
   // leaves f there at the rounding level: Newton would step past the end and bisect ~100 times.
-  if (abs(fb) <= noise) return b;
-  if (abs(fa) <= noise) return a;
+  if (abs_le(fb, noise)) return b;
+  if (abs_le(fa, noise)) return a;
   if ((fa > 0) == (fb > 0))
     throw SolverError(std::string(what) + ": no sign change on [" + short_str(a) + ", " + short_str(b) + "]");
   // In long double (the widest type whose guess comes from double, solver.hpp) the step itself
@@ -95,11 +96,15 @@ Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, 
                                                                                                     : Real(sqrt(eps) / 64);
   if (!(x > a && x < b)) x = (a + b) / 2;
   Real dx_old = b - a, dx = dx_old;
+  // The iteration's numbers, made once: each step below is the expression in its comment,
+  // evaluated in place with the same roundings (an mpfr temporary is an allocation).
+  Real next, trial, t, u, scale;
+  const Real four_eps = 4 * eps;
   ++stats.solves;
   for (std::uintmax_t it = 1; it <= stats.max_iterations; ++it) {
     ++stats.iterations;
     const Real fx = f(x);
-    if (abs(fx) <= noise) return x;
+    if (abs_le(fx, noise)) return x;
     if ((fx > 0) == (fa > 0)) {
       a = x;
       fa = fx;
@@ -107,22 +112,40 @@ Real polished_root(F f, DF df, Real a, Real b, Real fa, const Real& fb, Real x, 
       b = x;
     }
     const Real d = df(x);
-    Real next = (a + b) / 2;
+    midpoint(next, a, b);  // (a + b) / 2
     bool newton = false;
     if (d != 0) {
-      const Real trial = x - fx / d;
-      if (trial == x) return x;  // the step is below the last bit
-      newton = trial >= a && trial <= b && abs(trial - x) <= abs(dx_old) / 2;
-      if (newton) next = trial;
+      trial = fx;
+      trial /= d;
+      difference(trial, x, trial);  // x − fx / d
+      if (trial == x) return x;     // the step is below the last bit
+      if (trial >= a && trial <= b) {
+        difference(t, trial, x);
+        u = dx_old;
+        if (u < 0) negate(u);
+        u /= 2;
+        newton = abs_le(t, u);  // |trial − x| ≤ |dx_old| / 2
+      }
+      if (newton) swap(next, trial);
     }
-    dx_old = dx;
-    dx = next - x;
-    x = next;
-    const Real scale = abs(x) > 0 ? abs(x) : Real(1);
-    if (newton && abs(dx) <= small * scale) return x;
+    swap(dx_old, dx);
+    difference(dx, next, x);  // dx = next − x
+    swap(x, next);
+    scale = x;  // |x| > 0 ? |x| : 1
+    if (scale < 0) negate(scale);
+    if (!(scale > 0)) scale = 1;
+    t = small;
+    t *= scale;
+    if (newton && abs_le(dx, t)) return x;  // |dx| ≤ small·scale
     // Phases are absolute: w(φ) near φ = 0 carries rounding of order ε (e.g. 1 − (1 − 4φ)^p), so
     // a root there is not determined beyond ε·1.
-    if (b - a <= 4 * std::numeric_limits<Real>::epsilon() * max(scale, Real(1))) return (a + b) / 2;
+    t = four_eps;  // 4ε·max(scale, 1)
+    if (scale > 1) t *= scale;
+    difference(u, b, a);
+    if (u <= t) {
+      midpoint(u, a, b);
+      return u;
+    }
   }
   throw SolverError(std::string(what) + ": Newton iteration did not converge in " +
                     std::to_string(stats.max_iterations) + " iterations on [" + short_str(a) + ", " + short_str(b) + "]");
