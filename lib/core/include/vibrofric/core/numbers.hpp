@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <type_traits>
 
 namespace vibrofric {
@@ -72,9 +73,15 @@ Real rounded(const mpfr& x, unsigned mpfr_digits10 = static_cast<unsigned>(worki
 
 // In-place arithmetic for hot paths, where each mpfr temporary is an allocation: the same
 // correctly rounded operations as the expressions they replace, so every result is bitwise
-// unchanged (every number of a solve is at the working precision; with a wider operand they round
-// at the wider precision, as compound assignment does). x += |y| for x not −0 (a sum of
-// magnitudes): x − y for negative y, as rounding to nearest is symmetric.
+// unchanged where the operands are at the working precision (values made after PrecisionScope, as
+// numbers.hpp asks). An operand made at more digits makes them round at its precision, as
+// compound assignment does; Boost's operators on a temporary round at the temporary's.
+// The rewritten expressions rely on et_off: with expression templates Boost may reorder them.
+static_assert(std::is_same_v<bin50, boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>,
+                                                                 boost::multiprecision::et_off>> &&
+              std::is_same_v<bin100, boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>,
+                                                                  boost::multiprecision::et_off>>);
+// x += |y| for x not −0 (a sum of magnitudes): x − y for negative y is the same exact sum.
 template <class Real>
 void add_abs(Real& x, const Real& y) {
   if constexpr (std::is_floating_point_v<Real>) {
@@ -114,10 +121,11 @@ void midpoint(Real& x, const Real& a, const Real& b) {
   x += b;
   x /= 2;
 }
-// floor(x) as a long (x within its range).
+// floor(x) as a long (x within its range; NaN throws, as Boost's conversion does).
 template <class Real>
 long floor_to_long(const Real& x) {
   if constexpr (is_runtime_precision_v<Real>) {
+    if (mpfr_nan_p(x.backend().data())) throw std::runtime_error("Could not convert NaN to integer.");
     return mpfr_get_si(x.backend().data(), MPFR_RNDD);
   } else {
     using std::floor;
