@@ -1,0 +1,9 @@
+// The rig dynamics solver in double, compiled once (core/dynamics.hpp).
+#include "rig_solver.hpp"
+
+namespace vibrofric {
+namespace detail {
+template class RigEngine<double>;
+}  // namespace detail
+template class RigSolver<double>;
+}  // namespace vibrofric

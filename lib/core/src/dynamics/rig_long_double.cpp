@@ -1,0 +1,9 @@
+// The rig dynamics solver in long double, compiled once (core/dynamics.hpp).
+#include "rig_solver.hpp"
+
+namespace vibrofric {
+namespace detail {
+template class RigEngine<long double>;
+}  // namespace detail
+template class RigSolver<long double>;
+}  // namespace vibrofric
