@@ -1,5 +1,5 @@
-// Fuzz target: the tool's command line, in process (lib/tool/main.cpp with main renamed, see
-// tool_main.cpp): commands, flags, --flag=value forms, numbers, the β range FROM:TO:N, γ lists,
+// Fuzz target: the tool's command line, in process (run_tool of lib/tool/cli.hpp, what the tool's
+// main() calls): commands, flags, --flag=value forms, numbers, the β range FROM:TO:N, γ lists,
 // wave names, precisions and solver controls. The input is split at newlines into argv.
 //
 // The tool's contract (README "Errors"): exit 0 with output and no NaN/inf (but beta_c and
@@ -30,7 +30,9 @@
 
 #include "fuzz_common.hpp"
 
-int vibrofric_tool_main(int argc, char** argv);
+namespace vibrofric::tool {
+int run_tool(int argc, char** argv);  // lib/tool/cli.hpp
+}
 
 namespace {
 
@@ -173,7 +175,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::ostringstream out, err;
   auto* cout_buf = std::cout.rdbuf(out.rdbuf());
   auto* cerr_buf = std::cerr.rdbuf(err.rdbuf());
-  const int rc = vibrofric_tool_main(static_cast<int>(args.size()), argv.data());
+  const int rc = vibrofric::tool::run_tool(static_cast<int>(args.size()), argv.data());
   std::cout.rdbuf(cout_buf);
   std::cerr.rdbuf(cerr_buf);
   const std::string o = out.str(), e = err.str();

@@ -1,0 +1,98 @@
+// physical: from physical inputs in SI units (Eqs. 1, 5, 14), one point or a sweep of one input.
+#include <algorithm>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "vibrofric/api/commands.hpp"
+
+namespace vibrofric::tool {
+namespace {
+
+// `physical`'s inputs as typed (`texts`, swept or not), each named by its flag (the input u_mean is
+// --u-mean), and its controls.
+PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, std::string>& texts, const WaveSpec& wave) {
+  PhysicalRequest request;
+  for (auto& [member, input] : request.inputs()) {
+    std::string flag = member;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    input->name = "--" + flag;
+    if (const auto it = texts.find(flag); it != texts.end()) input->text = it->second;
+  }
+  std::vector<std::string> warnings;
+  PhysicalOutputs out = physical_point(wave, request, precision_of(f), batch_options(f), &warnings);
+  // Each warning once (a sweep repeats them), on stderr after the output, as the diagnostics.
+  static std::set<std::string> said;
+  for (const auto& w : warnings)
+    if (said.insert(w).second) pending_diagnostics += "vibrofric: warning: " + w + "\n";
+  return out;
+}
+
+// Names and values of output records, for CSV and JSON.
+std::vector<std::string> names_of(const PhysicalOutputs& r) {
+  std::vector<std::string> out;
+  for (const auto& [name, value] : r) out.push_back(name);
+  return out;
+}
+std::vector<std::string> values_of(const PhysicalOutputs& r) {
+  std::vector<std::string> out;
+  for (const auto& [name, value] : r) out.push_back(value);
+  return out;
+}
+
+}  // namespace
+
+// `physical` at one point, or over a range of one input (--v0, --A, --f, --F-N or --u-mean as
+// FROM:TO:N or log:FROM:TO:N): one row per value, streamed as it is computed.
+int run_physical(const Flags& f) {
+  const WaveSpec wave = read_wave(f);
+  std::string swept;
+  for (const char* name : {"v0", "A", "f", "F-N", "u-mean"})
+    if (f.texts.count(name) && f.texts.at(name).find(':') != std::string::npos) {
+      if (!swept.empty())
+        throw InputError("--" + swept + " and --" + name + " are both ranges: expected one swept input at a time");
+      swept = name;
+    }
+  if (swept.empty()) {
+    const Format format = f.format.value_or(Format::text);
+    const PhysicalOutputs rec = physical_record(f, f.texts, wave);
+    if (format == Format::csv) {
+      write_csv_row(names_of(rec));
+      write_csv_row(values_of(rec));
+    } else if (format == Format::json) {
+      std::cout << json_record(names_of(rec), values_of(rec)).dump(1) << '\n';
+    } else {
+      for (const auto& [name, value] : rec) std::cout << name << " = " << value << '\n';
+    }
+    return 0;
+  }
+  const Format format = f.format.value_or(Format::csv);
+  if (format == Format::text) throw InputError("--format text: a physical sweep writes csv (the default) or json");
+  // A range of u_mean may start below contact (gamma < -1 for the sine): such rows are errors, as at one point.
+  const auto range = value_range(f.texts.at(swept), "--" + swept, swept == "u-mean");
+  // Every input's domain is monotone along a range: its two ends decide it before the first row.
+  std::map<std::string, std::string> texts = f.texts;
+  auto at = [&](std::size_t i) {
+    texts[swept] = range[i];
+    return physical_record(f, texts, wave);
+  };
+  const PhysicalOutputs first = at(0), last = at(range.size() - 1);
+  for (std::size_t i = 0; i < range.size(); ++i) {
+    PhysicalOutputs rec = i == 0 ? first : i + 1 == range.size() ? last : at(i);
+    rec.insert(rec.begin(), {swept, range[i]});  // the swept input leads each row, under its flag's name
+    if (format == Format::csv) {
+      if (i == 0) write_csv_row(names_of(rec));
+      write_csv_row(values_of(rec));
+    } else {
+      std::cout << (i ? ",\n " : "[\n ") << json_record(names_of(rec), values_of(rec)).dump();
+    }
+    std::cout.flush();
+  }
+  if (format == Format::json) std::cout << "\n]\n";
+  return 0;
+}
+
+}  // namespace vibrofric::tool

@@ -1,0 +1,106 @@
+// mu and psi: one point, in text, CSV or JSON, with --certify's proof or, with --kappa/--omega,
+// the rig dynamics' fractions and sizes.
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace vibrofric::tool {
+namespace {
+
+std::string rounding_name(const Precision& p) {
+  return p.type == NumberType::mpfr ? "to " + std::to_string(p.digits) + " significant digits"
+                                    : "to the nearest " + number_type_name(p.type);
+}
+
+// One point's record as CSV (a header and a row) or JSON (an object); status 0.
+int write_record(const std::vector<std::string>& names, const std::vector<std::string>& values, Format format) {
+  if (format == Format::csv) {
+    write_csv_row(names);
+    write_csv_row(values);
+  } else {
+    std::cout << json_record(names, values).dump(1) << '\n';
+  }
+  return 0;
+}
+
+// mu with --kappa/--omega: the value, then the periodic state's fractions and sizes.
+int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, const Precision& precision, Format format) {
+  const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver);
+  char floquet[32];
+  std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
+  const std::vector<std::pair<std::string, std::string>> fields{
+      {"stick_fraction", r.stick_fraction}, {"slip_fraction", r.slip_fraction},
+      {"backward_slip_fraction", r.backward_fraction}, {"flight_fraction", r.flight_fraction},
+      {"amplitude", r.amplitude}, {"largest_backward_slip", r.largest_backward_slip},
+      {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error}};
+  if (format == Format::text) {
+    std::cout << r.mu << '\n';
+    for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
+    return 0;
+  }
+  std::vector<std::string> names{"wave", "beta", "gamma", "kappa", "omega", "zeta", "mu_over_mu0"};
+  std::vector<std::string> values{wave.name, p.beta, p.gamma, opt.rig->kappa, opt.rig->omega, opt.rig->zeta, r.mu};
+  for (const auto& [name, value] : fields) {
+    names.push_back(name);
+    values.push_back(value);
+  }
+  return write_record(names, values, format);
+}
+
+int run_point(const Flags& f, Quantity q) {
+  const WaveSpec wave = read_wave(f);
+  const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : std::string()};
+  const BatchOptions opt = batch_options(f);
+  if (q == Quantity::psi && opt.profile.kind != ProfileKind::flat)
+    throw InputError("psi --profile " + detail::visible(*f.profile_text) +
+                     ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
+                     "so Eq. 13's separation does not exist (use mu)");
+  const Format format = f.format.value_or(Format::text);
+  const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
+  const Precision precision = precision_of(f);
+  if (opt.rig) return print_rig(wave, p, opt, precision, format);
+  const std::string value = evaluate(wave, q, {p}, precision, opt).front();
+  std::optional<Certificate> cert;
+  if (certifier) cert = certified(*certifier, q, p, precision, value);
+  if (format == Format::text) {
+    std::cout << value << '\n';
+    if (cert)
+      std::cout << (cert->exact.empty() ? "enclosure: [" + cert->lower_text + ", " + cert->upper_text + "]" : "exact: " + cert->exact)
+                << "\nproven: " << value << " is the exact value rounded " << rounding_name(precision)
+                << (cert->nearest.size() > 1 ? " (a tie: it lies midway between " + cert->nearest[0] + " and " + cert->nearest[1] + ")" : "")
+                << '\n';
+    return 0;
+  }
+  std::vector<std::string> names{"wave"}, values{wave.name};
+  if (opt.profile.kind != ProfileKind::flat) {
+    names.push_back("profile");
+    values.push_back(opt.profile.name);
+  }
+  names.push_back("beta");
+  values.push_back(p.beta);
+  if (q == Quantity::mu) {
+    names.push_back("gamma");
+    values.push_back(p.gamma);
+  }
+  names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
+  values.push_back(value);
+  if (cert) {
+    for (const auto& [name, v] : certificate_fields(*cert, cert->exact.empty())) {
+      names.push_back(name);
+      values.push_back(v);
+    }
+  }
+  return write_record(names, values, format);
+}
+
+}  // namespace
+
+int run_mu(const Flags& f) { return run_point(f, Quantity::mu); }
+int run_psi(const Flags& f) { return run_point(f, Quantity::psi); }
+
+}  // namespace vibrofric::tool
