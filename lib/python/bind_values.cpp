@@ -1,0 +1,189 @@
+// Binds vibrofric.mu and vibrofric.psi (broadcasting over beta and gamma, broadcast.hpp) and
+// vibrofric.rig (rig dynamics at one point).
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "broadcast.hpp"
+#include "common.hpp"
+#include "vibrofric/api/limits.hpp"
+#include "vibrofric/api/rig.hpp"
+
+namespace vibrofric::python {
+
+namespace {
+
+unsigned to_threads(const py::object& x) {
+  const auto t = optional_int(x, "threads");
+  if (!t) return 0;
+  if (*t < 0 || *t > static_cast<long long>(max_threads))
+    throw InputError("threads = " + std::to_string(*t) + ": expected 0 (all cores) to " + std::to_string(max_threads));
+  return static_cast<unsigned>(*t);
+}
+
+constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False, kappa=None, omega=None, zeta=None)
+
+The macroscopic coefficient of friction mu/mu0 = int s dphi / int n dphi (Eq. 15; Eqs. 9, 13 of
+the paper) for sliding velocity beta (Eq. 5) and mean indentation gamma = u/A (Eq. 14), in the
+periodic steady state; curved indenters (profile) by the method of dimensionality reduction.
+
+wave      a name -- 'sine' (harmonic), 'triangle', 'sawtooth-right', 'sawtooth-left', 'square',
+          'power:P', 'samples:FILE', 'fourier:FILE' -- or a Wave from wave(), samples(), fourier()
+          or fit().
+beta      > 0; gamma: contact requires gamma + max w > 0 (gamma > -1 for the catalogue waves).
+          Scalars, arrays or nested sequences; they broadcast like numpy ufunc arguments.
+          Floats mean the shortest decimal text of their float64 value (0.1 is the decimal 0.1,
+          as on the tool's command line; a numpy.float32 is widened to float64 first, so
+          float32(1.1) is 1.100000023841858); decimal strings are exact at any precision.
+profile   'flat' (the paper's punch), 'sphere', 'cone', 'power:N', 'wearflat:LAMBDA',
+          'profile:FILE', or a Profile from profile().
+type      None/'double' (float64 ndarray, correctly rounded: the nearest double of the exact
+          value, as the tool's --type double), 'long-double' (numpy.longdouble),
+          'cpp_bin_float_50', 'cpp_bin_float_100', 'mpfr'.
+digits    D significant digits (mpfr): values correct to D digits as decimal strings, or as
+          mpmath.mpf (created at D + 3 digits) when mpmath is importable.
+threads   worker threads for the batch; 0: all cores. The GIL is released while it runs.
+max_iterations  root-finder budget per event (default 200 + working bits).
+escalate  double and fixed types: recompute in mpfr where the type's rounding is not enough.
+strings   return the library's decimal strings for every type.
+kappa, omega, zeta  rig dynamics (the tool's --kappa, --omega, --zeta; model.md): a body of mass m
+          on a system spring k_s with damping c instead of the paper's quasi-static spring;
+          kappa = k_s/k_x > 0, omega = sqrt(k_x/m)/(2 pi f) > 0, zeta = c/(2 sqrt(m k_s)) >= 0
+          (default 0). Scalars (decimal strings or floats); flat punch; sine, Fourier and
+          piecewise-linear waves.
+
+Scalar arguments give a scalar. Raises ValueError (bad input, gamma without contact, beta <= 0)
+and vibrofric.SolverError (the solver did not converge), for an array the first failing
+element's with its index ('at index (2,): ...'); never returns NaN for a failure, unless
+nan_on_error=True (scipy's convention): then a failing element is NaN (None in object arrays)
+and the others answer.
+
+certify=True (every wave on the flat punch: the sine, 'power:P', Fourier series, and the
+piecewise-linear 'triangle', 'sawtooth-right', 'sawtooth-left', 'square', 'power:1' and samples):
+returns (lo, hi) as fractions.Fraction (arrays of them for array arguments), an enclosure of the
+exact value narrowed until it proves that the value computed at type/digits is its correct
+rounding (a value that is not raises vibrofric.SolverError). For the piecewise-linear waves
+lo == hi, the exact rational, and float(lo) is the correctly rounded double; for the others
+lo < hi are the ends of an interval computation. Curved profiles raise ValueError.
+)doc";
+
+constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
+
+The reduction function Psi_w(beta) = int (n - s) dphi without jumping (Eq. 12), which does not
+depend on gamma, so that mu/mu0 = 1 - Psi_w(beta)/gamma for gamma >= 1 (Eq. 13). For the
+triangle Psi = (4 - beta)/(4 + beta) (Eq. 17). Arguments and results as mu() (certify=True
+too); beta broadcasts.
+Flat punch only (Psi does not exist for curved profiles).
+)doc";
+
+}  // namespace
+
+void bind_values(py::module_& m) {
+  m.def(
+      "mu",
+      [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& profile,
+         const py::object& digits, const py::object& type, const py::object& threads, const py::object& max_iterations,
+         bool escalate, bool strings, bool nan_on_error, bool certify, const py::object& kappa,
+         const py::object& omega, const py::object& zeta) {
+        Evaluation e;
+        e.quantity = Quantity::mu;
+        if (!kappa.is_none() || !omega.is_none() || !zeta.is_none()) {
+          if (kappa.is_none() || omega.is_none())
+            throw InputError(std::string("missing ") + (kappa.is_none() ? "kappa" : "omega") +
+                             ": rig dynamics needs kappa and omega (zeta is optional)");
+          if (certify) throw InputError("certify: certified values exist for the quasi-static model only, not with kappa/omega");
+          if (!escalate) throw InputError("escalate=False: rig dynamics is always computed in mpfr at two precisions");
+          e.rig.emplace();
+          e.rig->kappa = scalar_text(kappa, "kappa");
+          e.rig->omega = scalar_text(omega, "omega");
+          e.rig->zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
+          check_rig(*e.rig);
+        }
+        e.nan_on_error = nan_on_error;
+        e.certify = certify;
+        e.digits = optional_int(digits, "digits");
+        e.type = type;
+        e.profile = to_profile(profile);
+        e.profile_text = py_repr(profile);
+        if (e.rig && e.profile.kind != ProfileKind::flat)
+          throw InputError("kappa/omega with profile = " + e.profile_text +
+                           ": the springs of a curved contact share the body, so the MDR row does not decouple "
+                           "(rig dynamics: the flat punch only)");
+        e.threads = to_threads(threads);
+        if (auto mi = optional_int(max_iterations, "max_iterations")) e.max_iterations = *mi;
+        e.escalate = escalate;
+        e.strings = strings;
+        return evaluate_broadcast(wave, beta, gamma, e);
+      },
+      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "profile"_a = "flat", "digits"_a = py::none(),
+      "type"_a = py::none(), "threads"_a = 0, "max_iterations"_a = py::none(), "escalate"_a = true,
+      "strings"_a = false, "nan_on_error"_a = false, "certify"_a = false, "kappa"_a = py::none(),
+      "omega"_a = py::none(), "zeta"_a = py::none(), mu_doc);
+
+  m.def(
+      "psi",
+      [](const py::object& wave, const py::object& beta, const py::object& digits, const py::object& type,
+         const py::object& threads, const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error,
+         bool certify) {
+        Evaluation e;
+        e.quantity = Quantity::psi;
+        e.nan_on_error = nan_on_error;
+        e.certify = certify;
+        e.digits = optional_int(digits, "digits");
+        e.type = type;
+        e.threads = to_threads(threads);
+        if (auto mi = optional_int(max_iterations, "max_iterations")) e.max_iterations = *mi;
+        e.escalate = escalate;
+        e.strings = strings;
+        return evaluate_broadcast(wave, beta, py::none(), e);
+      },
+      "wave"_a, "beta"_a, py::kw_only(), "digits"_a = py::none(), "type"_a = py::none(), "threads"_a = 0,
+      "max_iterations"_a = py::none(), "escalate"_a = true, "strings"_a = false, "nan_on_error"_a = false,
+      "certify"_a = false, psi_doc);
+
+  m.def(
+      "rig",
+      [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& kappa,
+         const py::object& omega, const py::object& zeta, const py::object& digits, const py::object& type, bool strings) {
+        const WaveSpec w = to_wave(wave);
+        const Precision precision = to_precision(optional_int(digits, "digits"), type);
+        RigSpec spec;
+        spec.kappa = scalar_text(kappa, "kappa");
+        spec.omega = scalar_text(omega, "omega");
+        spec.zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
+        const Point point{scalar_text(beta, "beta"), scalar_text(gamma, "gamma")};
+        RigReport r;
+        {
+          py::gil_scoped_release release;
+          r = evaluate_rig(w, point, spec, precision);
+        }
+        const Converter convert(result_form(precision, strings), precision);
+        char floquet[32];
+        std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
+        py::dict d;
+        for (const auto& [name, value] : std::vector<std::pair<const char*, std::string>>{
+                 {"mu_over_mu0", r.mu}, {"stick_fraction", r.stick_fraction}, {"slip_fraction", r.slip_fraction},
+                 {"backward_slip_fraction", r.backward_fraction}, {"flight_fraction", r.flight_fraction},
+                 {"amplitude", r.amplitude}, {"largest_backward_slip", r.largest_backward_slip},
+                 {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error}})
+          d[py::str(name)] = convert(value);
+        return d;
+      },
+      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "kappa"_a, "omega"_a, "zeta"_a = py::none(), "digits"_a = py::none(),
+      "type"_a = py::none(), "strings"_a = false, R"doc(rig(wave, beta, gamma, *, kappa, omega, zeta=None, digits=None, type=None, strings=False) -> dict
+
+Rig dynamics at one point (the tool's mu --kappa --omega --zeta; model.md, "Rig dynamics"): a body
+of mass m on a system spring k_s (damper c), kappa = k_s/k_x, omega = sqrt(k_x/m)/(2 pi f),
+zeta = c/(2 sqrt(m k_s)). Returns the tool's fields, in its order: mu_over_mu0 (as mu() would),
+stick_fraction, slip_fraction, flight_fraction (they add to 1), backward_slip_fraction (the part of
+slip_fraction slipping backward), amplitude (half the peak-to-peak of X - beta phi) and
+largest_backward_slip (both in units of mu0 k_z A/k_x), floquet_multiplier (0: below what
+difference quotients resolve) and relative_error_estimate (the two precisions apart). Values as
+mu(): float for type None/'double', or decimal strings with strings=True; the fractions carry
+the digits the two precisions agree on. ValueError for bad input, vibrofric.SolverError where no
+periodic state is found.
+)doc");
+}
+
+}  // namespace vibrofric::python
