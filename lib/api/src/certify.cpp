@@ -119,14 +119,13 @@ namespace {
 // The texts of the correctly rounded value(s) of x at the precision.
 std::vector<std::string> rounded_texts(const Rational& x, const Precision& precision) {
   const int digits = output_digits(precision);
-  switch (precision.type) {
-    case NumberType::float64: return nearest_in<double>(x, digits);
-    case NumberType::float80: return nearest_in<long double>(x, digits);
-    case NumberType::bin50: return nearest_in<bin50>(x, digits);
-    case NumberType::bin100: return nearest_in<bin100>(x, digits);
-    case NumberType::mpfr: return nearest_decimals(x, digits);
-  }
-  return {};
+  return visit_number_type(precision.type, [&](auto tag) {
+    using Real = typename decltype(tag)::type;
+    if constexpr (is_runtime_precision_v<Real>)
+      return nearest_decimals(x, digits);
+    else
+      return nearest_in<Real>(x, digits);
+  });
 }
 
 Rational rational_of(const mpfr& x) {
@@ -146,14 +145,13 @@ std::string directed(const mpfr& x, int digits, mpfr_rnd_t rounding) {
 
 // Bits to start from: the precision's, and some to spare for the enclosure's width.
 mpfr_prec_t first_bits(const Precision& p) {
-  switch (p.type) {
-    case NumberType::float64: return 53 + 40;
-    case NumberType::float80: return 64 + 40;
-    case NumberType::bin50: return std::numeric_limits<bin50>::digits + 40;
-    case NumberType::bin100: return std::numeric_limits<bin100>::digits + 40;
-    case NumberType::mpfr: return static_cast<mpfr_prec_t>(p.digits * 3.3219280948873623) + 40;
-  }
-  return 128;
+  return visit_number_type(p.type, [&](auto tag) {
+    using Real = typename decltype(tag)::type;
+    if constexpr (is_runtime_precision_v<Real>)
+      return static_cast<mpfr_prec_t>(p.digits * 3.3219280948873623) + 40;
+    else
+      return static_cast<mpfr_prec_t>(std::numeric_limits<Real>::digits) + 40;
+  });
 }
 
 }  // namespace

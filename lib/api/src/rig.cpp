@@ -83,13 +83,13 @@ std::string agreed(const mpfr& a, const mpfr& b, int most) {
 
 // Whether every value of [lo, hi] prints (or rounds to the type) alike.
 bool decides(const mpfr& lo, const mpfr& hi, const Precision& precision, int digits) {
-  switch (precision.type) {
-    case NumberType::float64: return detail::rounded<double>(lo) == detail::rounded<double>(hi);
-    case NumberType::float80: return detail::rounded<long double>(lo) == detail::rounded<long double>(hi);
-    case NumberType::bin50: return detail::rounded<bin50>(lo) == detail::rounded<bin50>(hi);
-    case NumberType::bin100: return detail::rounded<bin100>(lo) == detail::rounded<bin100>(hi);
-    default: return format_significant(lo, digits) == format_significant(hi, digits);
-  }
+  return visit_number_type(precision.type, [&](auto tag) {
+    using Real = typename decltype(tag)::type;
+    if constexpr (is_runtime_precision_v<Real>)
+      return format_significant(lo, digits) == format_significant(hi, digits);
+    else
+      return detail::rounded<Real>(lo) == detail::rounded<Real>(hi);
+  });
 }
 
 }  // namespace
@@ -226,14 +226,13 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
 
 std::string detail::rig_text(const mpfr& v, const Precision& precision) {
   const int digits = output_digits(precision);
-  switch (precision.type) {
-    case NumberType::float64: return format_significant(detail::rounded<double>(v), digits);
-    case NumberType::float80: return format_significant(detail::rounded<long double>(v), digits);
-    case NumberType::bin50: return format_significant(detail::rounded<bin50>(v), digits);
-    case NumberType::bin100: return format_significant(detail::rounded<bin100>(v), digits);
-    case NumberType::mpfr: break;
-  }
-  return format_significant(v, digits);
+  return visit_number_type(precision.type, [&](auto tag) {
+    using Real = typename decltype(tag)::type;
+    if constexpr (is_runtime_precision_v<Real>)
+      return format_significant(v, digits);
+    else
+      return format_significant(detail::rounded<Real>(v), digits);
+  });
 }
 
 }  // namespace vibrofric

@@ -16,30 +16,12 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/limits.hpp"
+#include "vibrofric/api/number_type.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/api/rig.hpp"
 #include "vibrofric/core/solver.hpp"
 
 namespace vibrofric {
-
-enum class NumberType { float64, float80, bin50, bin100, mpfr };
-
-// The type a name denotes (double, long-double, cpp_bin_float_50, cpp_bin_float_100, mpfr), or
-// none; a front end words the refusal in its own terms, listing number_type_choices.
-std::optional<NumberType> number_type_named(const std::string& text);
-inline constexpr const char* number_type_choices = "double, long-double, cpp_bin_float_50, cpp_bin_float_100 or mpfr";
-std::string number_type_name(NumberType t);
-// Every type's name, in the order of number_type_choices (a front end's "did you mean").
-std::vector<std::string> number_type_names();
-
-struct Precision {
-  NumberType type = NumberType::mpfr;
-  int digits = 50;  // mpfr: significant digits asked for, in [min_digits, max_digits]
-};
-
-// Digits printed for a precision: the request for mpfr, round-trip digits for hardware types,
-// 50 or 100 for cpp_bin_float.
-int output_digits(const Precision& p);
 
 enum class Quantity { mu, psi };
 
