@@ -6,7 +6,13 @@
     verification/  core, api and verification
     tool/, python/ api, and verification/claims.hpp (the `verify` command): the front ends
 
-Exit status 1 with one line per include that crosses a layer the wrong way, 0 otherwise.
+Two more rules keep the units small and the core free of text I/O:
+    every file under lib/ has at most MAX_LINES lines;
+    core/ includes no stream or stdio header (<fstream>, <sstream>, <iostream>, <istream>,
+    <ostream>, <cstdio>): it reads no files and formats no text streams.
+
+Exit status 1 with one line per include that crosses a layer the wrong way (or per broken rule),
+0 otherwise.
 Usage: check.py [LIB_DIR]   (default: the lib/ folder next to tests/)
        check.py --self-test   (the check finds a planted violation of each kind)
 """
@@ -23,6 +29,8 @@ ALLOWED = {
     "python": ("vibrofric/api/", "vibrofric/verification/claims.hpp"),
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](vibrofric/[^>"]+)[>"]')
+MAX_LINES = 900
+CORE_FORBIDDEN = re.compile(r'^\s*#\s*include\s*<(fstream|sstream|iostream|istream|ostream|cstdio|stdio\.h)>')
 
 
 def violations(lib):
@@ -38,7 +46,13 @@ def violations(lib):
         rel = path.relative_to(lib / layer).as_posix()
         if rel.startswith("include/") and not rel.startswith(f"include/vibrofric/{layer}/"):
             found.append(f"{path}: a {layer} header outside include/vibrofric/{layer}/")
-        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        lines = path.read_text(encoding="utf-8").splitlines()
+        if len(lines) > MAX_LINES:
+            found.append(f"{path}: {len(lines)} lines (at most {MAX_LINES}: split it by concern)")
+        for number, line in enumerate(lines, 1):
+            if layer == "core" and (m := CORE_FORBIDDEN.match(line)):
+                found.append(f"{path}:{number}: core includes <{m.group(1)}> (the core reads no files and "
+                             "formats no text streams)")
             m = INCLUDE.match(line)
             if m and not m.group(1).startswith(ALLOWED[layer]):
                 found.append(f"{path}:{number}: {layer} includes {m.group(1)} "
@@ -55,18 +69,23 @@ def self_test():
             "tool/main.cpp": '#include "vibrofric/core/solver.hpp"\n#include "vibrofric/verification/claims.hpp"\n',
             "core/include/vibrofric/api/c.hpp": "",
             "other/d.cpp": "",
+            "core/src/e.cpp": "#include <sstream>\n",
+            "api/src/f.cpp": "#include <sstream>\n" + "//\n" * 900,
+            "api/src/g.cpp": "//\n" * 900,
         }
         for name, text in files.items():
             (lib / name).parent.mkdir(parents=True, exist_ok=True)
             (lib / name).write_text(text)
         found = violations(lib)
     expected = ["a.hpp:1: core includes vibrofric/api/", "b.cpp:1: api includes vibrofric/verification/",
-                "main.cpp:1: tool includes vibrofric/core/", "c.hpp: a core header outside", "d.cpp: in no layer"]
+                "main.cpp:1: tool includes vibrofric/core/", "c.hpp: a core header outside", "d.cpp: in no layer",
+                "e.cpp:1: core includes <sstream>", "f.cpp: 901 lines"]
     missing = [e for e in expected if not any(e in f for f in found)]
     if missing or len(found) != len(expected):
         print("self-test failed: expected", expected, "found", found)
         return 1
-    print(f"self-test: {len(found)} planted violations found, the allowed include passes")
+    print(f"self-test: {len(found)} planted violations found, the allowed include, a stream in the api and "
+          "900 lines pass")
     return 0
 
 
@@ -78,7 +97,7 @@ def main():
     for line in found:
         print(line)
     if not found:
-        print(f"layers: every include under {lib} stays in its layer")
+        print(f"layers: every include under {lib} stays in its layer, no file over {MAX_LINES} lines, no stream in core")
     return 1 if found else 0
 
 

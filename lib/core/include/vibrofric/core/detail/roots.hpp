@@ -4,10 +4,12 @@
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
+#include <charconv>
 #include <cstdint>
+#include <ios>
 #include <limits>
-#include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
@@ -22,13 +24,19 @@ struct RootStats {
 
 // x for messages: enough digits to tell it from a nearby value (the type's round-trip digits,
 // at most 40), shortest form.
+// As a stream with that precision would print it (printf's %g; Boost's str with a stream's
+// default flags), without a stream: the core reads and writes no text streams.
 template <class Real>
 std::string short_str(const Real& x) {
-  std::ostringstream os;
-  const int d = std::numeric_limits<Real>::max_digits10;
-  os.precision(d > 0 && d < 40 ? d : 40);
-  os << x;
-  return os.str();
+  const int max = std::numeric_limits<Real>::max_digits10;
+  const int d = max > 0 && max < 40 ? max : 40;
+  if constexpr (std::is_floating_point_v<Real>) {
+    char buf[80];
+    const auto end = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, d).ptr;
+    return std::string(buf, end);
+  } else {
+    return x.str(d, std::ios_base::skipws | std::ios_base::dec);
+  }
 }
 
 // Root of f in [a, b] given fa = f(a), fb = f(b) of opposite signs (a zero end is the root),
