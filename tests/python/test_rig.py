@@ -16,7 +16,7 @@ def tool(*args):
     return subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()[0]
 
 
-@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+@pytest.mark.usefixtures("tool_path")
 def test_the_tools_digits():
     args = ["mu", "--wave", "triangle", "--beta", "2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10", "--zeta", "0.1"]
     assert vibrofric.mu("triangle", 2, -0.4, digits=25, strings=True, **RIG) == tool(*args, "--digits", "25")
@@ -61,7 +61,7 @@ def test_power_has_no_closed_form_motion():
         vibrofric.mu("power:3", 1.0, 0.5, kappa=1, omega=2)
 
 
-@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+@pytest.mark.usefixtures("tool_path")
 def test_physical_with_a_mass_is_the_tools():
     kw = dict(E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, radius=1e-3, v0=1e-3, f=20000, A=2e-6, u_mean=1e-6, mu0=0.3)
     out = vibrofric.physical("sine", mass=0.01, k_system=1e7, damping=5, strings=True, **kw)
@@ -75,7 +75,7 @@ def test_physical_with_a_mass_is_the_tools():
         vibrofric.physical("sine", mass=0.01, **kw)
 
 
-@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+@pytest.mark.usefixtures("tool_path")
 def test_rig_report_is_the_tools_json():
     import json
     args = ["mu", "--wave", "sine", "--beta", "1.61", "--gamma", "1.01", "--kappa", "0.39", "--omega", "7.49",
@@ -91,7 +91,7 @@ def test_rig_report_is_the_tools_json():
         vibrofric.rig("sine", 1, 0.5, kappa=1)
 
 
-@pytest.mark.skipif(not TOOL, reason="VIBROFRIC_TOOL not set")
+@pytest.mark.usefixtures("tool_path")
 def test_trace_is_the_tools():
     args = ["trace", "--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "1", "--omega", "2", "--zeta", "0.1",
             "--points", "8", "--digits", "12"]

@@ -103,17 +103,15 @@ def test_bad_inputs():
         vibrofric.trace("sine", float("nan"), 0.5)
 
 
-def test_curved_profile_is_the_tools_and_closes_on_mu():
+def test_curved_profile_is_the_tools_and_closes_on_mu(tool_path):
     """profile=: n and s summed over the MDR half-row, digit for digit the tool's `trace --profile`;
     N at a phase is the closed form c X - X^3/3 on the sphere (c = gamma + w, X = sqrt c)."""
-    import os
     import subprocess
-    tool = os.environ.get("VIBROFRIC_TOOL")
     phi, n, s = vibrofric.trace("sine", "0.5", "0.2", profile="sphere", points=8, digits=15, strings=True)
-    if tool:
-        lines = subprocess.run([tool, "trace", "--wave", "sine", "--beta", "0.5", "--gamma", "0.2", "--profile", "sphere",
-                                "--points", "8", "--digits", "15"], check=True, stdout=subprocess.PIPE, text=True).stdout
-        assert [list(c) for c in (phi, n, s)] == [list(c) for c in zip(*(r.split(",") for r in lines.splitlines()[1:]))]
+    lines = subprocess.run([tool_path, "trace", "--wave", "sine", "--beta", "0.5", "--gamma", "0.2", "--profile", "sphere",
+                            "--points", "8", "--digits", "15"], check=True, stdout=subprocess.PIPE, text=True).stdout
+    assert len(phi) > 8
+    assert [list(c) for c in (phi, n, s)] == [list(c) for c in zip(*(r.split(",") for r in lines.splitlines()[1:]))]
     for p, nv in zip(phi, n):
         if nv == "0":  # out of contact, or the centre's contact boundary (phi printed to 15 digits)
             continue

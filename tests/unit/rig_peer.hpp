@@ -42,37 +42,56 @@ struct PeerResult {
     // dominates the approach; a complex pair's rotation averages out over the periods; 0 where
     // fewer than six periods qualify).
     T backward_fraction, amplitude, largest_backward_slip, contraction;
+    T state_y, state_u, state_s;  // the settled state at φ = 0 (U = X' − β)
 };
 
+// The scheme's one-period map on a fixed grid of M steps: (Y, U, s) at φ = 0 to the same at φ = 1,
+// with the period's sums and counts (the peer's transient and its Floquet multipliers use it).
 template <class T, class N>
-PeerResult<T> rig_peer(N n, T beta, T kappa, T Omega, T zeta, std::size_t steps_per_period,
-                       std::size_t max_periods = 2000, T settle = T(1e-12)) {
-    using std::abs; using std::sqrt;
-    if (steps_per_period < 2) throw std::invalid_argument("rig_peer: steps_per_period < 2");
-    const std::size_t M = steps_per_period;
-    const T pi = T(3.14159265358979323846264338327950288L);
-    const T h = T(1) / T(M);
-    const T a = (2 * pi * Omega) * (2 * pi * Omega), b = 4 * pi * zeta * Omega * sqrt(kappa);
-    const T A = 2 / h + h / 2 * a * kappa + b, c = h / 2 * a;
-    std::vector<T> nv(M + 1);
-    for (std::size_t k = 0; k <= M; ++k) nv[k] = n(T(k) / T(M));
-    nv[M] = nv[0];  // periodic grid: n(1) = n(0)
-    T Y = 0, U = 0, s = 0;  // X = 0, X' = β, stress-free contact
-    std::vector<T> changes;
-    for (std::size_t p = 1; p <= max_periods; ++p) {
-        const T Y_start = Y, U_start = U, s_start = s;
+class PeerMap {
+ public:
+    struct State {
+        T Y, U, s;
+    };
+    struct Period {
         T sum_s = 0, sum_n = 0, stick = 0, slip = 0, flight = 0, backward = 0;
-        T y_min = Y, y_max = Y, run = 0, first_run = -1, largest_back = 0;
+        T y_min = 0, y_max = 0, largest_back = 0;
+    };
+
+    PeerMap(N n, T beta, T kappa, T Omega, T zeta, std::size_t steps_per_period)
+        : n_(n), beta_(beta), kappa_(kappa), M_(steps_per_period) {
+        using std::sqrt;
+        if (steps_per_period < 2) throw std::invalid_argument("rig_peer: steps_per_period < 2");
+        const T pi = T(3.14159265358979323846264338327950288L);
+        h_ = T(1) / T(M_);
+        a_ = (2 * pi * Omega) * (2 * pi * Omega);
+        b_ = 4 * pi * zeta * Omega * sqrt(kappa);
+        A_ = 2 / h_ + h_ / 2 * a_ * kappa + b_;
+        c_ = h_ / 2 * a_;
+        nv_.resize(M_ + 1);
+        for (std::size_t k = 0; k <= M_; ++k) nv_[k] = n(T(k) / T(M_));
+        nv_[M_] = nv_[0];  // periodic grid: n(1) = n(0)
+    }
+
+    std::size_t steps() const { return M_; }
+
+    Period period(State& x) const {
+        const T h = h_, a = a_, b = b_, A = A_, c = c_, beta = beta_, kappa = kappa_;
+        const std::size_t M = M_;
+        T Y = x.Y, U = x.U, s = x.s;
+        Period out;
+        out.y_min = out.y_max = Y;
+        T run = 0, first_run = -1;
         for (std::size_t k = 0; k < M; ++k) {
-            const T n1 = nv[k + 1];
+            const T n1 = nv_[k + 1];
             const T F0 = -a * kappa * Y - a * s - b * U;
             const T R = 2 * U + h / 2 * F0 - h / 2 * a * kappa * Y + h / 2 * b * U;
             // Touch-down inside the step: the contact forms stress-free at φ_td (bisection on n),
             // so only the fraction θ of the step's (linear) X increment loads it.
             T th = 1;
-            if (nv[k] <= 0 && n1 > 0) {
+            if (nv_[k] <= 0 && n1 > 0) {
                 T lo = T(k) / T(M), hi = T(k + 1) / T(M);
-                for (int i = 0; i < 80 && lo < hi; ++i) { const T mid = (lo + hi) / 2; (n(mid) > 0 ? hi : lo) = mid; }
+                for (int i = 0; i < 80 && lo < hi; ++i) { const T mid = (lo + hi) / 2; (n_(mid) > 0 ? hi : lo) = mid; }
                 th = (T(k + 1) / T(M) - hi) / h;
             }
             T d = (R - c * (s + th * beta * h)) / (A + c * th);  // stick branch: s1 = s + θ(d + βh)
@@ -81,38 +100,60 @@ PeerResult<T> rig_peer(N n, T beta, T kappa, T Omega, T zeta, std::size_t steps_
             if (s1 > n1)       { s1 = n1;  d = (R - c * n1) / A; moved = true; }
             else if (s1 < -n1) { s1 = -n1; d = (R + c * n1) / A; moved = true; back = true; }
             const T U1 = 2 * d / h - U;
-            sum_s += (s + s1) / 2;
-            sum_n += (nv[k] + n1) / 2;
-            if (n1 <= 0) flight += 1; else if (moved) slip += 1; else stick += 1;
+            out.sum_s += (s + s1) / 2;
+            out.sum_n += (nv_[k] + n1) / 2;
+            if (n1 <= 0) out.flight += 1; else if (moved) out.slip += 1; else out.stick += 1;
             // X_c = X − s moves by (d + βh) − (s1 − s) in the step.
             const T dxc = d + beta * h - (s1 - s);
             if (back && n1 > 0) {
-                backward += 1;
+                out.backward += 1;
                 run += dxc < 0 ? -dxc : T(0);
             } else {
                 if (first_run < 0) first_run = run;  // the phase the period began in (0: none)
-                largest_back = std::max(largest_back, run);
+                out.largest_back = std::max(out.largest_back, run);
                 run = 0;
             }
             Y += d; U = U1; s = s1;
-            y_min = std::min(y_min, Y);
-            y_max = std::max(y_max, Y);
+            out.y_min = std::min(out.y_min, Y);
+            out.y_max = std::max(out.y_max, Y);
         }
         // a backward phase still open at the period's end continues into the next one's first
-        if (run > 0) largest_back = std::max(largest_back, first_run < 0 ? run : run + first_run);
-        const T change = std::max({abs(Y - Y_start), abs(U - U_start), abs(s - s_start)});
+        if (run > 0) out.largest_back = std::max(out.largest_back, first_run < 0 ? run : run + first_run);
+        x = {Y, U, s};
+        return out;
+    }
+
+ private:
+    N n_;
+    T beta_, kappa_;
+    std::size_t M_;
+    T h_, a_, b_, A_, c_;
+    std::vector<T> nv_;
+};
+
+template <class T, class N>
+PeerResult<T> rig_peer(N n, T beta, T kappa, T Omega, T zeta, std::size_t steps_per_period,
+                       std::size_t max_periods = 2000, T settle = T(1e-12)) {
+    using std::abs;
+    const PeerMap<T, N> map(n, beta, kappa, Omega, zeta, steps_per_period);
+    typename PeerMap<T, N>::State x{0, 0, 0};  // X = 0, X' = β, stress-free contact
+    std::vector<T> changes;
+    for (std::size_t p = 1; p <= max_periods; ++p) {
+        const auto start = x;
+        const auto q = map.period(x);
+        const T change = std::max({abs(x.Y - start.Y), abs(x.U - start.U), abs(x.s - start.s)});
         changes.push_back(change);
         if (change < settle) {
-            const T m = T(M);
+            const T m = T(map.steps());
             T contraction = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, count = 0;
-            for (std::size_t q = 0; q < changes.size(); ++q)
-                if (changes[q] >= T(1e-11) && changes[q] <= T(1e-4)) {
-                    const T x = T(q), y = std::log(changes[q]);
-                    sx += x; sy += y; sxx += x * x; sxy += x * y; count += 1;
+            for (std::size_t k = 0; k < changes.size(); ++k)
+                if (changes[k] >= T(1e-11) && changes[k] <= T(1e-4)) {
+                    const T u = T(k), y = std::log(changes[k]);
+                    sx += u; sy += y; sxx += u * u; sxy += u * y; count += 1;
                 }
             if (count >= 6) contraction = std::exp((count * sxy - sx * sy) / (count * sxx - sx * sx));
-            return {sum_s / sum_n, stick / m, slip / m, flight / m, p, backward / m, (y_max - y_min) / 2, largest_back,
-                    contraction};
+            return {q.sum_s / q.sum_n, q.stick / m, q.slip / m, q.flight / m, p, q.backward / m, (q.y_max - q.y_min) / 2,
+                    q.largest_back, contraction, x.Y, x.U, x.s};
         }
     }
     throw std::runtime_error("rig_peer: no periodic state within max_periods");

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/numbers.hpp"
 #include "vibrofric/verification/claims.hpp"
 #include "established_verdicts.hpp"
 
@@ -72,7 +73,12 @@ void check_evidence(const ClaimCheck& c) {
       if (m.name.rfind("closed form: ", 0) == 0) {
         ++closed_cases;
         EXPECT_LE(std::stod(m.field("relative_difference")), 1e-45) << m.name;
-        EXPECT_LE(std::abs(std::stod(m.field("closed_form")) - std::stod(m.field("solver"))), 1e-18) << m.name;
+        // The two printed fields are each the 20-digit rounding of values 1e-45 apart: read
+        // exactly (mpfr at 40 digits, not through double), they are at most one unit of the
+        // 20th digit apart.
+        vibrofric::PrecisionScope scope(40);
+        const vibrofric::mpfr closed(m.field("closed_form")), solver(m.field("solver"));
+        EXPECT_LE(abs(closed - solver), abs(closed) * vibrofric::mpfr("1e-19")) << m.name;
       }
     EXPECT_EQ(closed_cases, 24);  // triangle, square x 4 profiles x 3 (beta, gamma)
     // D(lambda) falls along every row (Fig. 4's wear flat approaches the flat punch).
