@@ -44,7 +44,10 @@ py::dict physical_dict(const WaveSpec& wave, const PhysicalRequest& request, con
   return d;
 }
 
-constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
+}  // namespace
+
+void bind_physical(py::module_& m) {
+  static constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
 
 The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
 (mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given
@@ -78,10 +81,6 @@ element the scalar call's value. An element that fails raises its error prefixed
 ('at index (2,): ...'), or with nan_on_error=True (scipy's convention) is NaN (None in object
 arrays) while the others answer.
 )doc";
-
-}  // namespace
-
-void bind_physical(py::module_& m) {
   m.def(
       "physical",
       [](const py::object& wave, const py::object& E1, const py::object& nu1, const py::object& E2,

@@ -56,7 +56,10 @@ py::tuple rig_trace_arrays(const std::vector<RigTraceRow>& rows, bool strings) {
   return py::tuple(columns);
 }
 
-constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat') -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode)
+}  // namespace
+
+void bind_trace(py::module_& m) {
+  static constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat') -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode)
 
 The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
 in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
@@ -74,10 +77,6 @@ With a curved profile (as mu's profile=, the tool's `trace --profile P`): n and 
 half-row of MDR springs, in the units of the row (mean(s)/mean(n) over the period is mu's value),
 at the equally spaced phases and the central spring's contact boundaries.
 )doc";
-
-}  // namespace
-
-void bind_trace(py::module_& m) {
   m.def(
       "trace",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& points,

@@ -68,7 +68,10 @@ lo == hi, the exact rational, and float(lo) is the correctly rounded double; for
 lo < hi are the ends of an interval computation. Curved profiles raise ValueError.
 )doc";
 
-constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
+}  // namespace
+
+void bind_values(py::module_& m) {
+  static constexpr const char* psi_doc = R"doc(psi(wave, beta, *, digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False)
 
 The reduction function Psi_w(beta) = int (n - s) dphi without jumping (Eq. 12), which does not
 depend on gamma, so that mu/mu0 = 1 - Psi_w(beta)/gamma for gamma >= 1 (Eq. 13). For the
@@ -76,10 +79,6 @@ triangle Psi = (4 - beta)/(4 + beta) (Eq. 17). Arguments and results as mu() (ce
 too); beta broadcasts.
 Flat punch only (Psi does not exist for curved profiles).
 )doc";
-
-}  // namespace
-
-void bind_values(py::module_& m) {
   m.def(
       "mu",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& profile,
