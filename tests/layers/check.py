@@ -9,7 +9,8 @@
 Two more rules keep the units small and the core free of text I/O:
     every file under lib/ has at most MAX_LINES lines;
     core/ includes no stream or stdio header (<fstream>, <sstream>, <iostream>, <istream>,
-    <ostream>, <cstdio>): it reads no files and formats no text streams.
+    <ostream>, <cstdio>) and parses no number text (strto*, std::sto*, ato*, from_chars, sscanf):
+    it reads no files and no decimal text (the API's Decimal does, api/decimal_value.hpp).
 
 Exit status 1 with one line per include that crosses a layer the wrong way (or per broken rule),
 0 otherwise.
@@ -30,6 +31,7 @@ ALLOWED = {
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](vibrofric/[^>"]+)[>"]')
 MAX_LINES = 900
+CORE_PARSING = re.compile(r'\b(strto[a-z]*|std::sto[a-z]+|ato[fil]|from_chars|sscanf)\s*\(')
 CORE_FORBIDDEN = re.compile(r'^\s*#\s*include\s*<(fstream|sstream|iostream|istream|ostream|cstdio|stdio\.h)>')
 
 
@@ -53,6 +55,9 @@ def violations(lib):
             if layer == "core" and (m := CORE_FORBIDDEN.match(line)):
                 found.append(f"{path}:{number}: core includes <{m.group(1)}> (the core reads no files and "
                              "formats no text streams)")
+            if layer == "core" and (m := CORE_PARSING.search(line.split("//")[0])):
+                found.append(f"{path}:{number}: core parses number text ({m.group(1)}): decimal text is read "
+                             "by the API (api/decimal_value.hpp)")
             m = INCLUDE.match(line)
             if m and not m.group(1).startswith(ALLOWED[layer]):
                 found.append(f"{path}:{number}: {layer} includes {m.group(1)} "
@@ -70,6 +75,7 @@ def self_test():
             "core/include/vibrofric/api/c.hpp": "",
             "other/d.cpp": "",
             "core/src/e.cpp": "#include <sstream>\n",
+            "core/src/h.cpp": "long f(const char* t) { return std::strtol(t, nullptr, 10); }  // strtod( in a comment\n",
             "api/src/f.cpp": "#include <sstream>\n" + "//\n" * 900,
             "api/src/g.cpp": "//\n" * 900,
         }
@@ -79,7 +85,7 @@ def self_test():
         found = violations(lib)
     expected = ["a.hpp:1: core includes vibrofric/api/", "b.cpp:1: api includes vibrofric/verification/",
                 "main.cpp:1: tool includes vibrofric/core/", "c.hpp: a core header outside", "d.cpp: in no layer",
-                "e.cpp:1: core includes <sstream>", "f.cpp: 901 lines"]
+                "e.cpp:1: core includes <sstream>", "f.cpp: 901 lines", "h.cpp:1: core parses number text (strtol)"]
     missing = [e for e in expected if not any(e in f for f in found)]
     if missing or len(found) != len(expected):
         print("self-test failed: expected", expected, "found", found)
@@ -97,7 +103,7 @@ def main():
     for line in found:
         print(line)
     if not found:
-        print(f"layers: every include under {lib} stays in its layer, no file over {MAX_LINES} lines, no stream in core")
+        print(f"layers: every include under {lib} stays in its layer, no file over {MAX_LINES} lines, no stream or number parsing in core")
     return 1 if found else 0
 
 

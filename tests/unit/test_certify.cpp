@@ -91,7 +91,7 @@ Interval enclosure_at_256_bits(const WaveSpec& spec, Quantity q, const Rational&
     auto it = shapes.find(spec.name);
     if (it == shapes.end()) {
       std::vector<certified::RationalHarmonic> series;
-      for (const auto& h : spec.harmonics) series.push_back({h.k, exact::decimal(h.a, "a"), exact::decimal(h.b, "b")});
+      for (const auto& h : spec.harmonics) series.push_back({h.k, exact_decimal(h.a, "a"), exact_decimal(h.b, "b")});
       it = shapes.emplace(spec.name, certified::FourierShape(series, 256)).first;
     }
     const certified::FourierEnclosure e = certified::enclose_fourier(it->second, beta, q == Quantity::psi ? Rational(2) : gamma);
@@ -100,7 +100,7 @@ Interval enclosure_at_256_bits(const WaveSpec& spec, Quantity q, const Rational&
   const Rational g = q == Quantity::psi ? Rational(1) : gamma;
   const certified::SineEnclosure e = spec.kind == WaveKind::sine
                                          ? certified::enclose_sine(beta, g, 256)
-                                         : certified::enclose_power(exact::decimal(spec.exponent, "p"), beta, g, 256);
+                                         : certified::enclose_power(exact_decimal(spec.exponent, "p"), beta, g, 256);
   return q == Quantity::psi ? e.lost_area : e.mu;
 }
 

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/enclosure.hpp"
 #include "vibrofric/core/solver.hpp"
 #include "vibrofric/core/user_waveforms.hpp"
@@ -173,7 +174,7 @@ TEST(PowerEnclosure, HoldsTheSolversValues) {
   constexpr mpfr_prec_t bits = 200;
   int sticks = 0, contact_onsets = 0;
   for (const char* ptext : {"1.5", "2", "2.5", "3", "7", "1.1", "20"}) {
-    const Q p = vibrofric::exact::decimal(ptext, "p");
+    const Q p = vibrofric::exact_decimal(ptext, "p");
     const vibrofric::Power<mpfr> wave(mpfr(ptext), std::string("power:") + ptext);
     for (int i = 0; i < 80; ++i) {
       // β in (0, 5p): both sides of β_c ≤ 4p.

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/exact.hpp"
 #include "vibrofric/core/solver.hpp"
 #include "vibrofric/core/user_waveforms.hpp"
@@ -43,18 +44,19 @@ mpfr to_mpfr(const Q& x) {
   return r;
 }
 
+// Decimal text to its exact rational (api: exact_decimal, through Decimal).
 TEST(Exact, DecimalsAreParsedExactly) {
-  EXPECT_EQ(ex::decimal("0.15", "beta"), q(3, 20));
-  EXPECT_EQ(ex::decimal("-1.5e-3", "gamma"), q(-3, 2000));
-  EXPECT_EQ(ex::decimal("+2E2", "x"), q(200));
-  EXPECT_EQ(ex::decimal(".5", "x"), q(1, 2));
-  EXPECT_EQ(ex::decimal("5.", "x"), q(5));
-  EXPECT_EQ(ex::decimal("0.000", "x"), q(0));
-  EXPECT_EQ(ex::decimal("1e-5000", "x"), Q(1, pow(boost::multiprecision::mpz_int(10), 5000)));
+  EXPECT_EQ(vibrofric::exact_decimal("0.15", "beta"), q(3, 20));
+  EXPECT_EQ(vibrofric::exact_decimal("-1.5e-3", "gamma"), q(-3, 2000));
+  EXPECT_EQ(vibrofric::exact_decimal("+2E2", "x"), q(200));
+  EXPECT_EQ(vibrofric::exact_decimal(".5", "x"), q(1, 2));
+  EXPECT_EQ(vibrofric::exact_decimal("5.", "x"), q(5));
+  EXPECT_EQ(vibrofric::exact_decimal("0.000", "x"), q(0));
+  EXPECT_EQ(vibrofric::exact_decimal("1e-5000", "x"), Q(1, pow(boost::multiprecision::mpz_int(10), 5000)));
   for (const char* bad : {"", "-", "e5", "1e", "1e+", "1.2.3", "abc", " 1", "1 ", "0x10", "1e1234567890", "nan"})
-    EXPECT_THROW(ex::decimal(bad, "beta"), vibrofric::InputError) << bad;
+    EXPECT_THROW(vibrofric::exact_decimal(bad, "beta"), vibrofric::InputError) << bad;
   try {
-    ex::decimal("1e-999999", "beta");
+    vibrofric::exact_decimal("1e-999999", "beta");
     ADD_FAILURE() << "an exponent past the limit was taken";
   } catch (const vibrofric::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("'1e-999999'"), std::string::npos) << e.what();

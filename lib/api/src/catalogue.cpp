@@ -1,8 +1,8 @@
 #include "vibrofric/api/catalogue.hpp"
 
-#include <boost/multiprecision/cpp_int.hpp>
 #include <csv.h>
 
+#include "vibrofric/api/decimal_value.hpp"
 #include "vibrofric/api/detail/tables.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/suggest.hpp"
@@ -146,31 +146,15 @@ std::size_t smallest_period(const std::vector<std::string>& y, const std::vector
   return n;
 }
 
-// Σ texts exactly, as a decimal "Me-E" (Boost's cpp_int holds every digit): the K periods of a
-// record summed sample by sample, which the normalisation makes the wave of their mean.
+// Σ texts exactly, as a decimal "Me-E": the K periods of a record summed sample by sample, which
+// the normalisation makes the wave of their mean. The texts are samples the reader has checked.
 std::string decimal_sum(const std::vector<const std::string*>& texts) {
-  using boost::multiprecision::cpp_int;
-  std::vector<std::pair<cpp_int, long>> parts;  // value = m·10^e
-  long low = 0;
-  for (const std::string* t : texts) {
-    const auto e = t->find_first_of("eE");
-    std::string mantissa = t->substr(0, e);
-    long exponent = e == std::string::npos ? 0 : std::stol(t->substr(e + 1));
-    if (const auto dot = mantissa.find('.'); dot != std::string::npos) {
-      exponent -= static_cast<long>(mantissa.size() - dot - 1);
-      mantissa.erase(dot, 1);
-    }
-    const bool negative = !mantissa.empty() && mantissa[0] == '-';
-    if (!mantissa.empty() && (mantissa[0] == '+' || negative)) mantissa.erase(0, 1);
-    // cpp_int reads a leading 0 as octal: the digits without it.
-    const auto first = mantissa.find_first_not_of('0');
-    const cpp_int m = first == std::string::npos ? cpp_int(0) : cpp_int(mantissa.substr(first));
-    parts.emplace_back(negative ? cpp_int(-m) : m, exponent);
-    low = parts.size() == 1 ? exponent : std::min(low, exponent);
-  }
-  cpp_int sum = 0;
-  for (const auto& [m, e] : parts) sum += m * boost::multiprecision::pow(cpp_int(10), static_cast<unsigned>(e - low));
-  return sum.str() + "e" + std::to_string(low);
+  std::vector<Decimal> values;
+  values.reserve(texts.size());
+  for (const std::string* t : texts) values.push_back(*Decimal::read(*t));
+  std::vector<const Decimal*> terms;
+  for (const Decimal& d : values) terms.push_back(&d);
+  return exact_sum_text(terms);
 }
 
 // How far a record of N samples (uniform phases, linear between) is from repeating after `lag`
@@ -383,32 +367,8 @@ const std::vector<std::string>& catalogue_names() {
   return names;
 }
 
-// [+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]{1,9})?, scanned by hand: std::regex cost several
-// µs per 60-digit number, more than a double evaluation (bench/README.md).
-static bool is_decimal(const std::string& t) {
-  std::size_t i = 0, n = t.size();
-  auto digits = [&] {
-    const std::size_t start = i;
-    while (i < n && t[i] >= '0' && t[i] <= '9') ++i;
-    return i - start;
-  };
-  if (i < n && (t[i] == '+' || t[i] == '-')) ++i;
-  std::size_t mantissa = digits();
-  if (i < n && t[i] == '.') {
-    ++i;
-    mantissa += digits();
-  }
-  if (mantissa == 0) return false;
-  if (i < n && (t[i] == 'e' || t[i] == 'E')) {
-    ++i;
-    if (i < n && (t[i] == '+' || t[i] == '-')) ++i;
-    // At most 9 exponent digits: Boost's cpp_bin_float parser overflows a 64-bit integer (and
-    // crashed the tool) from 15 on, and no value of the model needs |exponent| ≥ 10^9.
-    const std::size_t e = digits();
-    if (e == 0 || e > 9) return false;
-  }
-  return i == n;
-}
+// The one grammar of decimal text (decimal_value.hpp).
+static bool is_decimal(const std::string& t) { return Decimal::read(t).has_value(); }
 
 // A number written with a decimal comma, "0,5" or "-1,25e-3" (a European spreadsheet's export):
 // one comma, and a decimal of our grammar with a point in its place.
@@ -435,6 +395,12 @@ void check_decimal(const std::string& text, const std::string& what) {
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
   if (std::fabs(v) > static_cast<long double>(std::numeric_limits<double>::max()))
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
+}
+
+exact::Rational exact_decimal(const std::string& text, const std::string& what) {
+  const auto d = Decimal::read(text);
+  if (!d) check_decimal(text, what);  // the grammar's refusal (an exact value has no overflow)
+  return d->rational(what);
 }
 
 WaveSpec detail::fourier_from_table(const Table& table, const RowSource& source) {

@@ -24,13 +24,8 @@ void check_wear_flat(const mpfr& lambda, const std::string& text) {
     throw InputError("wear-flat LAMBDA = " + as_typed(text) + " overflows: expected a magnitude below 1e308");
 }
 
-// Decimal text compared exactly enough: 400 digits hold every value a profile file may carry
-// (the grammar allows at most 9 exponent digits but no profile needs more than 400 digits).
-int compare_decimal(const std::string& a, const std::string& b) {
-  PrecisionScope scope(400);
-  const mpfr x(a), y(b);
-  return x < y ? -1 : (x > y ? 1 : 0);
-}
+// Decimal text (checked) compared exactly.
+int compare_decimal(const std::string& a, const std::string& b) { return compare(*Decimal::read(a), *Decimal::read(b)); }
 }  // namespace
 
 ProfileSpec parse_profile(const std::string& text) {

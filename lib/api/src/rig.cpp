@@ -1,5 +1,6 @@
 // Rig dynamics from decimal text (rig.hpp): the core's RigSolver in mpfr at two working
 // precisions, printed where they agree.
+#include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/rig.hpp"
 
 #include <algorithm>
@@ -17,7 +18,7 @@ namespace vibrofric {
 namespace {
 
 exact::Rational rig_number(const std::string& text, const char* name, bool zero_allowed) {
-  const exact::Rational v = exact::decimal(text, name);
+  const exact::Rational v = exact_decimal(text, name);
   if (zero_allowed ? v < 0 : v <= 0)
     throw InputError(std::string(name) + " = " + detail::visible(text) + ": expected a decimal " +
                      (zero_allowed ? ">= 0" : "> 0"));

@@ -2,9 +2,6 @@
 // characterisation").
 #include "vibrofric/core/exact.hpp"
 
-#include <cctype>
-#include <cstdlib>
-
 namespace vibrofric::exact {
 
 namespace {
@@ -89,44 +86,6 @@ Wave samples(std::string name, const std::vector<Rational>& y, const std::vector
   }
   check(w);
   return w;
-}
-
-Rational decimal(const std::string& text, const std::string& what) {
-  auto bad = [&] { return InputError(what + " '" + text + "': expected a decimal number"); };
-  std::size_t i = 0;
-  const std::size_t n = text.size();
-  bool negative = false;
-  if (i < n && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
-  std::string digits;  // mpz_int reads a leading 0 as octal: leading zeros are dropped below
-  long scale = 0;  // value = digits · 10^(exponent − scale)
-  bool any = false;
-  while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) digits += text[i++], any = true;
-  if (i < n && text[i] == '.') {
-    ++i;
-    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) digits += text[i++], ++scale, any = true;
-  }
-  if (!any) throw bad();
-  digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
-  long exponent = 0;
-  if (i < n && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    const std::size_t start = i;
-    if (i < n && (text[i] == '+' || text[i] == '-')) ++i;
-    const std::size_t first_digit = i;
-    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
-    if (i == first_digit || i - first_digit > 9) throw bad();
-    exponent = std::strtol(text.c_str() + start, nullptr, 10);
-  }
-  if (i != n) throw bad();
-  if (digits.empty()) return 0;
-  const long power = exponent - scale;
-  if (power > max_exponent || power < -max_exponent - static_cast<long>(digits.size()))
-    throw InputError(what + " '" + text + "': its exponent is beyond ±" + std::to_string(max_exponent) +
-                     ", too large for an exact rational");
-  using Integer = boost::multiprecision::mpz_int;
-  Integer num(digits), ten = pow(Integer(10), static_cast<unsigned>(power < 0 ? -power : power));
-  Rational r = power < 0 ? Rational(num, ten) : Rational(num * ten);
-  return negative ? Rational(-r) : r;
 }
 
 Result solve(const Wave& w, const Rational& beta, const Rational& gamma) {

@@ -3,6 +3,7 @@
 // the solver at the reference point the claim names; then all but the β_c table again, certified
 // (claims.hpp): exactly in rationals (core/exact.hpp) and by enclosures (core/enclosure.hpp).
 #include "check.hpp"
+#include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/exact.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 
@@ -22,7 +23,7 @@ void certify_exactly(Check& c, const std::vector<const char*>& betas, const std:
   for (const char* b : betas)
     for (const char* g : gammas) {
       ++cases;
-      const Q beta = exact::decimal(b, "beta"), gamma = exact::decimal(g, "gamma");
+      const Q beta = exact_decimal(b, "beta"), gamma = exact_decimal(g, "gamma");
       if (equal(beta, gamma)) {
         ++equal_cases;
       } else {
@@ -79,7 +80,7 @@ ClaimCheck eq6(int digits) {
   for (const auto& [name, make] : kExactWaves) {
     const exact::Wave w = make();
     for (const char* gt : gammas) {
-      const Q gamma = exact::decimal(gt, "gamma");
+      const Q gamma = exact_decimal(gt, "gamma");
       const std::optional<Q> bc = exact::solve(w, Q(1), gamma).beta_c;
       for (const Q& f : {Q(1), Q(3, 2), Q(10)})
         if (bc) {
@@ -94,7 +95,7 @@ ClaimCheck eq6(int digits) {
   }
   for (const Enclosed& e : enclosed_waves(digits))
     for (const char* gt : gammas) {
-      const Q gamma = exact::decimal(gt, "gamma");
+      const Q gamma = exact_decimal(gt, "gamma");
       // beta_c enclosed (its own enclosure, at any beta), and rationals beside its ends.
       const Interval bc = e.at(Q(1), gamma).beta_c;
       const Q upper = rational_of(bc.upper()), lower = rational_of(bc.lower());
@@ -135,9 +136,9 @@ ClaimCheck eq13(int digits) {
   for (const auto& [name, make] : kExactWaves) {
     const exact::Wave w = make();
     for (const char* bt : beta_texts_wide()) {
-      const Q beta = exact::decimal(bt, "beta"), psi = exact::psi(w, beta).lost_area;
+      const Q beta = exact_decimal(bt, "beta"), psi = exact::psi(w, beta).lost_area;
       for (const char* gt : gammas) {
-        const Q gamma = exact::decimal(gt, "gamma");
+        const Q gamma = exact_decimal(gt, "gamma");
         ++cases;
         if (exact::solve(w, beta, gamma).mu == 1 - psi / gamma) ++proven;
         else c.record(1.0, std::string("certified: ") + name + ", beta = " + bt + ", gamma = " + gt + " not equal");
@@ -146,10 +147,10 @@ ClaimCheck eq13(int digits) {
   }
   for (const Enclosed& e : enclosed_waves(digits))
     for (const char* bt : beta_texts_wide()) {
-      const Q beta = exact::decimal(bt, "beta");
+      const Q beta = exact_decimal(bt, "beta");
       const Interval psi = e.at(beta, Q(1)).lost_area;
       for (const char* gt : gammas) {
-        const Q gamma = exact::decimal(gt, "gamma");
+        const Q gamma = exact_decimal(gt, "gamma");
         ++cases;
         const Interval g = Interval::rational(gamma.backend().data(), e.bits);
         if (overlap_within(e.at(beta, gamma).mu, Interval::integer(1, e.bits) - psi / g, digits)) ++proven;

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "vibrofric/api/decimal_value.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
@@ -98,18 +99,16 @@ const std::vector<std::string>& catalogue_names();
 // Throws InputError naming `what` and the text.
 void check_decimal(const std::string& text, const std::string& what);
 
-// Decimal text to Real at the current precision (after check_decimal).
+// Decimal text to Real, correctly rounded at the current precision (after check_decimal).
 template <class Real>
 Real parse_real(const std::string& text, const std::string& what) {
   check_decimal(text, what);
-  // strtod/strtold, not stod: a subnormal result is a value, not an error.
-  if constexpr (std::is_same_v<Real, double>)
-    return std::strtod(text.c_str(), nullptr);
-  else if constexpr (std::is_same_v<Real, long double>)
-    return std::strtold(text.c_str(), nullptr);
-  else
-    return Real(text);
+  return Decimal::read(text)->template to<Real>();
 }
+
+// The exact rational of decimal text: certification's inputs. Text outside the grammar is
+// check_decimal's refusal; any magnitude is a value (Decimal::rational's limit on its power of ten).
+exact::Rational exact_decimal(const std::string& text, const std::string& what);
 
 namespace detail {
 // Text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').

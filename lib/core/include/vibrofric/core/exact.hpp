@@ -72,11 +72,6 @@ Wave power_one();
 // fewer than two samples or a constant signal.
 Wave samples(std::string name, const std::vector<Rational>& y, const std::vector<Rational>& phases = {});
 
-// The exact value of a decimal in our grammar ([+-]digits[.digits][e[+-]digits]); InputError
-// naming `what` otherwise, or where its exponent is beyond ±max_exponent (the rational would
-// have that many digits).
-inline constexpr long max_exponent = 100000;
-Rational decimal(const std::string& text, const std::string& what);
 
 // μ̄/μ0 at β > 0, γ with contact (γ + max w > 0): DomainError otherwise.
 Result solve(const Wave& w, const Rational& beta, const Rational& gamma);

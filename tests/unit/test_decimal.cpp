@@ -1,0 +1,135 @@
+// Decimal (api/decimal_value.hpp), the one reader of decimal text: its grammar accepts and refuses
+// what README "Numbers" says, its parts, exact rational, comparison and exact sum against values
+// computed here another way (GMP's own reader of "N/10^k", MPFR at many digits), and each number
+// type's value against the C library's and MPFR's correctly rounded readers.
+#include <gtest/gtest.h>
+
+#include <gmp.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/decimal_value.hpp"
+#include "vibrofric/core/errors.hpp"
+
+namespace vibrofric {
+namespace {
+
+TEST(Decimal, GrammarAcceptsAndRefuses) {
+  for (const char* t : {"0", "-0", "+1", "1.", ".5", "-.5", "1.25e-3", "1E9", "1e+999999999", "007.500", "0.000e-5",
+                        "123456789012345678901234567890"})
+    EXPECT_TRUE(Decimal::read(t).has_value()) << t;
+  for (const char* t : {"", "+", "-", ".", "e5", ".e5", "1e", "1e+", "1e1234567890", "1.2.3", "1,5", " 1", "1 ",
+                        "0x10", "inf", "nan", "1e5.0", "--1", "1-", "١"})
+    EXPECT_FALSE(Decimal::read(t).has_value()) << t;
+}
+
+TEST(Decimal, PartsAreSignDigitsAndPowerOfTen) {
+  const auto d = *Decimal::read("-007.500e-2");
+  EXPECT_TRUE(d.negative());
+  EXPECT_EQ(d.digits(), "7500");
+  EXPECT_EQ(d.exponent(), -5);
+  EXPECT_EQ(d.text(), "-007.500e-2");
+  EXPECT_TRUE(Decimal::read("-0.000e7")->is_zero());
+  EXPECT_EQ(Decimal::read("-0.000e7")->exponent(), 4);
+}
+
+// "N/10^k" or "N·10^k" read by GMP's own rational reader.
+exact::Rational gmp_rational(const std::string& n, long k) {
+  mpq_t q;
+  mpq_init(q);
+  std::string text = n;
+  if (k < 0) text += "/1" + std::string(static_cast<std::size_t>(-k), '0');
+  else text += std::string(static_cast<std::size_t>(k), '0');
+  EXPECT_EQ(mpq_set_str(q, text.c_str(), 10), 0) << text;
+  mpq_canonicalize(q);
+  exact::Rational r(q);
+  mpq_clear(q);
+  return r;
+}
+
+TEST(Decimal, RationalIsExact) {
+  EXPECT_EQ(Decimal::read("-007.500e-2")->rational("x"), gmp_rational("-75", -3));
+  EXPECT_EQ(Decimal::read("1.25e3")->rational("x"), gmp_rational("125", 1));
+  EXPECT_EQ(Decimal::read("0.1")->rational("x"), gmp_rational("1", -1));
+  EXPECT_EQ(Decimal::read("-0")->rational("x"), 0);
+  EXPECT_EQ(Decimal::read("1e100000")->rational("x"), gmp_rational("1", 100000));
+  EXPECT_THROW(Decimal::read("1e100001")->rational("x"), InputError);
+  // The limit counts the significand's digits on the small side: 10^-100001 is one digit past it
+  // and still taken, 10^-100002 is not.
+  EXPECT_EQ(Decimal::read("1e-100001")->rational("x"), gmp_rational("1", -100001));
+  EXPECT_THROW(Decimal::read("1e-100002")->rational("x"), InputError);
+  EXPECT_THROW(exact_decimal("1,5", "beta"), InputError);  // the reader's refusal, with check_decimal's message
+}
+
+TEST(Decimal, CompareIsExactBeyondAnyFixedPrecision) {
+  // 500 digits apart in the last place: 400-digit arithmetic would call them equal.
+  const std::string a = "1." + std::string(499, '0') + "1", b = "1." + std::string(500, '0');
+  EXPECT_EQ(compare(*Decimal::read(a), *Decimal::read(b)), 1);
+  EXPECT_EQ(compare(*Decimal::read(b), *Decimal::read(a)), -1);
+  EXPECT_EQ(compare(*Decimal::read("1.0"), *Decimal::read("0.1e1")), 0);
+  EXPECT_EQ(compare(*Decimal::read("-0"), *Decimal::read("0.00")), 0);
+  EXPECT_EQ(compare(*Decimal::read("-2"), *Decimal::read("1")), -1);
+  EXPECT_EQ(compare(*Decimal::read("-2"), *Decimal::read("-10")), 1);
+  // Random decimals against MPFR at 200 digits (every one holds exactly at that precision).
+  std::mt19937 gen(7);
+  std::uniform_int_distribution<int> digit(0, 9), len(1, 30), exp10(-40, 40), sign(0, 1);
+  PrecisionScope scope(200);
+  for (int i = 0; i < 2000; ++i) {
+    auto make = [&] {
+      std::string s = sign(gen) ? "-" : "";
+      const int n = len(gen), dot = std::uniform_int_distribution<int>(0, n)(gen);
+      for (int k = 0; k < n; ++k) s += static_cast<char>('0' + digit(gen)), s += k + 1 == dot && k + 1 < n ? "." : "";
+      return s + "e" + std::to_string(exp10(gen) / (i % 3 == 0 ? 40 : 1));
+    };
+    const std::string x = make(), y = i % 5 == 0 ? x : make();
+    const mpfr mx(x), my(y);
+    EXPECT_EQ(compare(*Decimal::read(x), *Decimal::read(y)), mx < my ? -1 : (mx > my ? 1 : 0)) << x << " " << y;
+  }
+}
+
+TEST(Decimal, ExactSumOfManyTerms) {
+  const std::vector<std::string> texts{"0.1", "-0.30", "2e-5", "7", "-0.0000"};
+  std::vector<Decimal> values;
+  for (const auto& t : texts) values.push_back(*Decimal::read(t));
+  std::vector<const Decimal*> terms;
+  for (const auto& d : values) terms.push_back(&d);
+  // 0.1 − 0.3 + 0.00002 + 7 − 0 = 6.80002, written at the smallest power of ten (10^-5)
+  EXPECT_EQ(exact_sum_text(terms), "680002e-5");
+}
+
+TEST(Decimal, EachTypeTakesTheCorrectlyRoundedValue) {
+  std::mt19937 gen(11);
+  std::uniform_int_distribution<int> digit(0, 9), len(1, 40), exp10(-320, 300);
+  for (int i = 0; i < 3000; ++i) {
+    std::string s = digit(gen) < 5 ? "-" : "";
+    const int n = len(gen);
+    for (int k = 0; k < n; ++k) s += static_cast<char>('0' + digit(gen));
+    s += "e" + std::to_string(exp10(gen));
+    const Decimal d = *Decimal::read(s);
+    // MPFR's reader, correctly rounded at the type's bits (normal results: a subnormal would be
+    // rounded twice this way).
+    mpfr_t x;
+    mpfr_init2(x, 53);
+    mpfr_strtofr(x, s.c_str(), nullptr, 10, MPFR_RNDN);
+    const double expected = mpfr_get_d(x, MPFR_RNDN);
+    mpfr_set_prec(x, 64);
+    mpfr_strtofr(x, s.c_str(), nullptr, 10, MPFR_RNDN);
+    const long double expected_ld = mpfr_get_ld(x, MPFR_RNDN);
+    mpfr_clear(x);
+    if (std::fabs(expected) >= 0x1p-1022 || expected == 0) {
+      EXPECT_EQ(d.to<double>(), expected) << s;
+    }
+    EXPECT_EQ(d.to<long double>(), expected_ld) << s;
+    PrecisionScope scope(60);
+    mpfr reference;
+    mpfr_strtofr(reference.backend().data(), s.c_str(), nullptr, 10, MPFR_RNDN);
+    EXPECT_EQ(d.to<mpfr>(), reference) << s;
+  }
+}
+
+}  // namespace
+}  // namespace vibrofric
