@@ -7,7 +7,6 @@
 #include <gmp.h>
 
 #include <cmath>
-#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -22,10 +21,10 @@ namespace {
 TEST(Decimal, GrammarAcceptsAndRefuses) {
   for (const char* t : {"0", "-0", "+1", "1.", ".5", "-.5", "1.25e-3", "1E9", "1e+999999999", "007.500", "0.000e-5",
                         "123456789012345678901234567890"})
-    EXPECT_TRUE(Decimal::read(t).has_value() && Decimal::valid(t)) << t;
+    EXPECT_TRUE(Decimal::read(t).has_value()) << t;
   for (const char* t : {"", "+", "-", ".", "e5", ".e5", "1e", "1e+", "1e1234567890", "1.2.3", "1,5", " 1", "1 ",
                         "0x10", "inf", "nan", "1e5.0", "--1", "1-", "١"})
-    EXPECT_FALSE(Decimal::read(t).has_value() || Decimal::valid(t)) << t;
+    EXPECT_FALSE(Decimal::read(t).has_value()) << t;
 }
 
 TEST(Decimal, PartsAreSignDigitsAndPowerOfTen) {
@@ -125,17 +124,6 @@ TEST(Decimal, EachTypeTakesTheCorrectlyRoundedValue) {
       EXPECT_EQ(d.to<double>(), expected) << s;
     }
     EXPECT_EQ(d.to<long double>(), expected_ld) << s;
-    // cpp_bin_float_50 and _100 (Boost's reader): MPFR's rounding at their bits, converted exactly.
-    for (const int bits : {std::numeric_limits<bin50>::digits, std::numeric_limits<bin100>::digits}) {
-      PrecisionScope wide(200);
-      mpfr r;
-      mpfr_set_prec(r.backend().data(), bits);
-      mpfr_strtofr(r.backend().data(), s.c_str(), nullptr, 10, MPFR_RNDN);
-      if (bits == std::numeric_limits<bin50>::digits)
-        EXPECT_EQ(mpfr(d.to<bin50>()), r) << s << " in cpp_bin_float_50";
-      else
-        EXPECT_EQ(mpfr(d.to<bin100>()), r) << s << " in cpp_bin_float_100";
-    }
     PrecisionScope scope(60);
     mpfr reference;
     mpfr_strtofr(reference.backend().data(), s.c_str(), nullptr, 10, MPFR_RNDN);

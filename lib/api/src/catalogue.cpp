@@ -368,7 +368,7 @@ const std::vector<std::string>& catalogue_names() {
 }
 
 // The one grammar of decimal text (decimal_value.hpp).
-static bool is_decimal(const std::string& t) { return Decimal::valid(t); }
+static bool is_decimal(const std::string& t) { return Decimal::read(t).has_value(); }
 
 // A number written with a decimal comma, "0,5" or "-1,25e-3" (a European spreadsheet's export):
 // one comma, and a decimal of our grammar with a point in its place.
@@ -399,10 +399,7 @@ void check_decimal(const std::string& text, const std::string& what) {
 
 exact::Rational exact_decimal(const std::string& text, const std::string& what) {
   const auto d = Decimal::read(text);
-  if (!d) {
-    check_decimal(text, what);  // the grammar's refusal (an exact value has no overflow)
-    throw InputError(what + " = '" + text + "': expected a decimal number");  // not reached
-  }
+  if (!d) check_decimal(text, what);  // the grammar's refusal (an exact value has no overflow)
   return d->rational(what);
 }
 

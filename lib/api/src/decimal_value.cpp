@@ -11,49 +11,45 @@ namespace vibrofric {
 
 // Scanned by hand: std::regex cost several µs per 60-digit number, more than a double evaluation
 // (bench/README.md).
-bool Decimal::scan(const std::string& t, Decimal* out) {
+std::optional<Decimal> Decimal::read(const std::string& t) {
+  Decimal d;
   std::size_t i = 0;
   const std::size_t n = t.size();
-  std::string significand, exponent_digits;
   auto digits = [&](std::string* into) {
     const std::size_t start = i;
-    while (i < n && t[i] >= '0' && t[i] <= '9') ++i;
-    if (into) into->append(t, start, i - start);
+    while (i < n && t[i] >= '0' && t[i] <= '9') {
+      if (into) *into += t[i];
+      ++i;
+    }
     return i - start;
   };
-  bool negative = false;
-  if (i < n && (t[i] == '+' || t[i] == '-')) negative = t[i++] == '-';
-  std::size_t mantissa = digits(out ? &significand : nullptr);
+  if (i < n && (t[i] == '+' || t[i] == '-')) d.negative_ = t[i++] == '-';
+  std::string significand;
+  std::size_t mantissa = digits(&significand);
   long scale = 0;  // digits after the point
   if (i < n && t[i] == '.') {
     ++i;
-    const std::size_t fraction = digits(out ? &significand : nullptr);
+    const std::size_t fraction = digits(&significand);
     mantissa += fraction;
     scale = static_cast<long>(fraction);
   }
-  if (mantissa == 0) return false;
-  bool negative_exponent = false;
+  if (mantissa == 0) return std::nullopt;
+  long exponent = 0;
   if (i < n && (t[i] == 'e' || t[i] == 'E')) {
     ++i;
+    bool negative_exponent = false;
     if (i < n && (t[i] == '+' || t[i] == '-')) negative_exponent = t[i++] == '-';
-    const std::size_t count = digits(out ? &exponent_digits : nullptr);
-    if (count == 0 || count > 9) return false;
+    std::string e;
+    const std::size_t count = digits(&e);
+    if (count == 0 || count > 9) return std::nullopt;
+    exponent = std::stol(e);
+    if (negative_exponent) exponent = -exponent;
   }
-  if (i != n) return false;
-  if (out) {
-    const long exponent = exponent_digits.empty() ? 0 : std::stol(exponent_digits);
-    significand.erase(0, std::min(significand.find_first_not_of('0'), significand.size()));
-    out->text_ = t;
-    out->digits_ = std::move(significand);
-    out->negative_ = negative;
-    out->exponent_ = (negative_exponent ? -exponent : exponent) - scale;
-  }
-  return true;
-}
-
-std::optional<Decimal> Decimal::read(const std::string& t) {
-  Decimal d;
-  if (!scan(t, &d)) return std::nullopt;
+  if (i != n) return std::nullopt;
+  significand.erase(0, std::min(significand.find_first_not_of('0'), significand.size()));
+  d.text_ = t;
+  d.digits_ = std::move(significand);
+  d.exponent_ = exponent - scale;
   return d;
 }
 

@@ -103,7 +103,7 @@ void check_decimal(const std::string& text, const std::string& what);
 template <class Real>
 Real parse_real(const std::string& text, const std::string& what) {
   check_decimal(text, what);
-  return Decimal::convert<Real>(text);
+  return Decimal::read(text)->template to<Real>();
 }
 
 // The exact rational of decimal text: certification's inputs. Text outside the grammar is

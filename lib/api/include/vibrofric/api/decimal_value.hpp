@@ -25,21 +25,6 @@ class Decimal {
   // The decimal `text` writes, or none where it is outside the grammar (the caller names the input
   // in its refusal: check_decimal, catalogue.hpp).
   static std::optional<Decimal> read(const std::string& text);
-  // Whether `text` is in the grammar: the same scan, without building the value (the per-point
-  // check of every evaluation).
-  static bool valid(const std::string& text) { return scan(text, nullptr); }
-  // Text in the grammar (valid) correctly rounded to nearest in Real (mpfr: at the current
-  // precision): the C library's strtod/strtold for double and long double, MPFR's and Boost's
-  // readers otherwise; a subnormal result is a value, not an error.
-  template <class Real>
-  static Real convert(const std::string& text) {
-    if constexpr (std::is_same_v<Real, double>)
-      return std::strtod(text.c_str(), nullptr);
-    else if constexpr (std::is_same_v<Real, long double>)
-      return std::strtold(text.c_str(), nullptr);
-    else
-      return Real(text);
-  }
 
   const std::string& text() const { return text_; }
   bool negative() const { return negative_; }
@@ -48,10 +33,17 @@ class Decimal {
   const std::string& digits() const { return digits_; }
   long exponent() const { return exponent_; }
 
-  // The value correctly rounded to nearest in Real (convert).
+  // The value correctly rounded to nearest in Real (mpfr: at the current precision): the C
+  // library's strtod/strtold for double and long double, MPFR's and Boost's readers otherwise;
+  // a subnormal result is a value, not an error.
   template <class Real>
   Real to() const {
-    return convert<Real>(text_);
+    if constexpr (std::is_same_v<Real, double>)
+      return std::strtod(text_.c_str(), nullptr);
+    else if constexpr (std::is_same_v<Real, long double>)
+      return std::strtold(text_.c_str(), nullptr);
+    else
+      return Real(text_);
   }
 
   // The exact value; InputError naming `what` where its power of ten is beyond
@@ -60,9 +52,6 @@ class Decimal {
   exact::Rational rational(const std::string& what) const;
 
  private:
-  // The one scanner: whether `t` is in the grammar, and its parts into `out` where non-null.
-  static bool scan(const std::string& t, Decimal* out);
-
   std::string text_, digits_;
   bool negative_ = false;
   long exponent_ = 0;
