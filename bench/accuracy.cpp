@@ -330,7 +330,7 @@ void BM_accuracy(benchmark::State& state, const std::string& wave, const PathInf
         what = ex.what();
       }
       if (!what.empty()) {
-        state.SkipWithError(("not proven correctly rounded at beta = " + q.beta + ", gamma = " + q.gamma + ": " + what).c_str());
+        state.SkipWithError(("not proven correctly rounded at beta = " + q.beta.text() + ", gamma = " + q.gamma.text() + ": " + what).c_str());
         break;
       }
     }

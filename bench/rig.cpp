@@ -92,9 +92,9 @@ void BM_rig_guaranteed(benchmark::State& state, const RigCase& c, int digits) {
   const WaveSpec spec = parse_wave(c.wave);
   const Point point{c.beta, c.gamma};
   RigSpec rig;
-  rig.kappa = c.kappa;
-  rig.omega = c.omega;
-  rig.zeta = c.zeta;
+  rig.kappa = InputValue::read(c.kappa, "kappa");
+  rig.omega = InputValue::read(c.omega, "omega");
+  rig.zeta = InputValue::read(c.zeta, "zeta");
   Precision precision;
   precision.type = digits ? NumberType::mpfr : NumberType::float64;
   if (digits) precision.digits = digits;

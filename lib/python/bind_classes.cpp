@@ -215,19 +215,34 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
           [](const PyProfile& p) {
             const ProfileSpec& s = p.spec;
             // A computed parameter (physical's wear-flat lambda) never reaches a Profile object.
-            if (s.parameter_value) throw InputError("profile " + s.name + ": a computed parameter cannot be pickled");
-            return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.parameter, text_list(s.r),
-                                  text_list(s.f), s.height_unit);
+            if (s.parameter.computed_value() || s.height_unit.computed_value())
+              throw InputError("profile " + s.name + ": a computed parameter cannot be pickled");
+            const auto texts = [](const std::vector<Decimal>& v) {
+              py::list out;
+              for (const Decimal& d : v) out.append(d.text());
+              return out;
+            };
+            return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.parameter.text(), texts(s.r),
+                                  texts(s.f), s.height_unit.given() ? s.height_unit.text() : std::string("1"));
           },
           [](const py::tuple& t) {
             check_state(t, 7, "Profile");
             PyProfile p;
             p.spec.kind = static_cast<ProfileKind>(t[1].cast<int>());
             p.spec.name = t[2].cast<std::string>();
-            p.spec.parameter = t[3].cast<std::string>();
-            p.spec.r = texts_of(t[4]);
-            p.spec.f = texts_of(t[5]);
-            p.spec.height_unit = t[6].cast<std::string>();
+            const auto number = [](const std::string& text, const char* what) {
+              return text.empty() ? InputValue() : InputValue::read(text, std::string("pickled Profile ") + what);
+            };
+            const auto decimals = [&](const py::handle& list, const char* what) {
+              std::vector<Decimal> out;
+              for (const std::string& text : texts_of(list)) out.push_back(*number(text, what).decimal());
+              return out;
+            };
+            p.spec.parameter = number(t[3].cast<std::string>(), "parameter");
+            p.spec.r = decimals(t[4], "r");
+            p.spec.f = decimals(t[5], "f");
+            const std::string unit = t[6].cast<std::string>();
+            if (unit != "1") p.spec.height_unit = number(unit, "height unit");
             return p;
           }))
       .def("__repr__", [](const PyProfile& p) {

@@ -107,9 +107,9 @@ arrays) while the others answer.
           PhysicalRequest request;
           request.shape.text = shape.cast<std::string>();
           if (!unit.is_none()) request.unit.text = unit.cast<std::string>();
-          for (auto& [member, input] : request.inputs()) {
-            const auto it = values.find(member);
-            if (it != values.end()) input->text = scalar_text(it->second, member);
+          for (const auto& input : request.inputs()) {
+            const auto it = values.find(input.member);
+            if (it != values.end() && input.number) input.number->value = scalar_value(it->second, input.member);
           }
           return request;
         };

@@ -85,8 +85,8 @@ at the equally spaced phases and the central spring's contact boundaries.
         const WaveSpec w = to_wave(wave);
         TraceRequest request;
         request.profile = to_profile(profile);
-        request.beta.text = scalar_text(beta, "beta");
-        request.gamma.text = scalar_text(gamma, "gamma");
+        request.beta.value = scalar_value(beta, "beta");
+        request.gamma.value = scalar_value(gamma, "gamma");
         if (const auto n = optional_int(points, "points")) request.points = *n;
         if (const auto d = optional_int(digits, "digits")) request.digits = *d;
         if (!kappa.is_none() || !omega.is_none() || !zeta.is_none()) {
@@ -94,9 +94,9 @@ at the equally spaced phases and the central spring's contact boundaries.
             throw InputError(std::string("missing ") + (kappa.is_none() ? "kappa" : "omega") +
                              ": rig dynamics needs kappa and omega (zeta is optional)");
           RigSpec rig;
-          rig.kappa = scalar_text(kappa, "kappa");
-          rig.omega = scalar_text(omega, "omega");
-          rig.zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
+          rig.kappa = scalar_value(kappa, "kappa");
+          rig.omega = scalar_value(omega, "omega");
+          if (!zeta.is_none()) rig.zeta = scalar_value(zeta, "zeta");
           std::vector<RigTraceRow> rows;
           {
             py::gil_scoped_release release;

@@ -94,9 +94,9 @@ Flat punch only (Psi does not exist for curved profiles).
           if (certify) throw InputError("certify: certified values exist for the quasi-static model only, not with kappa/omega");
           if (!escalate) throw InputError("escalate=False: rig dynamics is always computed in mpfr at two precisions");
           e.rig.emplace();
-          e.rig->kappa = scalar_text(kappa, "kappa");
-          e.rig->omega = scalar_text(omega, "omega");
-          e.rig->zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
+          e.rig->kappa = scalar_value(kappa, "kappa");
+          e.rig->omega = scalar_value(omega, "omega");
+          if (!zeta.is_none()) e.rig->zeta = scalar_value(zeta, "zeta");
           check_rig(*e.rig);
         }
         e.nan_on_error = nan_on_error;
@@ -148,10 +148,10 @@ Flat punch only (Psi does not exist for curved profiles).
         const WaveSpec w = to_wave(wave);
         const Precision precision = to_precision(optional_int(digits, "digits"), type);
         RigSpec spec;
-        spec.kappa = scalar_text(kappa, "kappa");
-        spec.omega = scalar_text(omega, "omega");
-        spec.zeta = zeta.is_none() ? std::string("0") : scalar_text(zeta, "zeta");
-        const Point point{scalar_text(beta, "beta"), scalar_text(gamma, "gamma")};
+        spec.kappa = scalar_value(kappa, "kappa");
+        spec.omega = scalar_value(omega, "omega");
+        if (!zeta.is_none()) spec.zeta = scalar_value(zeta, "zeta");
+        const Point point{scalar_value(beta, "beta"), scalar_value(gamma, "gamma")};
         RigReport r;
         {
           py::gil_scoped_release release;

@@ -218,10 +218,8 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
   const bool with_gamma = e.quantity == Quantity::mu;
   auto point = [&](std::size_t i) {
     const auto at = index(i);
-    Point p;
-    p.beta = betas.text(at[0]);
-    if (with_gamma) p.gamma = gammas.text(at[1]);
-    return p;
+    return Point{InputValue::read(betas.text(at[0]), "beta"),
+                 with_gamma ? InputValue::read(gammas.text(at[1]), "gamma") : InputValue()};
   };
   std::vector<std::pair<exact::Rational, exact::Rational>> values(n);
   {
@@ -296,10 +294,8 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
         wave, e.quantity, n,
         [&](std::size_t i) {
           const auto at = index(i);
-          Point p;
-          p.beta = betas.text(at[0]);
-          if (with_gamma) p.gamma = gammas.text(at[1]);
-          return p;
+          return Point{InputValue::read(betas.text(at[0]), "beta"),
+                       with_gamma ? InputValue::read(gammas.text(at[1]), "gamma") : InputValue()};
         },
         precision, options, [&](std::size_t i, const StreamValue& value) { out.put(i, value); });
     out.flush();

@@ -49,6 +49,8 @@ std::string scalar_text(const py::handle& x, const std::string& what) {
   throw py::type_error(what + " = " + py_repr(x) + ": expected a real number or a decimal string");
 }
 
+InputValue scalar_value(const py::handle& x, const std::string& what) { return InputValue::read(scalar_text(x, what), what); }
+
 Precision to_precision(const std::optional<int>& digits, const py::object& type) {
   Precision p;
   if (!type.is_none() && !py::isinstance<py::str>(type))

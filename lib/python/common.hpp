@@ -43,6 +43,8 @@ ProfileSpec to_profile(const py::object& p);
 // is the decimal 0.1, as typed on the tool's command line), integers exactly, strings as given
 // (exact decimals at any precision). Booleans and other types are refused.
 std::string scalar_text(const py::handle& x, const std::string& what);
+// scalar_text read by the one grammar (InputError naming `what`).
+InputValue scalar_value(const py::handle& x, const std::string& what);
 
 std::optional<int> optional_int(const py::object& x, const char* what);
 

@@ -97,10 +97,7 @@ const std::vector<CommandSpec>& commands() {
       {"mu", "mu --wave W --beta B --gamma G [--profile P]: mu/mu0 = g_w(beta, gamma) (Eq. 15)",
        {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", decimal_beta},
         {"gamma", "G", "gamma = u_mean/A (Eq. 14), a decimal with contact, gamma > -max w (required)", "",
-         [](Flags& f, const std::string& t) {
-           check_decimal(t, "--gamma");
-           f.gamma = t;
-         }},
+         [](Flags& f, const std::string& t) { f.gamma = InputValue::read(t, "--gamma"); }},
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
         {"format", "F", "text | csv | json", "text", format_of_point},
         kCertifyFlag},
@@ -117,12 +114,10 @@ const std::vector<CommandSpec>& commands() {
        run_psi},
       {"sweep", "sweep --wave W --beta RANGE --gamma G1,G2,...|RANGE [--profile P]: rows streamed in order",
        {{"beta", "RANGE", "FROM:TO:N (linear, ends included) or log:FROM:TO:N (geometric) (required)", "",
-         [](Flags& f, const std::string& t) { f.betas = value_range(t, "--beta", false); }},
+         [](Flags& f, const std::string& t) { f.betas = read_all(value_range(t, "--beta", false), "--beta"); }},
         {"gamma", "G", "a list G1,G2,... or a range FROM:TO:N (FROM > TO allowed); not with --quantity psi", "",
          [](Flags& f, const std::string& t) {
-           f.gamma = t;
-           f.gammas = t.find(':') != std::string::npos ? value_range(t, "--gamma", true) : split(t, ',');
-           for (const auto& g : f.gammas) check_decimal(g, "--gamma value");
+           f.gammas = read_all(t.find(':') != std::string::npos ? value_range(t, "--gamma", true) : split(t, ','), "--gamma value");
          }},
         {"quantity", "Q", "mu | psi", "mu",
          [](Flags& f, const std::string& t) {

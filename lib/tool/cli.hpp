@@ -37,9 +37,9 @@ struct Flags {
   bool certify = false;
   // Solver controls (solver.hpp Options): a budget the solver cannot meet is an error, never a value.
   Options solver;
-  // mu, psi, trace: β and γ as typed; sweep: their values, and γ's text
-  std::optional<std::string> beta, gamma;
-  std::vector<std::string> betas, gammas;
+  // mu, psi, trace: β and γ; sweep: their values
+  InputValue beta, gamma;
+  std::vector<InputValue> betas, gammas;
   std::optional<std::string> profile_text;
   ProfileSpec profile;
   std::optional<Format> format;
@@ -47,8 +47,8 @@ struct Flags {
   unsigned threads = 0;
   std::optional<int> points, harmonics;
   std::optional<std::string> output, claim;
-  // Rig dynamics (model.md): κ, Ω, ζ as typed
-  std::optional<std::string> kappa, omega, zeta;
+  // Rig dynamics (model.md): κ, Ω, ζ
+  InputValue kappa, omega, zeta;
   std::map<std::string, std::string> texts;  // as typed, by flag name: the flags without a reader
 };
 
@@ -95,6 +95,7 @@ std::string hint(const std::string& typed, const std::vector<std::string>& known
 Format format_named(const std::string& text);
 std::vector<std::string> split(const std::string& s, char sep);
 std::vector<std::string> value_range(const std::string& spec, const std::string& flag, bool descending);
+std::vector<InputValue> read_all(const std::vector<std::string>& texts, const std::string& what);
 extern const std::vector<FlagSpec> kWaveFlags;
 extern const std::vector<FlagSpec> kPrecisionFlags;
 extern const std::vector<FlagSpec> kSolverFlags;
@@ -110,6 +111,7 @@ void text_gamma(Flags& f, const std::string& t);
 // Helpers of the commands (common.cpp): required flags, precision and batch options, CSV and JSON
 // output, the wave, --certify.
 const std::string& need(const Flags& f, const std::optional<std::string>& value, const std::string& name);
+const InputValue& need(const Flags& f, const InputValue& value, const std::string& name);
 Precision precision_of(const Flags& f);
 BatchOptions batch_options(const Flags& f);
 void write_csv_row(const std::vector<std::string>& fields);

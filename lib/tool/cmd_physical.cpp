@@ -16,11 +16,11 @@ namespace {
 // --u-mean), and its controls.
 PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, std::string>& texts, const WaveSpec& wave) {
   PhysicalRequest request;
-  for (auto& [member, input] : request.inputs()) {
-    std::string flag = member;
+  for (const auto& input : request.inputs()) {
+    std::string flag = input.member;
     std::replace(flag.begin(), flag.end(), '_', '-');
-    input->name = "--" + flag;
-    if (const auto it = texts.find(flag); it != texts.end()) input->text = it->second;
+    input.name() = "--" + flag;
+    if (const auto it = texts.find(flag); it != texts.end()) input.set(it->second);
   }
   std::vector<std::string> warnings;
   PhysicalOutputs out = physical_point(wave, request, precision_of(f), batch_options(f), &warnings);

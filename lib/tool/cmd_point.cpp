@@ -44,7 +44,8 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
     return 0;
   }
   std::vector<std::string> names{"wave", "beta", "gamma", "kappa", "omega", "zeta", "mu_over_mu0"};
-  std::vector<std::string> values{wave.name, p.beta, p.gamma, opt.rig->kappa, opt.rig->omega, opt.rig->zeta, r.mu};
+  std::vector<std::string> values{wave.name,         p.beta.text(),      p.gamma.text(), opt.rig->kappa.text(),
+                                  opt.rig->omega.text(), opt.rig->zeta.text(), r.mu};
   for (const auto& [name, value] : fields) {
     names.push_back(name);
     values.push_back(value);
@@ -54,7 +55,7 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
 
 int run_point(const Flags& f, Quantity q) {
   const WaveSpec wave = read_wave(f);
-  const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : std::string()};
+  const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : InputValue()};
   const BatchOptions opt = batch_options(f);
   if (q == Quantity::psi && opt.profile.kind != ProfileKind::flat)
     throw InputError("psi --profile " + detail::visible(*f.profile_text) +
@@ -82,10 +83,10 @@ int run_point(const Flags& f, Quantity q) {
     values.push_back(opt.profile.name);
   }
   names.push_back("beta");
-  values.push_back(p.beta);
+  values.push_back(p.beta.text());
   if (q == Quantity::mu) {
     names.push_back("gamma");
-    values.push_back(p.gamma);
+    values.push_back(p.gamma.text());
   }
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   values.push_back(value);

@@ -20,15 +20,15 @@ int run_sweep(const Flags& f) {
   if (f.betas.empty()) throw InputError("missing --beta for 'sweep'");
   // --quantity psi: Ψ_w(β) (Eq. 12), which has no γ.
   const Quantity q = f.quantity;
-  std::vector<std::string> gammas;
+  std::vector<InputValue> gammas;
   if (q == Quantity::psi) {
-    if (f.gamma) throw InputError("--gamma does not apply to --quantity psi: Psi_w(beta) has no gamma (Eq. 12)");
-    gammas.push_back("");
+    if (!f.gammas.empty()) throw InputError("--gamma does not apply to --quantity psi: Psi_w(beta) has no gamma (Eq. 12)");
+    gammas.emplace_back();
   } else {
-    need(f, f.gamma, "gamma");
+    if (f.gammas.empty()) throw InputError("missing --gamma for 'sweep'");
     gammas = f.gammas;
   }
-  const std::vector<std::string>& betas = f.betas;
+  const std::vector<InputValue>& betas = f.betas;
   const Precision prec = precision_of(f);
   const Format format = f.format.value_or(Format::csv);
   // Points made on demand, γ-major as the rows (a 3000 × 3000 map holds no vector of points).
@@ -73,17 +73,16 @@ int run_sweep(const Flags& f) {
   // domain (β ≥ 0 and representable, contact at the smallest γ, a profile's extent at the largest)
   // is monotone in β and γ, so the four corners decide it before any row is written.
   if (count > 0) {
-    auto extreme = [](const std::vector<std::string>& v, bool largest) {
-      PrecisionScope scope(40);
+    auto extreme = [](const std::vector<InputValue>& v, bool largest) {
       std::size_t k = 0;
       for (std::size_t i = 1; i < v.size(); ++i)
-        if (largest ? mpfr(v[i]) > mpfr(v[k]) : mpfr(v[i]) < mpfr(v[k])) k = i;
+        if (compare(*v[i].decimal(), *v[k].decimal()) == (largest ? 1 : -1)) k = i;
       return v[k];
     };
     std::vector<Point> corners;
     for (bool big_beta : {false, true})
       for (bool big_gamma : {false, true})
-        corners.push_back({extreme(betas, big_beta), q == Quantity::mu ? extreme(gammas, big_gamma) : std::string()});
+        corners.push_back({extreme(betas, big_beta), q == Quantity::mu ? extreme(gammas, big_gamma) : InputValue()});
     BatchOptions quiet = opt;
     quiet.progress = nullptr;
     evaluate(wave, q, corners, prec, quiet);
@@ -96,9 +95,9 @@ int run_sweep(const Flags& f) {
     const Point pt = point(i);
     std::vector<std::string> r{wave.name};
     if (curved) r.push_back(opt.profile.name);
-    r.push_back(pt.beta);
-    if (q == Quantity::mu) r.push_back(pt.gamma);
-    if (opt.rig) r.insert(r.end(), {opt.rig->kappa, opt.rig->omega, opt.rig->zeta});
+    r.push_back(pt.beta.text());
+    if (q == Quantity::mu) r.push_back(pt.gamma.text());
+    if (opt.rig) r.insert(r.end(), {opt.rig->kappa.text(), opt.rig->omega.text(), opt.rig->zeta.text()});
     r.push_back(value.text);
     if (certifier)
       for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), certifier->encloses()))

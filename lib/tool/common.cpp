@@ -17,6 +17,11 @@ const std::string& need(const Flags& f, const std::optional<std::string>& value,
   return *value;
 }
 
+const InputValue& need(const Flags& f, const InputValue& value, const std::string& name) {
+  if (!value.given()) throw InputError("missing --" + name + " for '" + f.command + "'");
+  return value;
+}
+
 Precision precision_of(const Flags& f) {
   Precision p;
   if (f.type) p.type = *f.type;
@@ -33,18 +38,18 @@ BatchOptions batch_options(const Flags& f) {
   o.profile = f.profile;
   o.escalate = !f.no_escalate;
   o.solver = f.solver;
-  if (f.kappa || f.omega || f.zeta) {
+  if (f.kappa.given() || f.omega.given() || f.zeta.given()) {
     if (f.command == "psi")
       throw InputError("--kappa, --omega, --zeta do not apply to psi: Psi (Eq. 12) belongs to the quasi-static model (use mu)");
-    if (!f.kappa || !f.omega)
-      throw InputError(std::string("missing --") + (f.kappa ? "omega" : "kappa") +
+    if (!f.kappa.given() || !f.omega.given())
+      throw InputError(std::string("missing --") + (f.kappa.given() ? "omega" : "kappa") +
                        ": rig dynamics needs --kappa and --omega (--zeta is optional)");
     if (f.certify) throw InputError("--certify: certified values exist for the quasi-static model only, not with --kappa/--omega");
     if (f.no_escalate) throw InputError("--no-escalate: rig dynamics is always computed in mpfr at two precisions");
     o.rig.emplace();
-    o.rig->kappa = *f.kappa;
-    o.rig->omega = *f.omega;
-    o.rig->zeta = f.zeta.value_or("0");
+    o.rig->kappa = f.kappa;
+    o.rig->omega = f.omega;
+    if (f.zeta.given()) o.rig->zeta = f.zeta;
     check_rig(*o.rig);
     if (o.profile.kind != ProfileKind::flat)
       throw InputError("--kappa/--omega with --profile " + detail::visible(f.profile_text.value_or("")) +

@@ -151,10 +151,7 @@ const std::vector<FlagSpec> kSolverFlags{
      }},
 };
 
-void decimal_beta(Flags& f, const std::string& t) {
-  check_decimal(t, "--beta");
-  f.beta = t;
-}
+void decimal_beta(Flags& f, const std::string& t) { f.beta = InputValue::read(t, "--beta"); }
 void profile_named(Flags& f, const std::string& t) {
   f.profile = parse_profile(t);
   f.profile_text = t;
@@ -164,18 +161,15 @@ void format_of_point(Flags& f, const std::string& t) { f.format = format_named(t
 const std::vector<FlagSpec> kRigFlags{
     {"kappa", "K", "rig dynamics: system stiffness over contact stiffness, k_s/k_x > 0 (with --omega)", "quasi-static (none)",
      [](Flags& f, const std::string& t) {
-       check_decimal(t, "--kappa");
-       f.kappa = t;
+       f.kappa = InputValue::read(t, "--kappa");
      }},
     {"omega", "W", "rig dynamics: contact frequency over excitation frequency, sqrt(k_x/m)/(2 pi f) > 0 (with --kappa)", "",
      [](Flags& f, const std::string& t) {
-       check_decimal(t, "--omega");
-       f.omega = t;
+       f.omega = InputValue::read(t, "--omega");
      }},
     {"zeta", "Z", "rig dynamics: damping ratio of the system spring, c/(2 sqrt(m k_s)) >= 0", "0",
      [](Flags& f, const std::string& t) {
-       check_decimal(t, "--zeta");
-       f.zeta = t;
+       f.zeta = InputValue::read(t, "--zeta");
      }},
 };
 
@@ -189,7 +183,14 @@ void format_of_rows(Flags& f, const std::string& t) {
   f.format = format_named(t);
   if (f.format == Format::text) throw InputError("--format text: sweep writes csv (the default) or json");
 }
-void text_beta(Flags& f, const std::string& t) { f.beta = t; }
-void text_gamma(Flags& f, const std::string& t) { f.gamma = t; }
+void text_beta(Flags& f, const std::string& t) { f.beta = InputValue::read(t, "--beta"); }
+void text_gamma(Flags& f, const std::string& t) { f.gamma = InputValue::read(t, "--gamma"); }
+
+std::vector<InputValue> read_all(const std::vector<std::string>& texts, const std::string& what) {
+  std::vector<InputValue> out;
+  out.reserve(texts.size());
+  for (const auto& t : texts) out.push_back(InputValue::read(t, what));
+  return out;
+}
 
 }  // namespace vibrofric::tool

@@ -328,7 +328,7 @@ TYPED_TEST_P(Properties, EvaluatedValuesCorrectInCorners) {
         return std::strtold(text.c_str(), nullptr);
     };
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      const auto beta = decimal_rational(pts[i].beta), gamma = decimal_rational(pts[i].gamma);
+      const auto beta = decimal_rational(pts[i].beta.text()), gamma = decimal_rational(pts[i].gamma.text());
       EXPECT_EQ(read(got[i]), nearest<Real>(closed_form::mu_triangle_jumping(beta)))
           << "triangle beta " << pts[i].beta << " gamma " << pts[i].gamma << ": " << got[i];
       EXPECT_EQ(read(got_sqr[i]), nearest<Real>(closed_form::mu_square_jumping(beta, gamma)))
@@ -338,7 +338,7 @@ TYPED_TEST_P(Properties, EvaluatedValuesCorrectInCorners) {
   }
   PrecisionScope ref(static_cast<unsigned>(2 * digits + 20));
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const mpfr beta(pts[i].beta), gamma(pts[i].gamma);
+    const mpfr beta(pts[i].beta.text()), gamma(pts[i].gamma.text());
     for (const auto& [text, want] : {std::pair{got[i], closed_form::mu_triangle_jumping(beta)},
                                      std::pair{got_sqr[i], closed_form::mu_square_jumping(beta, gamma)}}) {
       using std::abs;

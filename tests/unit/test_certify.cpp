@@ -107,8 +107,8 @@ Interval enclosure_at_256_bits(const WaveSpec& spec, Quantity q, const Rational&
 // The raw solve in T: its bound must hold against the exact value.
 template <class T>
 void check_bound(const WaveSpec& spec, const Waveform<T>& w, Quantity q, const Point& p, Ratios& ratios) {
-  const T beta = parse_real<T>(p.beta, "beta");
-  const Result<T> r = q == Quantity::psi ? psi(w, beta) : solve(w, beta, parse_real<T>(p.gamma, "gamma"));
+  const T beta = parse_real<T>(p.beta.text(), "beta");
+  const Result<T> r = q == Quantity::psi ? psi(w, beta) : solve(w, beta, parse_real<T>(p.gamma.text(), "gamma"));
   const T value = q == Quantity::psi ? r.lost_area : r.mu;
   using std::isfinite;
   const T& bound = q == Quantity::psi ? r.lost_relative_error : r.relative_error;
@@ -120,7 +120,7 @@ void check_bound(const WaveSpec& spec, const Waveform<T>& w, Quantity q, const P
   // (relative eps/2 each, amplified by the condition number) is not the solver's: compare with
   // the exact value at the rounded inputs.
   const Rational beta_t = exact_of(beta);
-  const Rational gamma_t = q == Quantity::psi ? Rational(0) : exact_of(parse_real<T>(p.gamma, "gamma"));
+  const Rational gamma_t = q == Quantity::psi ? Rational(0) : exact_of(parse_real<T>(p.gamma.text(), "gamma"));
   Rational at_rounded, actual;
   if (Certifier(spec, ProfileSpec{}).encloses()) {
     // The enclosure at 256 bits; the actual error is at most the distance to its farther end.
@@ -206,8 +206,8 @@ TEST(Certify, GuaranteedValuesAreTheCertifiedRoundings) {
       std::vector<Point> some(points.begin(), points.begin() + n / 10);
       const std::vector<std::string> l = evaluate(spec, q, some, {NumberType::float80, 0});
       for (int i = 0; i < n; ++i) {
-        const std::string at = spec.name + (q == Quantity::psi ? " psi" : " mu") + " beta = " + points[i].beta +
-                               (q == Quantity::mu ? " gamma = " + points[i].gamma : std::string());
+        const std::string at = spec.name + (q == Quantity::psi ? " psi" : " mu") + " beta = " + points[i].beta.text() +
+                               (q == Quantity::mu ? " gamma = " + points[i].gamma.text() : std::string());
         const Certificate c = certifier(q, points[i], {NumberType::float64, 0}, d[i]);
         ASSERT_TRUE(c.correctly_rounded) << at << ": printed " << d[i] << ", exact " << c.exact << ", nearest " << c.nearest.front();
         // Both ends of an enclosure (the sine) round to the printed double; exact: the same end.

@@ -86,7 +86,7 @@ TEST(CurvedClosedForm, SolverAgreesWithTheClosedFormsTo45Digits) {
         const char* beta = (++k % 3 == 0) ? "0.4" : (k % 3 == 1 ? "1.5" : "5");
         const mpfr b = M(beta), g = M(gamma);
         const auto spec = parse_profile(profile);
-        const mpfr par(spec.parameter);
+        const mpfr par(spec.parameter.text());
         const auto cf = spec.kind == ProfileKind::power ? closed_form::power_profile_integrals(cw, par, b, g)
                                                         : closed_form::wearflat_integrals(cw, par, b, g);
         const auto r = curved<mpfr>(wave, profile, b, g);
@@ -134,8 +134,8 @@ TEST(CurvedClosedForm, SteepPowerProfilesAgreeWithTheClosedForms) {
 // d = max(γ + w, 0) is an independent tanh-sinh quadrature in φ, split at the contact boundaries.
 mpfr mean_load(const std::string& wave, const std::string& profile, const mpfr& gamma) {
   const auto spec = parse_profile(profile);
-  const mpfr n = spec.kind == ProfileKind::power ? mpfr(spec.parameter) : mpfr(0);
-  const mpfr lambda = spec.kind == ProfileKind::wearflat ? mpfr(spec.parameter) : mpfr(0);
+  const mpfr n = spec.kind == ProfileKind::power ? mpfr(spec.parameter.text()) : mpfr(0);
+  const mpfr lambda = spec.kind == ProfileKind::wearflat ? mpfr(spec.parameter.text()) : mpfr(0);
   auto load = [&](const mpfr& d) -> mpfr {
     if (!(d > 0)) return mpfr(0);
     if (spec.kind == ProfileKind::power) return pow(d, 1 + 1 / n) * n / (n + 1);
@@ -187,9 +187,9 @@ TEST(CurvedClosedForm, NormalIntegralIsTheMeanHertzSneddonAndWearFlatLoadAt40Dig
         const auto spec = parse_profile(profile);
         const mpfr X = r.contact_radius, s = M(gamma) + 1;
         if (spec.kind == ProfileKind::power)
-          EXPECT_LE(abs(pow(X, mpfr(spec.parameter)) - s), 16 * eps * s);
+          EXPECT_LE(abs(pow(X, mpfr(spec.parameter.text())) - s), 16 * eps * s);
         else
-          EXPECT_LE(abs(X * X * (X * X - 1) - pow(s / mpfr(spec.parameter), 2)), 16 * eps * pow(X, 4));
+          EXPECT_LE(abs(X * X * (X * X - 1) - pow(s / mpfr(spec.parameter.text()), 2)), 16 * eps * pow(X, 4));
       }
 }
 

@@ -7,6 +7,7 @@
 #include <gmp.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -124,6 +125,17 @@ TEST(Decimal, EachTypeTakesTheCorrectlyRoundedValue) {
       EXPECT_EQ(d.to<double>(), expected) << s;
     }
     EXPECT_EQ(d.to<long double>(), expected_ld) << s;
+    // cpp_bin_float_50 and _100 (Boost's reader): MPFR's rounding at their bits, converted exactly.
+    for (const int bits : {std::numeric_limits<bin50>::digits, std::numeric_limits<bin100>::digits}) {
+      PrecisionScope wide(200);
+      mpfr r;
+      mpfr_set_prec(r.backend().data(), bits);
+      mpfr_strtofr(r.backend().data(), s.c_str(), nullptr, 10, MPFR_RNDN);
+      if (bits == std::numeric_limits<bin50>::digits)
+        EXPECT_EQ(mpfr(d.to<bin50>()), r) << s << " in cpp_bin_float_50";
+      else
+        EXPECT_EQ(mpfr(d.to<bin100>()), r) << s << " in cpp_bin_float_100";
+    }
     PrecisionScope scope(60);
     mpfr reference;
     mpfr_strtofr(reference.backend().data(), s.c_str(), nullptr, 10, MPFR_RNDN);

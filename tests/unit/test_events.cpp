@@ -264,13 +264,13 @@ void check_ladder_against_60_digits(NumberType type) {
       const auto got = evaluate(spec, q, points, {type, 0}, options);
       points_total += points.size();
       for (std::size_t i = 0; i < points.size(); ++i) {
-        const std::string where = std::string(wave) + (q == Quantity::mu ? " mu" : " psi") + " beta " + points[i].beta +
-                                  " gamma " + points[i].gamma;
+        const std::string where = std::string(wave) + (q == Quantity::mu ? " mu" : " psi") + " beta " + points[i].beta.text() +
+                                  " gamma " + points[i].gamma.text();
         std::optional<T> want;
         for (unsigned digits : {60u, 120u}) {
           PrecisionScope scope(digits);
           const auto w = make_waveform<mpfr>(spec);
-          const mpfr beta(points[i].beta), gamma(points[i].gamma);
+          const mpfr beta(points[i].beta.text()), gamma(points[i].gamma.text());
           const Result<mpfr> r = q == Quantity::mu ? solve(*w, beta, gamma) : psi(*w, beta);
           const mpfr value = q == Quantity::mu ? r.mu : r.lost_area;
           const mpfr error = abs(value) * (q == Quantity::mu ? r.relative_error : r.lost_relative_error);
@@ -325,7 +325,7 @@ TEST(Events, LadderCountsTheRungThatAnswered) {
   for (std::size_t i = 0; i < inside.size(); ++i) {
     PrecisionScope scope(40);
     const auto w = make_waveform<mpfr>(sine);
-    const Result<mpfr> r = solve(*w, mpfr(inside[i].beta), mpfr(inside[i].gamma));
+    const Result<mpfr> r = solve(*w, mpfr(inside[i].beta.text()), mpfr(inside[i].gamma.text()));
     const std::optional<double> want = rounds_to_one<double>(r.mu, r.mu * r.relative_error);
     ASSERT_TRUE(want) << inside[i].beta << " " << inside[i].gamma << ": 40 digits do not decide the rounding";
     EXPECT_EQ(std::stod(got[i]), *want) << inside[i].beta << " " << inside[i].gamma;

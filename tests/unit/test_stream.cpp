@@ -165,10 +165,22 @@ void expect_correct_decimal(const mpfr& value, const std::string& text, int digi
 mpfr reference(Quantity q, const Point& pt, bool sphere, unsigned digits) {
   PrecisionScope scope(digits);
   const Sine<mpfr> sine;
-  const mpfr beta(pt.beta), gamma(q == Quantity::psi ? "0" : pt.gamma);
-  if (sphere) return solve_curved<mpfr>(sine, *make_profile<mpfr>(parse_profile("sphere")), beta, gamma).mu;
-  if (q == Quantity::psi) return psi<mpfr>(sine, beta).lost_area;
-  return solve<mpfr>(sine, beta, gamma).mu;
+  const mpfr beta(pt.beta.text()), gamma(q == Quantity::psi ? "0" : pt.gamma.text());
+  // Its own error bound must leave 15 of the 40 extra digits (β → 0 with γ → −1 spends about 10).
+  const mpfr bound = pow(mpfr(10), -static_cast<int>(digits) + 25);
+  if (sphere) {
+    const auto r = solve_curved<mpfr>(sine, *make_profile<mpfr>(parse_profile("sphere")), beta, gamma);
+    EXPECT_LE(r.relative_error, bound) << "reference at beta " << pt.beta;
+    return r.mu;
+  }
+  if (q == Quantity::psi) {
+    const auto r = psi<mpfr>(sine, beta);
+    EXPECT_LE(r.lost_relative_error, bound) << "reference at beta " << pt.beta;
+    return r.lost_area;
+  }
+  const auto r = solve<mpfr>(sine, beta, gamma);
+  EXPECT_LE(r.relative_error, bound) << "reference at beta " << pt.beta << " gamma " << pt.gamma;
+  return r.mu;
 }
 
 // Each delivered text against the reference: the correctly rounded value of the type (double,
@@ -217,8 +229,8 @@ TEST(evaluate_stream, SameStringsAsEvaluateInEveryType) {
         const unsigned ref_digits = static_cast<unsigned>(output_digits(c.precision)) + 40;
         for (std::size_t i = 0; i < n; ++i)
           expect_rounding_of_reference(want[i], reference(q, points[i], profile == "sphere", ref_digits), c.precision,
-                                       number_type_name(c.precision.type) + " " + profile + " beta " + points[i].beta +
-                                           " gamma " + points[i].gamma);
+                                       number_type_name(c.precision.type) + " " + profile + " beta " + points[i].beta.text() +
+                                           " gamma " + points[i].gamma.text());
         for (const unsigned threads : {1u, 2u}) {
           o.threads = threads;
           const std::string where = number_type_name(c.precision.type) + " " + profile +
@@ -303,20 +315,24 @@ TEST(evaluate_stream, PointByValueAnswersAsItsDecimal) {
   for (const TypeCase& c : type_cases()) {
     for (const auto& [beta, gamma] : values) {
       Point by_text(beta.str(130, std::ios_base::scientific), gamma.str(130, std::ios_base::scientific));
-      Point by_value("beta", "gamma");
-      by_value.beta_value = beta;
-      by_value.gamma_value = gamma;
-      const std::string where = number_type_name(c.precision.type) + " beta " + by_text.beta;
+      const Point by_value{InputValue::computed(beta, "beta"), InputValue::computed(gamma, "gamma")};
+      const std::string where = number_type_name(c.precision.type) + " beta " + by_text.beta.text();
       EXPECT_EQ(evaluate(sine, Quantity::mu, {by_value}, c.precision).front(),
                 evaluate(sine, Quantity::mu, {by_text}, c.precision).front())
           << where;
     }
   }
   // No contact by value is refused as by text, naming the text.
-  Point none("0.5", "gamma -1 - 1e-40");
-  none.beta_value = mpfr("0.5");
-  none.gamma_value = mpfr(-1) - pow(mpfr(10), -40);
-  for (const TypeCase& c : type_cases()) EXPECT_THROW(evaluate(sine, Quantity::mu, {none}, c.precision), DomainError);
+  const Point none{InputValue::computed(mpfr("0.5"), "0.5"),
+                   InputValue::computed(mpfr(mpfr(-1) - pow(mpfr(10), -40)), "gamma -1 - 1e-40")};
+  for (const TypeCase& c : type_cases()) {
+    try {
+      evaluate(sine, Quantity::mu, {none}, c.precision);
+      ADD_FAILURE() << number_type_name(c.precision.type) << ": no contact was not refused";
+    } catch (const DomainError& e) {
+      EXPECT_NE(std::string(e.what()).find("gamma -1 - 1e-40"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // A wear flat whose λ is computed (physical's b²/(R A)) acts as its 130-digit decimal does.
@@ -327,7 +343,7 @@ TEST(evaluate_stream, ComputedWearFlatLambdaActsAsItsDecimal) {
   BatchOptions by_text, by_value;
   by_text.profile = parse_profile("wearflat:" + lambda.str(130, std::ios_base::scientific));
   by_value.profile = parse_profile("wearflat:3.3");  // the name only
-  by_value.profile.parameter_value = lambda;
+  by_value.profile.parameter = InputValue::computed(lambda, "3.3");
   for (const Precision& p : {Precision{NumberType::float64, 17}, Precision{NumberType::mpfr, 30}})
     for (const char* gamma : {"0.5", "-0.3"})
       EXPECT_EQ(evaluate(sine, Quantity::mu, {{"1", gamma}}, p, by_value), evaluate(sine, Quantity::mu, {{"1", gamma}}, p, by_text))
@@ -358,7 +374,7 @@ TEST(evaluate_stream, EvaluateOneGivesTheValueItPrints) {
     for (const Case& k : cases) {
       if (k.options == &sphere && c.curved_points == 0) continue;
       const Evaluated e = evaluate_one(*k.wave, k.q, k.point, c.precision, *k.options);
-      const std::string where = number_type_name(c.precision.type) + " " + k.wave->name + " beta " + k.point.beta + " gamma " + k.point.gamma;
+      const std::string where = number_type_name(c.precision.type) + " " + k.wave->name + " beta " + k.point.beta.text() + " gamma " + k.point.gamma.text();
       EXPECT_EQ(e.text, evaluate(*k.wave, k.q, {k.point}, c.precision, *k.options).front()) << where;
       PrecisionScope scope(static_cast<unsigned>(digits + 40));
       const mpfr printed(e.text);
@@ -473,9 +489,10 @@ TEST(evaluate_stream, ErrorMidStreamDeliversTheRowsBeforeIt) {
   for (const TypeCase& c : type_cases()) {
     const bool fast = c.precision.type == NumberType::float64;
     const std::size_t n = fast ? 1000 : 9, k = fast ? 777 : 4;
-    for (const Bad& bad : {Bad{fast ? 3 * stream_chunk + 7 : 9, fast ? 2 * stream_chunk + 300 : 5, "abc", "0.5"},
-                           Bad{n, k, "1", "-2"},     // no contact: DomainError
-                           Bad{n, 0, "1", "nan"}}) {  // the first point
+    // (Text outside the grammar cannot make a Point: it is refused where it is read.)
+    for (const Bad& bad : {Bad{fast ? 3 * stream_chunk + 7 : 9, fast ? 2 * stream_chunk + 300 : 5, "-0.25", "0.5"},
+                           Bad{n, k, "1", "-2"},       // no contact: DomainError
+                           Bad{n, 0, "-1e-300", "0.5"}}) {  // the first point
       std::vector<Point> points = grid(bad.n, 7, false);
       points[bad.at] = {bad.beta, bad.gamma};
       if (bad.at + 2 < bad.n) points[bad.at + 2] = {"1", "-5"};  // a later, different error

@@ -1,4 +1,5 @@
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/input_value.hpp"
 
 #include <csv.h>
 
@@ -395,6 +396,13 @@ void check_decimal(const std::string& text, const std::string& what) {
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
   if (std::fabs(v) > static_cast<long double>(std::numeric_limits<double>::max()))
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
+}
+
+std::ostream& operator<<(std::ostream& out, const InputValue& v) { return out << v.text(); }
+
+InputValue InputValue::read(const std::string& text, const std::string& what) {
+  check_decimal(text, what);
+  return InputValue(*Decimal::read(text));
 }
 
 exact::Rational exact_decimal(const std::string& text, const std::string& what) {

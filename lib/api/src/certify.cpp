@@ -1,6 +1,7 @@
 // Certified values of the piecewise-linear waves (certify.hpp).
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/certify.hpp"
+#include "vibrofric/api/ladder.hpp"
 
 #include <cmath>
 #include <limits>
@@ -192,10 +193,13 @@ std::shared_ptr<const certified::FourierShape> Certifier::shape(mpfr_prec_t bits
 }
 
 Certificate Certifier::operator()(Quantity q, const Point& point, const Precision& precision, const std::string& printed) const {
-  if (point.beta_value || point.gamma_value)
-    throw InputError("a computed point (beta " + point.beta + ") has no exact inputs to certify");
-  const Rational beta = exact_decimal(point.beta, "beta");
-  const Rational gamma = q == Quantity::psi ? Rational(1) : exact_decimal(point.gamma, "gamma");
+  const auto exact_input = [&](const InputValue& in, const char* name) {
+    if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
+    if (!in.decimal()) throw InputError("a computed point (beta " + point.beta.text() + ") has no exact inputs to certify");
+    return in.decimal()->rational(name);
+  };
+  const Rational beta = exact_input(point.beta, "beta");
+  const Rational gamma = q == Quantity::psi ? Rational(1) : exact_input(point.gamma, "gamma");
   Certificate c;
   if (wave_) {
     c.lower = q == Quantity::psi ? exact::psi(*wave_, beta).lost_area : exact::solve(*wave_, beta, gamma).mu;
@@ -211,10 +215,13 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     // bits at most (an inherent undecided case, n touching zero at a maximum, would else take
     // minutes); the others up to max_certify_bits.
     const mpfr_prec_t cap = fourier_ ? std::min(max_certify_bits, 4 * first_bits(precision)) : max_certify_bits;
-    for (mpfr_prec_t bits = first_bits(precision);; bits *= 2) {
-      if (bits > cap)
-        throw SolverError(name_ + ", beta = " + point.beta + (q == Quantity::mu ? ", gamma = " + point.gamma : std::string()) +
-                          ": the enclosure does not decide the rounding at " + std::to_string(cap) + " bits");
+    const auto undecided = [&] {
+      return SolverError(name_ + ", beta = " + point.beta.text() +
+                         (q == Quantity::mu ? ", gamma = " + point.gamma.text() : std::string()) +
+                         ": the enclosure does not decide the rounding at " + std::to_string(cap) + " bits");
+    };
+    if (first_bits(precision) > cap) throw undecided();
+    const auto attempt = [&](long bits) -> std::optional<Interval> {
       std::optional<Interval> value;
       try {
         if (fourier_) {
@@ -226,21 +233,23 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
           value = q == Quantity::psi ? e.lost_area : e.mu;
         }
       } catch (const certified::Undecided&) {
-        continue;
+        return std::nullopt;
       }
       const Interval& v = *value;
       const Rational lo = rational_of(v.lower()), hi = rational_of(v.upper());
       std::vector<std::string> at_lo = rounded_texts(lo, precision), at_hi = rounded_texts(hi, precision);
-      if (at_lo.size() != 1 || at_lo != at_hi) continue;
+      if (at_lo.size() != 1 || at_lo != at_hi) return std::nullopt;
       c.lower = lo;
       c.upper = hi;
       c.nearest = at_lo;
       c.bits = bits;
-      const int digits = output_digits(precision) + 3;
-      c.lower_text = directed(v.lower(), digits, MPFR_RNDD);
-      c.upper_text = directed(v.upper(), digits, MPFR_RNDU);
-      break;
-    }
+      return value;
+    };
+    const std::optional<Interval> v = escalate(first_bits(precision), attempt, doubling_up_to(cap));
+    if (!v) throw undecided();
+    const int digits = output_digits(precision) + 3;
+    c.lower_text = directed(v->lower(), digits, MPFR_RNDD);
+    c.upper_text = directed(v->upper(), digits, MPFR_RNDU);
   }
   for (const std::string& t : c.nearest) c.correctly_rounded = c.correctly_rounded || t == printed;
   return c;

@@ -19,13 +19,14 @@
 
 namespace vibrofric {
 
-std::vector<std::pair<const char*, InputText*>> PhysicalRequest::inputs() {
-  return {{"E1", &E1},         {"nu1", &nu1},        {"E2", &E2},   {"nu2", &nu2},
-          {"G1", &G1},         {"G2", &G2},          {"v0", &v0},   {"f", &f},
-          {"A", &A},           {"u_mean", &u_mean},  {"F_N", &F_N}, {"mu0", &mu0},
-          {"shape", &shape},   {"radius", &radius},  {"R", &R},     {"half_angle", &half_angle},
-          {"flat_radius", &flat_radius}, {"unit", &unit}, {"mass", &mass}, {"k_system", &k_system},
-          {"damping", &damping}};
+std::vector<PhysicalRequest::Member> PhysicalRequest::inputs() {
+  const auto n = [](const char* m, NamedInput& in) { return Member{m, &in, nullptr}; };
+  return {n("E1", E1),         n("nu1", nu1),       n("E2", E2),     n("nu2", nu2),
+          n("G1", G1),         n("G2", G2),         n("v0", v0),     n("f", f),
+          n("A", A),           n("u_mean", u_mean), n("F_N", F_N),   n("mu0", mu0),
+          Member{"shape", nullptr, &shape}, n("radius", radius), n("R", R), n("half_angle", half_angle),
+          n("flat_radius", flat_radius), Member{"unit", nullptr, &unit}, n("mass", mass), n("k_system", k_system),
+          n("damping", damping)};
 }
 
 namespace {
@@ -78,23 +79,25 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
     throw InputError(r.unit.name + " " + detail::visible(unit) + ", but the value column '" + detail::visible(wave.value_column) +
                      "' of " + detail::visible(wave.name) + " is in " + detail::visible(said) +
                      (length_units().count(said) ? ": expected them to agree" : ": expected a displacement (m, mm, um, nm)"));
-  std::string amplitude;
+  mpfr amplitude;
+  std::string amplitude_label;
   {
     const int digits = output_digits(prec) + 25;
     const SampleNormalisation nz = normalise_samples(
         wave.name, wave.samples.size(), [&](std::size_t j) { return detail::sample_value(wave, j); },
         detail::distinct_digits(wave), detail::sample_phase(wave), digits);
     PrecisionScope scope(nz.digits);
-    amplitude = format_significant(mpfr(nz.scale / static_cast<long>(wave.periods_averaged) * mpfr(it->second)), digits);
+    amplitude = nz.scale / static_cast<long>(wave.periods_averaged) * mpfr(it->second);
+    amplitude_label = format_significant(amplitude, digits);
   }
   PhysicalRequest request = r;
-  request.A.text = amplitude;
+  request.A.value = InputValue::computed(amplitude, amplitude_label);
   request.A.name = r.A.name + " (half the peak-to-peak of " + detail::visible(wave.name) + " in " + detail::visible(unit) + ")";
   request.unit.text.reset();
   PhysicalOutputs out = physical_at(wave, request, prec, base, warnings);
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
-  out.insert(out.begin() + 1, {"A_m", format_significant(mpfr(amplitude), digits)});
+  out.insert(out.begin() + 1, {"A_m", format_significant(detail::rounded<mpfr>(amplitude), digits)});
   return out;
 }
 
@@ -109,18 +112,17 @@ Evaluated rig_evaluated(const WaveSpec& wave, const Point& point, const RigSpec&
 
 PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
                             std::vector<std::string>* warnings) {
-  using Input = InputText;
+  using Input = NamedInput;
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
-  const auto text = [](const Input& in) -> const std::string& {
+  const auto get = [&](const Input& in) {
     if (!in.given()) throw InputError("missing " + in.name + " for 'physical'");
-    return *in.text;
+    return in.value.to<mpfr>();
   };
-  const auto get = [&](const Input& in) { return parse_real<mpfr>(text(in), in.name); };
-  const auto opt = [&](const Input& in) { return in.given() ? parse_real<mpfr>(*in.text, in.name) : mpfr(0); };
+  const auto opt = [&](const Input& in) { return in.value.to<mpfr>(); };  // 0 where not given
   const auto positive = [&](const Input& in) {
     const mpfr v = get(in);
-    if (!(v > 0)) throw InputError(in.name + " = " + *in.text + ": expected a value > 0");
+    if (!(v > 0)) throw InputError(in.name + " = " + in.text() + ": expected a value > 0");
     return v;
   };
   // The indenter (model.md MDR): which geometry inputs it takes, its profile and length unit L.
@@ -150,20 +152,20 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   // Checked here with the values as typed (physical_groups checks them again, for library users).
   const auto poisson = [&](const Input& in) {
     const mpfr v = get(in);
-    if (!(v > -1 && v <= mpfr("0.5"))) throw InputError(in.name + " = " + *in.text + ": expected -1 < nu <= 0.5");
+    if (!(v > -1 && v <= mpfr("0.5"))) throw InputError(in.name + " = " + in.text() + ": expected -1 < nu <= 0.5");
     return v;
   };
   PhysicalInput<mpfr> in{positive(r.E1), poisson(r.nu1), positive(r.E2), poisson(r.nu2), opt(r.G1), opt(r.G2),
                          kind == "flat" ? positive(r.radius) : mpfr(0), positive(r.v0), positive(r.f), A,
                          by_load ? mpfr(0) : get(r.u_mean), positive(r.mu0)};
   for (const Input* G : {&r.G1, &r.G2})
-    if (G->given() && !(opt(*G) > 0)) throw InputError(G->name + " = " + *G->text + ": expected a value > 0");
+    if (G->given() && !(opt(*G) > 0)) throw InputError(G->name + " = " + G->text() + ": expected a value > 0");
   // A samples wave with time stamps has its own period: --f must be its frequency (a record in ms
   // read as s, or of two periods, would otherwise be taken for one period at f).
   if (const auto T = stamped_period(wave)) {
     const mpfr ratio = in.f * T->seconds;
     if (abs(mpfr(ratio - 1)) > mpfr("0.01"))
-      throw InputError(r.f.name + " = " + *r.f.text + " Hz, but the time column '" + detail::visible(wave.time_column) + "' of " +
+      throw InputError(r.f.name + " = " + r.f.text() + " Hz, but the time column '" + detail::visible(wave.time_column) + "' of " +
                        detail::visible(wave.name) + " spans a period of " + format_significant(T->seconds, 6) + " s (" +
                        format_significant(mpfr(1 / T->seconds), 6) + " Hz" +
                        (T->assumed ? ", its header naming no unit: taken as seconds" : "") +
@@ -184,14 +186,13 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
                        "(rig dynamics: the flat punch only)");
     const mpfr m = positive(r.mass), ks = positive(r.k_system);
     const mpfr c = opt(r.damping);
-    if (r.damping.given() && !(c >= 0)) throw InputError(r.damping.name + " = " + *r.damping.text + ": expected a value >= 0");
+    if (r.damping.given() && !(c >= 0)) throw InputError(r.damping.name + " = " + r.damping.text() + ": expected a value >= 0");
+    // Values, labelled for messages by 17 digits.
+    const auto computed = [](const mpfr& v) { return InputValue::computed(v, format_significant(v, 17)); };
     RigSpec spec;
-    spec.kappa_value = mpfr(ks / g.k_x);
-    spec.omega_value = mpfr(sqrt(mpfr(g.k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * in.f));
-    spec.zeta_value = mpfr(c / (2 * sqrt(mpfr(m * ks))));
-    spec.kappa = format_significant(*spec.kappa_value, 17);
-    spec.omega = format_significant(*spec.omega_value, 17);
-    spec.zeta = format_significant(*spec.zeta_value, 17);
+    spec.kappa = computed(mpfr(ks / g.k_x));
+    spec.omega = computed(mpfr(sqrt(mpfr(g.k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * in.f)));
+    spec.zeta = computed(mpfr(c / (2 * sqrt(mpfr(m * ks)))));
     options.rig = spec;
   }
   mpfr length = 1;
@@ -201,7 +202,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     length = sphere_length(positive(r.R), A);
   } else if (kind == "cone") {
     const mpfr theta = positive(r.half_angle);
-    if (!(theta < 90)) throw InputError(r.half_angle.name + " = " + *r.half_angle.text + ": expected degrees in (0, 90)");
+    if (!(theta < 90)) throw InputError(r.half_angle.name + " = " + r.half_angle.text() + ": expected degrees in (0, 90)");
     options.profile = parse_profile("cone");
     length = cone_length(theta, A);
   } else if (kind == "wearflat") {
@@ -212,7 +213,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     length = b;
   } else if (kind == "profile") {
     options.profile = parse_profile(shape);
-    options.profile.height_unit = *r.A.text;  // heights in metres, the library's in units of A
+    options.profile.height_unit = r.A.value;  // heights in metres, the library's in units of A
   }
   // ⟨F_N⟩(γ) = 2 E* A L ∫N dx (punch: k_z A N_w(γ)), at the working precision of this scope: N does
   // not depend on β. Also the largest contact radius (curved) in units of L.
@@ -220,7 +221,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   const auto p = kind == "flat" ? nullptr : make_profile<mpfr>(options.profile);
   // Contact needs gamma + max w > 0 (Eq. 14: u_mean > -A max w), said in the inputs' own terms.
   if (!by_load && !(g.gamma + w->maximum() > 0))
-    throw DomainError(r.u_mean.name + " = " + *r.u_mean.text + " with " + r.A.name + " = " + *r.A.text +
+    throw DomainError(r.u_mean.name + " = " + r.u_mean.text() + " with " + r.A.name + " = " + r.A.text() +
                       " gives no contact for wave " +
                       wave.name + ": expected u_mean > -A max w = " + format_significant(mpfr(-A * w->maximum()), 6) +
                       " m (gamma = u_mean/A > " + format_significant(mpfr(-w->maximum()), 6) + ")");
@@ -256,11 +257,15 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
                       std::to_string(options.solver.max_root_iterations) + " " +
                       std::to_string(options.solver.max_quadrature_levels) + " " +
                       format_significant(mpfr(options.solver.quadrature_tolerance), 17) + "\n" + wave_fingerprint(wave) +
-                      "\nprofile " + options.profile.name + " " + options.profile.height_unit;
-    for (std::size_t i = 0; i < options.profile.r.size(); ++i) key += "\n" + options.profile.r[i] + " " + options.profile.f[i];
-    for (const Input* in : {&r.E1, &r.nu1, &r.E2, &r.nu2, &r.G1, &r.G2, &r.A, &r.F_N, &r.shape, &r.radius, &r.R,
-                            &r.half_angle, &r.flat_radius})
-      key += "\n" + (in->given() ? *in->text : std::string("-"));
+                      "\nprofile " + options.profile.name + " " +
+                      (options.profile.height_unit.given() ? options.profile.height_unit.text() : std::string("1"));
+    for (std::size_t i = 0; i < options.profile.r.size(); ++i)
+      key += "\n" + options.profile.r[i].text() + " " + options.profile.f[i].text();
+    for (const Input* in : {&r.E1, &r.nu1, &r.E2, &r.nu2, &r.G1, &r.G2, &r.A, &r.F_N})
+      key += "\n" + (in->given() ? in->text() : std::string("-"));
+    key += "\n" + (r.shape.given() ? *r.shape.text : std::string("-"));
+    for (const Input* in : {&r.radius, &r.R, &r.half_angle, &r.flat_radius})
+      key += "\n" + (in->given() ? in->text() : std::string("-"));
     static thread_local std::map<std::string, mpfr> solved;  // γ of the load, by every input it depends on
     if (const auto it = solved.find(key); it != solved.end()) {
       g.gamma = it->second;
@@ -268,7 +273,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
       // ⟨F_N⟩ rises strictly with γ from 0 at γ = −max w: bracket by doubling, then TOMS 748.
       mpfr lo = -w->maximum(), hi = lo + 1;
       for (int k = 0; beta_free_load(hi) < F_N; ++k) {
-        if (k == 200) throw InputError(r.F_N.name + " = " + *r.F_N.text + ": expected a load the contact can carry");
+        if (k == 200) throw InputError(r.F_N.name + " = " + r.F_N.text() + ": expected a load the contact can carry");
         lo = hi;
         hi = lo + pow(mpfr(2), k + 1);
       }
@@ -276,7 +281,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
       const auto bracket = boost::math::tools::toms748_solve(
           [&](const mpfr& gam) { return mpfr(beta_free_load(gam) - F_N); }, lo, hi,
           boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 10), iterations);
-      if (iterations >= 400) throw SolverError(r.F_N.name + " = " + *r.F_N.text + ": the mean indentation did not converge");
+      if (iterations >= 400) throw SolverError(r.F_N.name + " = " + r.F_N.text() + ": the mean indentation did not converge");
       g.gamma = (bracket.first + bracket.second) / 2;
       if (free_of_beta) {
         if (solved.size() >= 64) solved.clear();
@@ -285,11 +290,8 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     }
   }
   // β and γ go to evaluate as values; the texts only name the point in its messages.
-  Point point;
-  point.beta = format_significant(g.beta, digits + 15);
-  point.gamma = format_significant(g.gamma, digits + 15);
-  point.beta_value = g.beta;
-  point.gamma_value = g.gamma;
+  const Point point{InputValue::computed(g.beta, format_significant(g.beta, digits + 15)),
+                    InputValue::computed(g.gamma, format_significant(g.gamma, digits + 15))};
   // μ = μ0·(μ̄/μ0) from the ratio's value (mpfr: decided at 10 more digits), rounded once to the
   // requested digits.
   Precision fine = prec;
@@ -344,19 +346,19 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     // (1e5 Pa) to diamond (1.2e12 Pa); an amplitude from 0.1 nm to 1 mm; mu0 up to 2.
     const auto outside = [&](const Input& in, const mpfr& v, const char* lo, const char* hi, const std::string& what) {
       if (in.given() && (v < mpfr(lo) || v > mpfr(hi)))
-        warnings->push_back(in.name + " = " + *in.text + " is outside " + lo + " to " + hi + " " + what);
+        warnings->push_back(in.name + " = " + in.text() + " is outside " + lo + " to " + hi + " " + what);
     };
     outside(r.E1, in.E1, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
     outside(r.E2, in.E2, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
     outside(r.A, A, "1e-10", "1e-3", "m, the amplitudes of a vibrated contact (um written as m?)");
-    if (in.mu0 > 2) warnings->push_back(r.mu0.name + " = " + *r.mu0.text + " is above 2, no coefficient of friction of solids");
+    if (in.mu0 > 2) warnings->push_back(r.mu0.name + " = " + r.mu0.text() + " is above 2, no coefficient of friction of solids");
     // Hertz and the MDR take the sphere as the parabola r²/2R: at a = 0.3 R its height is 2.3 % off.
     const Input* radius_of_curvature = kind == "sphere" || kind == "wearflat" ? &r.R : nullptr;
     if (radius_of_curvature) {
       const mpfr a = length * edge, ratio = a / get(*radius_of_curvature);
       if (ratio > mpfr("0.3"))
         warnings->push_back("the contact radius " + format_significant(a, 3) + " m is " + format_significant(ratio, 2) + " of " +
-                            radius_of_curvature->name + " = " + *radius_of_curvature->text +
+                            radius_of_curvature->name + " = " + radius_of_curvature->text() +
                             ": Hertz and the MDR take the sphere as a parabola, which needs it small against R");
     }
   }
@@ -394,9 +396,9 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   line("contact_fraction", contact_fraction);
   if (options.rig) {
     // the rig's periodic state: its own fractions, and the frequency ratios it was computed with
-    line("kappa", *options.rig->kappa_value);
-    line("omega", *options.rig->omega_value);
-    line("zeta", *options.rig->zeta_value);
+    line("kappa", *options.rig->kappa.computed_value());
+    line("omega", *options.rig->omega.computed_value());
+    line("zeta", *options.rig->zeta.computed_value());
     // the report's digits (those both precisions agree on, of the finer request) to the request's
     const auto fraction = [&](const char* name, const std::string& text) {
       const std::string shorter = format_significant(mpfr(text), digits);
@@ -428,12 +430,8 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
 
 
 void check_trace_request(const TraceRequest& request) {
-  const auto text = [](const InputText& in) -> const std::string& {
-    if (!in.given()) throw InputError("missing " + in.name + " for 'trace'");
-    return *in.text;
-  };
-  check_decimal(text(request.beta), request.beta.name);
-  check_decimal(text(request.gamma), request.gamma.name);
+  for (const NamedInput* in : {&request.beta, &request.gamma})
+    if (!in->given()) throw InputError("missing " + in->name + " for 'trace'");
   if (request.points < min_trace_points || request.points > max_trace_points)
     throw InputError(request.points_name + " = " + std::to_string(request.points) + ": expected an integer from " +
                      std::to_string(min_trace_points) + " to " + std::to_string(max_trace_points));
@@ -453,19 +451,14 @@ std::vector<std::array<std::string, 3>> curved_trace_rows(const WaveSpec& wave, 
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < phis.size(); ++i)
     if (std::find(edges.begin(), edges.end(), phis[i]) == edges.end()) todo.push_back(i);
-  int work = digits + guard_digits(digits);
-  for (int attempt = 0; !todo.empty(); ++attempt, work *= 2) {
-    if (attempt == 4) {
-      const auto& t = done.at(todo.front());
-      throw SolverError("trace at phase " + format_significant(t.phi, 10) + ": s = " + format_significant(t.s, 10) +
-                        " keeps an error estimate of " + format_significant(t.error, 3) + " at " + std::to_string(work / 2) +
-                        " working digits, not " + std::to_string(digits) + " digits of itself");
-    }
+  const long first = digits + guard_digits(digits);
+  long last = first;
+  const auto attempt = [&](long work) -> std::optional<bool> {
+    last = work;
     PrecisionScope scope(static_cast<unsigned>(work));
     const auto w = make_waveform<mpfr>(wave);
     const auto p = make_profile<mpfr>(request.profile);
-    const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
-    const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);
+    const mpfr beta = request.beta.value.to<mpfr>(), gamma = request.gamma.value.to<mpfr>();
     const mpfr target = pow(mpfr(10), -digits);
     std::vector<mpfr> at;
     for (std::size_t i : todo) at.push_back(phis[i]);
@@ -476,6 +469,14 @@ std::vector<std::array<std::string, 3>> curved_trace_rows(const WaveSpec& wave, 
       if (!(trace[k].error <= target / 2 * trace[k].s)) again.push_back(todo[k]);
     }
     todo = again;
+    if (todo.empty()) return true;
+    return std::nullopt;
+  };
+  if (!todo.empty() && !escalate(first, attempt, doubling_up_to(8 * first))) {
+    const auto& t = done.at(todo.front());
+    throw SolverError("trace at phase " + format_significant(t.phi, 10) + ": s = " + format_significant(t.s, 10) +
+                      " keeps an error estimate of " + format_significant(t.error, 3) + " at " + std::to_string(last) +
+                      " working digits, not " + std::to_string(digits) + " digits of itself");
   }
   std::vector<std::array<std::string, 3>> rows;
   for (std::size_t i = 0; i < phis.size(); ++i) {
@@ -495,8 +496,7 @@ std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const T
   const int n_points = request.points, digits = request.digits;
   PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
   const auto w = make_waveform<mpfr>(wave);
-  const mpfr beta = parse_real<mpfr>(*request.beta.text, request.beta.name);
-  const mpfr gamma = parse_real<mpfr>(*request.gamma.text, request.gamma.name);
+  const mpfr beta = request.beta.value.to<mpfr>(), gamma = request.gamma.value.to<mpfr>();
   const Contact<mpfr> contact = make_contact(*w, gamma);
   // The contact boundaries, where n = 0 by definition (its computed value is a rounding, ~1e-32);
   // of a curved contact, the central spring's (the body lifts off and lands).

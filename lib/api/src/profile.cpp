@@ -24,8 +24,10 @@ void check_wear_flat(const mpfr& lambda, const std::string& text) {
     throw InputError("wear-flat LAMBDA = " + as_typed(text) + " overflows: expected a magnitude below 1e308");
 }
 
-// Decimal text (checked) compared exactly.
-int compare_decimal(const std::string& a, const std::string& b) { return compare(*Decimal::read(a), *Decimal::read(b)); }
+const Decimal& zero() {
+  static const Decimal z = *Decimal::read("0");
+  return z;
+}
 }  // namespace
 
 ProfileSpec parse_profile(const std::string& text) {
@@ -34,26 +36,24 @@ ProfileSpec parse_profile(const std::string& text) {
   if (text == "flat") return s;
   if (text == "sphere" || text == "cone") {
     s.kind = ProfileKind::power;
-    s.parameter = text == "sphere" ? "2" : "1";
-    s.name = "power:" + s.parameter;
+    s.parameter = *Decimal::read(text == "sphere" ? "2" : "1");
+    s.name = "power:" + s.parameter.text();
     return s;
   }
   const auto colon = text.find(':');
   const std::string head = text.substr(0, colon), arg = colon == std::string::npos ? "" : text.substr(colon + 1);
   if (colon != std::string::npos && head == "power") {
     s.kind = ProfileKind::power;
-    s.parameter = arg;
-    check_decimal(arg, "profile exponent N in " + as_typed(text));
-    if (!(std::strtold(arg.c_str(), nullptr) >= 1) || compare_decimal(arg, "1") < 0)
+    s.parameter = InputValue::read(arg, "profile exponent N in " + as_typed(text));
+    if (!(s.parameter.to<long double>() >= 1) || compare(*s.parameter.decimal(), *Decimal::read("1")) < 0)
       throw InputError("profile exponent N = " + as_typed(arg) + ": expected N ≥ 1 (cone 1, sphere 2)");
     return s;
   }
   if (colon != std::string::npos && head == "wearflat") {
     s.kind = ProfileKind::wearflat;
-    s.parameter = arg;
-    check_decimal(arg, "wear-flat LAMBDA in " + as_typed(text));
+    s.parameter = InputValue::read(arg, "wear-flat LAMBDA in " + as_typed(text));
     PrecisionScope scope(400);
-    check_wear_flat(mpfr(arg), arg);
+    check_wear_flat(s.parameter.to<mpfr>(), arg);
     return s;
   }
   if (colon != std::string::npos && head == "profile") {
@@ -70,8 +70,7 @@ ProfileSpec wear_flat_profile(const mpfr& lambda, const std::string& text) {
   ProfileSpec s;
   s.kind = ProfileKind::wearflat;
   s.name = "wearflat:" + text;
-  s.parameter = text;
-  s.parameter_value = lambda;
+  s.parameter = InputValue::computed(lambda, text);
   return s;
 }
 
@@ -94,28 +93,28 @@ ProfileSpec detail::profile_from_rows(const Rows& rows, const RowSource& source)
   for (const auto& [number, tok] : rows) {
     const std::string where = source.where(number);
     if (tok.size() != 2) throw InputError(where + ": expected two fields 'r f', got " + std::to_string(tok.size()));
-    check_decimal(tok[0], where + " r");
-    check_decimal(tok[1], where + " f");
+    const Decimal r = *InputValue::read(tok[0], where + " r").decimal(), f = *InputValue::read(tok[1], where + " f").decimal();
     if (s.r.empty()) {
-      if (compare_decimal(tok[0], "0") != 0) throw InputError(where + ": r = " + as_typed(tok[0]) + ": expected the first sample at r = 0");
-      if (compare_decimal(tok[1], "0") != 0)
+      if (compare(r, zero()) != 0) throw InputError(where + ": r = " + as_typed(tok[0]) + ": expected the first sample at r = 0");
+      if (compare(f, zero()) != 0)
         throw InputError(where + ": f(0) = " + as_typed(tok[1]) + ": expected f(0) = 0 (heights from the profile's tip)");
     } else {
       // Distinct in double, so that every number type sees the same segments.
-      if (!(std::strtod(tok[0].c_str(), nullptr) > std::strtod(s.r.back().c_str(), nullptr)))
+      if (!(r.to<double>() > s.r.back().to<double>()))
         throw InputError(where + ": r = " + as_typed(tok[0]) + ": expected r to increase (by more than double rounding) after " +
-                         s.r.back());
-      if (compare_decimal(tok[1], s.f.back()) < 0)
-        throw InputError(where + ": f = " + as_typed(tok[1]) + " is below the previous " + s.f.back() +
+                         s.r.back().text());
+      if (compare(f, s.f.back()) < 0)
+        throw InputError(where + ": f = " + as_typed(tok[1]) + " is below the previous " + s.f.back().text() +
                          ": expected a non-decreasing profile (MDR needs f' >= 0)");
       // A slope that drops (a concave corner at r_j) makes g' → −∞ just beyond r_j: g is then
       // not monotone and no contact radius exists. (f2 − f1)(r1 − r0) ≥ (f1 − f0)(r2 − r1), exactly.
       if (s.r.size() >= 2) {
         PrecisionScope scope(400);
         const std::size_t k = s.r.size();
-        const mpfr r0(s.r[k - 2]), r1(s.r[k - 1]), r2(tok[0]), f0(s.f[k - 2]), f1(s.f[k - 1]), f2(tok[1]);
+        const mpfr r0 = s.r[k - 2].to<mpfr>(), r1 = s.r[k - 1].to<mpfr>(), r2 = r.to<mpfr>();
+        const mpfr f0 = s.f[k - 2].to<mpfr>(), f1 = s.f[k - 1].to<mpfr>(), f2 = f.to<mpfr>();
         if ((f2 - f1) * (r1 - r0) < (f1 - f0) * (r2 - r1))
-          throw InputError(where + ": the slope drops at r = " + s.r[k - 1] +
+          throw InputError(where + ": the slope drops at r = " + s.r[k - 1].text() +
                            " (a concave corner): expected a convex profile, slopes non-decreasing in r, as the MDR "
                            "transform g(x) is monotone only then (smooth or convexify the measurement)");
       }
@@ -123,13 +122,13 @@ ProfileSpec detail::profile_from_rows(const Rows& rows, const RowSource& source)
     if (s.r.size() == max_profile_samples)
       throw InputError("profile file " + as_typed(source.name) + " has more than " + std::to_string(max_profile_samples) +
                        " samples");
-    s.r.push_back(tok[0]);
-    s.f.push_back(tok[1]);
+    s.r.push_back(r);
+    s.f.push_back(f);
   }
   if (s.r.size() < 2)
     throw InputError("profile file " + as_typed(source.name) + " has " + std::to_string(s.r.size()) +
                      " sample(s): expected at least 2 lines 'r f'");
-  if (compare_decimal(s.f.back(), "0") == 0)
+  if (compare(s.f.back(), zero()) == 0)
     throw InputError("profile file " + as_typed(source.name) + " is flat (f = 0 everywhere): expected a curved profile (this one is the flat punch)");
   return s;
 }

@@ -9,6 +9,7 @@
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/ladder.hpp"
 #include "vibrofric/api/detail/evaluate_impl.hpp"
 #include "vibrofric/core/dynamics.hpp"
 #include "vibrofric/core/exact.hpp"
@@ -17,17 +18,23 @@ namespace vibrofric {
 
 namespace {
 
-exact::Rational rig_number(const std::string& text, const char* name, bool zero_allowed) {
-  const exact::Rational v = exact_decimal(text, name);
+// A typed κ, Ω or ζ exactly; InputError where it is missing or out of range.
+exact::Rational rig_number(const InputValue& in, const char* name, bool zero_allowed) {
+  if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
+  const exact::Rational v = in.decimal()->rational(name);
   if (zero_allowed ? v < 0 : v <= 0)
-    throw InputError(std::string(name) + " = " + detail::visible(text) + ": expected a decimal " +
+    throw InputError(std::string(name) + " = " + detail::visible(in.text()) + ": expected a decimal " +
                      (zero_allowed ? ">= 0" : "> 0"));
   return v;
 }
 
+bool computed(const RigSpec& rig) {
+  return rig.kappa.computed_value() || rig.omega.computed_value() || rig.zeta.computed_value();
+}
+
 // k with Ω²κ = k² exactly (the undamped slip resonance of harmonic k), else 0.
 unsigned resonance(const RigSpec& rig) {
-  if (rig.kappa_value || rig.omega_value || rig.zeta_value) return 0;
+  if (computed(rig)) return 0;
   const exact::Rational q = rig_number(rig.omega, "omega", false) * rig_number(rig.omega, "omega", false) *
                             rig_number(rig.kappa, "kappa", false);
   if (rig_number(rig.zeta, "zeta", true) != 0) return 0;
@@ -38,16 +45,15 @@ unsigned resonance(const RigSpec& rig) {
   return static_cast<unsigned>(k);
 }
 
-// "wave W, beta = B, gamma = G, kappa = K, omega = O, zeta = Z: ", as typed (computed values by their texts).
+// "wave W, beta = B, gamma = G, kappa = K, omega = O, zeta = Z: ", as typed (computed values by their labels).
 std::string rig_context(const WaveSpec& wave, const Point& p, const RigSpec& rig) {
-  return "wave " + wave.name + ", beta = " + p.beta + ", gamma = " + p.gamma + ", kappa = " + rig.kappa +
-         ", omega = " + rig.omega + ", zeta = " + rig.zeta + ": ";
+  return "wave " + wave.name + ", beta = " + p.beta.text() + ", gamma = " + p.gamma.text() + ", kappa = " +
+         rig.kappa.text() + ", omega = " + rig.omega.text() + ", zeta = " + rig.zeta.text() + ": ";
 }
 
-// κ, Ω, ζ at the working precision: the computed values, else the texts.
+// κ, Ω, ζ at the working precision.
 RigParameters<mpfr> parameters(const RigSpec& rig, unsigned resonant) {
-  const auto value = [](const std::optional<mpfr>& v, const std::string& text) { return v ? mpfr(*v) : mpfr(text); };
-  return {value(rig.kappa_value, rig.kappa), value(rig.omega_value, rig.omega), value(rig.zeta_value, rig.zeta), resonant};
+  return {rig.kappa.to<mpfr>(), rig.omega.to<mpfr>(), rig.zeta.to<mpfr>(), resonant};
 }
 
 struct Solved {
@@ -60,47 +66,73 @@ Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsign
                 const Options& opt, const Solved* seed) {
   PrecisionScope scope(static_cast<unsigned>(digits));
   const auto w = make_waveform<mpfr>(wave);
-  const mpfr beta = p.beta_value ? mpfr(*p.beta_value) : parse_real<mpfr>(p.beta, "beta");
-  const mpfr gamma = p.gamma_value ? mpfr(*p.gamma_value) : parse_real<mpfr>(p.gamma, "gamma");
+  const mpfr beta = p.beta.to<mpfr>(), gamma = p.gamma.to<mpfr>();
   const RigParameters<mpfr> params = parameters(rig, resonant);
+  detail::check_beta(*w, beta);
+  detail::check_contact(*w, gamma);
   try {
-    if (seed) return {solve_rig(*w, beta, gamma, params, seed->r, opt), digits};
-    return {solve_rig(*w, beta, gamma, params, opt), digits};
+    const RigSolver<mpfr> solver(*w, beta, gamma, params, opt);
+    if (seed)
+      return {solver.solve(mpfr(seed->r.state_y), mpfr(seed->r.state_v), mpfr(seed->r.state_s), seed->r.jacobian), digits};
+    return {solver.solve(), digits};
   } catch (const SolverError& e) {
-    // The point as typed, the rig's parameters too (the core names β and γ by their binary values).
-    const std::string what = e.what();
-    const auto at = what.find("rig dynamics");
-    throw SolverError(rig_context(wave, p, rig) + (at == std::string::npos ? what : what.substr(at)));
+    throw SolverError(rig_context(wave, p, rig) + e.what());  // the point as typed, the rig's parameters too
   }
 }
 
-// The digits of x (at most `most`) on which a and b agree.
+// The digits of b (at most `most`) on which a and b agree.
 std::string agreed(const mpfr& a, const mpfr& b, int most) {
   if (a == 0 && b == 0) return "0";
   for (int d = most; d > 1; --d)
-    if (format_significant(a, d) == format_significant(b, d)) return format_significant(b, d);
+    if (same_significant(a, b, d)) return format_significant(b, d);
   return format_significant(b, 1);
 }
 
-// Whether every value of [lo, hi] prints (or rounds to the type) alike.
+// Whether every value of [lo, hi] rounds alike: to the type, or to `digits` digits (mpfr).
 bool decides(const mpfr& lo, const mpfr& hi, const Precision& precision, int digits) {
   return visit_number_type(precision.type, [&](auto tag) {
     using Real = typename decltype(tag)::type;
     if constexpr (is_runtime_precision_v<Real>)
-      return format_significant(lo, digits) == format_significant(hi, digits);
+      return same_significant(lo, hi, digits);
     else
       return detail::rounded<Real>(lo) == detail::rounded<Real>(hi);
   });
 }
 
+// The rig's periodic state at two precisions, the higher raised (from the lower's state) until
+// settled(lower, higher): the escalation routine's loop (ladder.hpp), 4 attempts, each adding
+// max(12, half the digits). SolverError naming the case and both values where it does not settle.
+template <class Settled>
+std::pair<Solved, Solved> settle(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsigned resonant,
+                                 int digits, const Options& opt, Settled settled) {
+  std::optional<Solved> a, b;
+  a.emplace(solve_at(wave, p, rig, resonant, digits + 10, opt, nullptr));
+  RaisePolicy policy;
+  policy.guard = 0;
+  policy.attempts = 4;
+  policy.double_on_precision_error = false;
+  const auto done = raise_precision(
+      digits + 22, policy,
+      [&] {
+        if (b) a = std::move(b);
+        b.emplace(solve_at(wave, p, rig, resonant, working_digits10<mpfr>(), opt, &*a));
+        return true;
+      },
+      [&](bool) { return Shortfall{settled(a->r, b->r), std::max(12, b->digits / 2)}; });
+  if (!done)
+    throw SolverError(rig_context(wave, p, rig) + "rig dynamics: mu did not settle to " + std::to_string(digits) +
+                      " digits (" + format_significant(a->r.mu, digits + 2) + " at " + std::to_string(a->digits) +
+                      " digits, " + format_significant(b->r.mu, digits + 2) + " at " + std::to_string(b->digits) + ")");
+  return {std::move(*a), std::move(*b)};
+}
+
 }  // namespace
 
 void check_rig(const RigSpec& rig) {
-  if (rig.kappa_value || rig.omega_value || rig.zeta_value) {
-    if (!(rig.kappa_value && *rig.kappa_value > 0) || !(rig.omega_value && *rig.omega_value > 0) ||
-        !(rig.zeta_value && *rig.zeta_value >= 0))
-      throw InputError("rig dynamics: expected kappa > 0, omega > 0 and zeta >= 0 (kappa = " + rig.kappa +
-                       ", omega = " + rig.omega + ", zeta = " + rig.zeta + ")");
+  if (computed(rig)) {
+    if (!(rig.kappa.to<mpfr>() > 0) || !(rig.omega.to<mpfr>() > 0) || !(rig.zeta.to<mpfr>() >= 0))
+      throw InputError("rig dynamics: expected kappa > 0, omega > 0 and zeta >= 0 (kappa = " + rig.kappa.text() +
+                       ", omega = " + rig.omega.text() + ", zeta = " + rig.zeta.text() + ")");
     return;
   }
   rig_number(rig.kappa, "kappa", false);
@@ -113,42 +145,33 @@ namespace detail {
 mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const Precision& precision,
                const Options& opt, RigReport* report) {
   check_rig(rig);
-  const unsigned resonant = resonance(rig);
   const int digits = output_digits(precision);
   // Two precisions: the lower's difference from the higher estimates the higher's error.
-  int low = digits + 10, high = digits + 22;
-  Solved a = solve_at(wave, p, rig, resonant, low, opt, nullptr);
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    Solved b = solve_at(wave, p, rig, resonant, high, opt, &a);
-    PrecisionScope scope(static_cast<unsigned>(high));
+  const auto delta = [](const RigResult<mpfr>& lower, const RigResult<mpfr>& higher) {
     using std::abs;
-    const mpfr delta = 2 * (abs(mpfr(a.r.mu - b.r.mu)) + abs(mpfr(b.r.relative_error * b.r.mu)));
-    const mpfr lo = b.r.mu - delta, hi = b.r.mu + delta;
-    if (decides(lo, hi, precision, digits)) {
-      if (report) {
-        const int most = std::min(digits, 17);
-        report->mu = format_significant(b.r.mu, digits);
-        report->stick_fraction = agreed(a.r.stick_fraction, b.r.stick_fraction, most);
-        report->slip_fraction = agreed(a.r.slip_fraction, b.r.slip_fraction, most);
-        report->backward_fraction = agreed(a.r.backward_fraction, b.r.backward_fraction, most);
-        report->flight_fraction = agreed(a.r.flight_fraction, b.r.flight_fraction, most);
-        report->amplitude = agreed(a.r.amplitude, b.r.amplitude, most);
-        report->largest_backward_slip = agreed(a.r.largest_backward_slip, b.r.largest_backward_slip, most);
-        report->relative_error = format_significant(mpfr(b.r.mu == 0 ? delta : mpfr(delta / abs(b.r.mu))), 2);
-        report->floquet = a.r.floquet;
-        report->working_digits = high;
-      }
-      return b.r.mu;
-    }
-    if (attempt == 3)
-      throw SolverError(rig_context(wave, p, rig) + "rig dynamics: mu did not settle to " + std::to_string(digits) + " digits (" +
-                        format_significant(a.r.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
-                        format_significant(b.r.mu, digits + 2) + " at " + std::to_string(high) + ")");
-    a = std::move(b);
-    low = high;
-    high += std::max(12, high / 2);
+    return mpfr(2 * (abs(mpfr(lower.mu - higher.mu)) + abs(mpfr(higher.relative_error * higher.mu))));
+  };
+  const auto [a, b] = settle(wave, p, rig, resonance(rig), digits, opt, [&](const RigResult<mpfr>& lower, const RigResult<mpfr>& higher) {
+    const mpfr d = delta(lower, higher);
+    return decides(mpfr(higher.mu - d), mpfr(higher.mu + d), precision, digits);
+  });
+  PrecisionScope scope(static_cast<unsigned>(b.digits));
+  if (report) {
+    using std::abs;
+    const mpfr d = delta(a.r, b.r);
+    const int most = std::min(digits, 17);
+    report->mu = format_significant(b.r.mu, digits);
+    report->stick_fraction = agreed(a.r.stick_fraction, b.r.stick_fraction, most);
+    report->slip_fraction = agreed(a.r.slip_fraction, b.r.slip_fraction, most);
+    report->backward_fraction = agreed(a.r.backward_fraction, b.r.backward_fraction, most);
+    report->flight_fraction = agreed(a.r.flight_fraction, b.r.flight_fraction, most);
+    report->amplitude = agreed(a.r.amplitude, b.r.amplitude, most);
+    report->largest_backward_slip = agreed(a.r.largest_backward_slip, b.r.largest_backward_slip, most);
+    report->relative_error = format_significant(mpfr(b.r.mu == 0 ? d : mpfr(d / abs(b.r.mu))), 2);
+    report->floquet = a.r.floquet;
+    report->working_digits = b.digits;
   }
-  return mpfr(0);
+  return b.r.mu;
 }
 
 }  // namespace detail
@@ -173,28 +196,18 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
     throw InputError("rig dynamics with profile " + request.profile.name +
                      ": the springs of a curved contact share the body, so the MDR row does not decouple "
                      "(rig dynamics: the flat punch only)");
-  const Point p{*request.beta.text, *request.gamma.text};
+  const Point p{request.beta.value, request.gamma.value};
   detail::ContactCheck check(wave, Quantity::mu);
   check(p);
-  const unsigned resonant = resonance(rig);
   const int digits = request.digits;
-  int low = digits + 10, high = digits + 22;
-  Solved a = solve_at(wave, p, rig, resonant, low, opt, nullptr);
-  Solved b = solve_at(wave, p, rig, resonant, high, opt, &a);
-  for (int attempt = 1; format_significant(a.r.mu, digits) != format_significant(b.r.mu, digits); ++attempt) {
-    if (attempt == 4)
-      throw SolverError(rig_context(wave, p, rig) + "rig dynamics: mu did not settle to " + std::to_string(digits) +
-                        " digits (" + format_significant(a.r.mu, digits + 2) + " at " + std::to_string(low) + " digits, " +
-                        format_significant(b.r.mu, digits + 2) + " at " + std::to_string(high) + ")");
-    a = std::move(b);
-    low = high;
-    high += std::max(12, high / 2);
-    b = solve_at(wave, p, rig, resonant, high, opt, &a);
-  }
+  const unsigned resonant = resonance(rig);
+  const auto [a, b] = settle(wave, p, rig, resonant, digits, opt, [&](const RigResult<mpfr>& lower, const RigResult<mpfr>& higher) {
+    return same_significant(lower.mu, higher.mu, digits);
+  });
   // The spans' closed forms at the higher precision, evaluated by a solver built as solve_at built it.
-  PrecisionScope scope(static_cast<unsigned>(high));
+  PrecisionScope scope(static_cast<unsigned>(b.digits));
   const auto w = make_waveform<mpfr>(wave);
-  const mpfr beta = parse_real<mpfr>(p.beta, "beta"), gamma = parse_real<mpfr>(p.gamma, "gamma");
+  const mpfr beta = p.beta.to<mpfr>(), gamma = p.gamma.to<mpfr>();
   const RigSolver<mpfr> solver(*w, beta, gamma, parameters(rig, resonant), opt);
   std::vector<RigTraceRow> rows;
   const auto add = [&](const RigSpan<mpfr>& span, const mpfr& phi) {

@@ -244,12 +244,15 @@ struct Enclosed {
   std::optional<exact::Rational> p;  // power:p; none: the sine
   mpfr_prec_t bits;
   certified::SineEnclosure at(const exact::Rational& beta, const exact::Rational& gamma) const {
-    for (mpfr_prec_t b = bits; b <= max_certify_bits; b *= 2) {
+    const auto attempt = [&](long b) -> std::optional<certified::SineEnclosure> {
       try {
         return p ? certified::enclose_power(*p, beta, gamma, b) : certified::enclose_sine(beta, gamma, b);
       } catch (const certified::Undecided&) {
+        return std::nullopt;
       }
-    }
+    };
+    if (bits <= max_certify_bits)
+      if (auto e = escalate(bits, attempt, doubling_up_to(max_certify_bits))) return std::move(*e);
     throw SolverError(std::string(name) + ", beta = " + beta.str() + ", gamma = " + gamma.str() + ": no enclosure decides it");
   }
 };

@@ -36,13 +36,15 @@ int rig_precision(int digits) { return std::min(digits, rig_digits); }
 RigResult<Real> rig(Solver& s, const Real& beta, const Real& gamma, const RigParameters<Real>& p, int digits) {
   digits = rig_precision(digits);
   const Real target = pow(Real(10), -(digits + 2));
-  unsigned d = static_cast<unsigned>(digits + guard_digits(digits));
-  for (int k = 0; k < 3; ++k, d *= 2) {
-    PrecisionScope scope(d);
+  const long first = digits + guard_digits(digits);
+  const auto attempt = [&](long d) -> std::optional<RigResult<Real>> {
+    PrecisionScope scope(static_cast<unsigned>(d));
     const RigParameters<Real> q{Real(p.kappa), Real(p.omega), Real(p.zeta), p.resonant_harmonic};
     RigResult<Real> r = solve_rig<Real>(s.wave(), Real(beta), Real(gamma), q);
     if (r.relative_error <= target) return r;
-  }
+    return std::nullopt;
+  };
+  if (auto r = escalate(first, attempt, doubling_up_to(4 * first))) return std::move(*r);
   throw SolverError("claims: rig dynamics, wave " + s.name() + ", beta = " + str(beta) + ", gamma = " + str(gamma) +
                     ", kappa = " + str(p.kappa) + ", omega = " + str(p.omega) + ": could not reach " +
                     std::to_string(digits + 2) + " digits");

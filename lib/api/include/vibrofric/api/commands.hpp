@@ -10,6 +10,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/input_value.hpp"
 
 namespace vibrofric {
 
@@ -23,8 +24,9 @@ namespace vibrofric {
 // curved_stick_integral / X of core/curved_trace.hpp).
 using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
 
-// One input: its value as decimal text, as typed (none: not given), and the name the caller knows
-// it by, which every message about it uses (the tool's "--E1", Python's "E1").
+// A text input (a shape, a unit) as typed (none: not given), and the name the caller knows it by,
+// which every message about it uses (the tool's "--shape", Python's "shape"). Numbers are
+// NamedInput (input_value.hpp): read where they enter.
 struct InputText {
   std::optional<std::string> text;
   std::string name;
@@ -37,20 +39,31 @@ struct InputText {
 // its geometry: radius (flat), R (sphere, wearflat), half_angle (cone, degrees), flat_radius
 // (wearflat). Each is named by its member's name until the caller renames it.
 struct PhysicalRequest {
-  InputText E1{{}, "E1"}, nu1{{}, "nu1"}, E2{{}, "E2"}, nu2{{}, "nu2"}, G1{{}, "G1"}, G2{{}, "G2"};
-  InputText v0{{}, "v0"}, f{{}, "f"}, A{{}, "A"}, u_mean{{}, "u_mean"}, F_N{{}, "F_N"}, mu0{{}, "mu0"};
-  InputText shape{{}, "shape"}, radius{{}, "radius"}, R{{}, "R"}, half_angle{{}, "half_angle"};
-  InputText flat_radius{{}, "flat_radius"};
+  NamedInput E1{{}, "E1"}, nu1{{}, "nu1"}, E2{{}, "E2"}, nu2{{}, "nu2"}, G1{{}, "G1"}, G2{{}, "G2"};
+  NamedInput v0{{}, "v0"}, f{{}, "f"}, A{{}, "A"}, u_mean{{}, "u_mean"}, F_N{{}, "F_N"}, mu0{{}, "mu0"};
+  InputText shape{{}, "shape"};
+  NamedInput radius{{}, "radius"}, R{{}, "R"}, half_angle{{}, "half_angle"}, flat_radius{{}, "flat_radius"};
   // Instead of A, for a samples wave: the unit of its value column (m, mm, um, µm, nm); A is then
   // half the record's peak-to-peak, printed as A_m after the shape.
   InputText unit{{}, "unit"};
   // Rig dynamics (model.md), flat punch: the body's mass (kg), the apparatus' stiffness (N/m) and
   // an optional damper (N s/m); then κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)) are printed
   // and μ is the rig's.
-  InputText mass{{}, "mass"}, k_system{{}, "k_system"}, damping{{}, "damping"};
+  NamedInput mass{{}, "mass"}, k_system{{}, "k_system"}, damping{{}, "damping"};
 
-  // Every input with its member's name, in this order, for a front end that fills them by name.
-  std::vector<std::pair<const char*, InputText*>> inputs();
+  // Every input by its member's name, in this order: a number or a text (shape, unit).
+  struct Member {
+    const char* member;
+    NamedInput* number;  // null for a text
+    InputText* text;     // null for a number
+    std::string& name() const { return number ? number->name : text->name; }
+    // The input as typed: a number read here by the one grammar (InputError naming it).
+    void set(const std::string& typed) const {
+      if (number) number->value = InputValue::read(typed, number->name);
+      else text->text = typed;
+    }
+  };
+  std::vector<Member> inputs();
 };
 
 // `physical` at one point (Eqs. 1, 5, 14; MDR for the curved shapes). `options` gives the solver
@@ -63,7 +76,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& requ
 
 // The inputs of `trace`, each named in its caller's terms as in PhysicalRequest.
 struct TraceRequest {
-  InputText beta{{}, "beta"}, gamma{{}, "gamma"};
+  NamedInput beta{{}, "beta"}, gamma{{}, "gamma"};
   int points = 1000;  // in [min_trace_points, max_trace_points]
   int digits = 17;    // in [min_digits, max_digits]
   std::string points_name = "points", digits_name = "digits";

@@ -12,6 +12,21 @@
 
 namespace vibrofric {
 
+// Whether a and b, each correctly rounded to `digits` significant decimal digits (MPFR's
+// conversion), are the same number: a decision on values, not on their printed forms.
+inline bool same_significant(const mpfr& a, const mpfr& b, int digits) {
+  if (a == 0 || b == 0) return a == b;
+  const auto rounded = [digits](const mpfr& x, mpfr_exp_t& e) {
+    char* raw = mpfr_get_str(nullptr, &e, 10, static_cast<std::size_t>(digits), x.backend().data(), MPFR_RNDN);
+    std::string ds(raw);
+    mpfr_free_str(raw);
+    return ds;
+  };
+  mpfr_exp_t ea = 0, eb = 0;
+  const std::string da = rounded(a, ea), db = rounded(b, eb);
+  return ea == eb && da == db;
+}
+
 // x correctly rounded to `digits` significant digits, in positional notation ("0.0123…") with
 // trailing zeros kept so that the precision stays visible; zero is "0"; values outside
 // [1e-5, 1e15) in scientific notation. The digits of double and long double come from

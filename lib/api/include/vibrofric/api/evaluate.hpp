@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/input_value.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/number_type.hpp"
 #include "vibrofric/api/profile_spec.hpp"
@@ -25,14 +26,17 @@ namespace vibrofric {
 
 enum class Quantity { mu, psi };
 
-// A point as typed (decimal text), or computed (physical_point's β and γ): then each number type
-// takes the values rounded once to nearest, and the texts only name the point in messages.
+// A point: β and γ each a decimal as written or a computed value (InputValue). Text is read where
+// it enters: Point{"0.5", "-0.2"} reads both (InputError naming beta or gamma outside the grammar).
 struct Point {
   Point() = default;
-  Point(std::string beta_text, std::string gamma_text = {}) : beta(std::move(beta_text)), gamma(std::move(gamma_text)) {}
-  std::string beta;
-  std::string gamma;  // ignored for Quantity::psi
-  std::optional<mpfr> beta_value, gamma_value;
+  Point(InputValue beta_value, InputValue gamma_value = {}) : beta(std::move(beta_value)), gamma(std::move(gamma_value)) {}
+  Point(const std::string& beta_text, const std::string& gamma_text = {})
+      : beta(InputValue::read(beta_text, "beta")),
+        gamma(gamma_text.empty() ? InputValue() : InputValue::read(gamma_text, "gamma")) {}
+  Point(const char* beta_text, const char* gamma_text = "") : Point(std::string(beta_text), std::string(gamma_text)) {}
+  InputValue beta;
+  InputValue gamma;  // none for Quantity::psi
 };
 
 // Which rung of the fixed types' ladder (detail::evaluate_fixed) answered each point: the value

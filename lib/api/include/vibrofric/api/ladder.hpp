@@ -43,6 +43,29 @@ struct RaisePolicy {
   void (*on_solver_retry)() = nullptr;  // told of each such retry (a claim check reports them)
 };
 
+// The one loop that raises a precision until an attempt decides: attempt(work) returns the answer,
+// or none where `work` (digits or bits: the caller's unit) did not decide it; next(work) gives the
+// precision to try next, or none to stop. None where it stops undecided: the caller names its case
+// in the error it raises. Every escalation of the library is this loop (raise_precision below, the
+// rig's two precisions, the curved trace's rows, certification's and the claims' bit doubling).
+template <class Attempt, class Next>
+auto escalate(long work, Attempt attempt, Next next) -> decltype(attempt(work)) {
+  for (;;) {
+    if (auto r = attempt(work)) return r;
+    const std::optional<long> w = next(work);
+    if (!w) return {};
+    work = *w;
+  }
+}
+
+// Doubling from `first` up to `most` (inclusive): escalate's most common next().
+inline auto doubling_up_to(long most) {
+  return [most](long work) -> std::optional<long> {
+    if (2 * work > most) return std::nullopt;
+    return 2 * work;
+  };
+}
+
 // Runs compute() under PrecisionScope(work) until judge(result) is met, and returns that result.
 // Between attempts the working precision grows by the digits missing plus policy.guard, and
 // doubles where the shortfall is unknown or the wave needs more digits than the scope has
@@ -51,30 +74,38 @@ struct RaisePolicy {
 template <class Compute, class Judge>
 auto raise_precision(int work, const RaisePolicy& policy, Compute compute, Judge judge)
     -> std::optional<decltype(compute())> {
-  int failures = 0;
-  for (int attempt = 0; attempt < policy.attempts; ++attempt) {
-    PrecisionScope scope(static_cast<unsigned>(work));
-    std::optional<decltype(compute())> r;
+  using Result = decltype(compute());
+  int failures = 0, attempts = 0;
+  long following = 0;  // the precision the last attempt asks for next; 0: stop
+  const auto attempt = [&](long w) -> std::optional<Result> {
+    ++attempts;
+    following = 0;
+    PrecisionScope scope(static_cast<unsigned>(w));
+    std::optional<Result> r;
     try {
       r.emplace(compute());
     } catch (const PrecisionError&) {
-      if (!policy.double_on_precision_error || attempt + 1 == policy.attempts ||
-          (policy.max_work > 0 && 2 * work > policy.max_work))
+      if (!policy.double_on_precision_error || attempts == policy.attempts ||
+          (policy.max_work > 0 && 2 * w > policy.max_work))
         throw;
-      work *= 2;
-      continue;
+      following = 2 * w;
+      return std::nullopt;
     } catch (const SolverError&) {
       if (++failures > policy.solver_retries) throw;
       if (policy.on_solver_retry) policy.on_solver_retry();
-      work = work * 3 / 2;
-      continue;
+      following = w * 3 / 2;
+      return std::nullopt;
     }
     const Shortfall s = judge(*r);
     if (s.met) return r;
-    work += s.digits ? *s.digits + policy.guard : work;
-    if (policy.max_work > 0 && work > policy.max_work) break;
-  }
-  return std::nullopt;
+    following = w + (s.digits ? *s.digits + policy.guard : w);
+    if (policy.max_work > 0 && following > policy.max_work) following = 0;
+    return std::nullopt;
+  };
+  return escalate(work, attempt, [&](long) -> std::optional<long> {
+    if (following == 0 || attempts >= policy.attempts) return std::nullopt;
+    return following;
+  });
 }
 
 }  // namespace vibrofric

@@ -2,13 +2,13 @@
 // without a number type, then built at any precision by make_profile (the classes are in
 // vibrofric/core/profile.hpp).
 #pragma once
-#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "vibrofric/api/input_value.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/profile.hpp"
 
@@ -17,12 +17,10 @@ namespace vibrofric {
 // A profile as written, without a number type (built at any precision by make_profile).
 struct ProfileSpec {
   ProfileKind kind = ProfileKind::flat;
-  std::string name;       // canonical: "flat", "power:2", "wearflat:0.5", "profile:FILE"
-  std::string parameter;  // N of power:N, λ of wearflat:λ, as written
-  std::optional<mpfr> parameter_value;  // computed (physical's λ = b²/(R A)): used instead, rounded
-                                        // once to each type; `parameter` then only names it
-  std::vector<std::string> r, f;  // profile:FILE samples, as written
-  std::string height_unit = "1";   // profile:FILE heights are divided by this (physical: A in metres)
+  std::string name;        // canonical: "flat", "power:2", "wearflat:0.5", "profile:FILE"
+  InputValue parameter;    // N of power:N, λ of wearflat:λ (physical's λ = b²/(R A): computed)
+  std::vector<Decimal> r, f;  // profile:FILE samples, as written
+  InputValue height_unit;     // profile:FILE heights are divided by this (physical: A in metres); none: 1
 };
 
 // Accepts flat, power:N (N ≥ 1), sphere, cone, wearflat:LAMBDA (λ > 0), profile:FILE.
@@ -40,25 +38,16 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
 
 template <class Real>
 std::unique_ptr<Profile<Real>> make_profile(const ProfileSpec& spec) {
-  auto number = [](const std::string& text) -> Real {
-    if constexpr (std::is_same_v<Real, double>) return std::strtod(text.c_str(), nullptr);
-    else if constexpr (std::is_same_v<Real, long double>) return std::strtold(text.c_str(), nullptr);
-    else return Real(text);
-  };
-  const auto parameter = [&]() -> Real {
-    if (spec.parameter_value) return detail::rounded<Real>(*spec.parameter_value);
-    return number(spec.parameter);
-  };
   switch (spec.kind) {
     case ProfileKind::flat: return nullptr;
-    case ProfileKind::power: return std::make_unique<PowerProfile<Real>>(parameter(), spec.name);
-    case ProfileKind::wearflat: return std::make_unique<WearFlatProfile<Real>>(parameter(), spec.name);
+    case ProfileKind::power: return std::make_unique<PowerProfile<Real>>(spec.parameter.to<Real>(), spec.name);
+    case ProfileKind::wearflat: return std::make_unique<WearFlatProfile<Real>>(spec.parameter.to<Real>(), spec.name);
     case ProfileKind::measured: {
       std::vector<Real> r, f;
-      const Real unit = number(spec.height_unit);
+      const Real unit = spec.height_unit.to<Real>();
       for (std::size_t j = 0; j < spec.r.size(); ++j) {
-        r.push_back(number(spec.r[j]));
-        f.push_back(spec.height_unit == "1" ? number(spec.f[j]) : Real(number(spec.f[j]) / unit));
+        r.push_back(spec.r[j].to<Real>());
+        f.push_back(spec.height_unit.given() ? Real(spec.f[j].to<Real>() / unit) : spec.f[j].to<Real>());
       }
       return std::make_unique<MeasuredProfile<Real>>(std::move(r), std::move(f), spec.name);
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/input_value.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/solver.hpp"
 
@@ -17,12 +18,11 @@ struct Point;
 struct Precision;
 struct BatchOptions;
 
-// The rig's dimensionless parameters as typed: κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)).
+// The rig's dimensionless parameters: κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)), each a
+// decimal as typed or a value computed from a mass and stiffnesses (physical's: then no exact
+// resonance is decided).
 struct RigSpec {
-  std::string kappa, omega, zeta = "0";
-  // Computed values (physical's, from a mass and stiffnesses): then these, rounded once, and the
-  // texts only name them in messages; no exact resonance is decided.
-  std::optional<mpfr> kappa_value, omega_value, zeta_value;
+  InputValue kappa, omega, zeta = InputValue(*Decimal::read("0"));
 };
 
 // One point's periodic state. Each number is printed with the significant digits (at most the

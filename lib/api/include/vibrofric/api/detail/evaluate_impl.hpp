@@ -32,22 +32,25 @@ struct PointValue {
   Real relative_error;
 };
 
-// β and γ of a point in Real: the computed value rounded once, else the decimal text parsed.
+// β and γ of a point in Real: a decimal correctly rounded, a computed value rounded once.
 template <class Real>
 Real point_beta(const Point& p) {
-  return p.beta_value ? rounded<Real>(*p.beta_value) : parse_real<Real>(p.beta, "beta");
+  if (!p.beta.given()) throw InputError("beta is empty: expected a decimal number");
+  return p.beta.to<Real>();
 }
 template <class Real>
 Real point_gamma(const Point& p) {
-  return p.gamma_value ? rounded<Real>(*p.gamma_value) : parse_real<Real>(p.gamma, "gamma");
+  if (!p.gamma.given()) throw InputError("gamma is empty: expected a decimal number");
+  return p.gamma.to<Real>();
 }
 
 // What names γ in the Contact caches: the text as typed, or a computed value's exact binary
 // expansion (hexadecimal, never a decimal that one could take for the value).
 inline std::string gamma_key(const Point& p) {
-  if (!p.gamma_value) return p.gamma;
+  const mpfr* v = p.gamma.computed_value();
+  if (!v) return p.gamma.text();
   mpfr_exp_t exponent = 0;
-  char* digits = mpfr_get_str(nullptr, &exponent, 16, 0, p.gamma_value->backend().data(), MPFR_RNDN);
+  char* digits = mpfr_get_str(nullptr, &exponent, 16, 0, v->backend().data(), MPFR_RNDN);
   std::string key = std::string("0x.") + digits + "p16^" + std::to_string(exponent);
   mpfr_free_str(digits);
   return key;
@@ -152,7 +155,7 @@ class WaveCache {
       } catch (const DomainError&) {
         // check_contact (below) found a contact from the decimal γ and the exact waveform: this
         // type's rounding of γ or of max w removed it, so a wider type must compute it.
-        throw PrecisionError("gamma = " + p.gamma + " leaves a contact narrower than the rounding of this number type");
+        throw PrecisionError("gamma = " + p.gamma.text() + " leaves a contact narrower than the rounding of this number type");
       }
       digits_ = d;
       text_ = gamma_text;
@@ -199,9 +202,8 @@ PointValue<Real> compute_point(WaveCache<Real>& waves, Quantity q, const Point& 
                                const Real& target = Real(0)) {
   const Real beta = point_beta<Real>(p);
   // A positive β below the type's smallest number reads as 0: name what was written.
-  if (beta == 0 && !p.beta_value && p.beta[0] != '-' &&
-      p.beta.find_first_of("123456789") < p.beta.find_first_of("eE"))
-    throw UnderflowError("beta = '" + p.beta + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: more digits)");
+  if (const Decimal* d = p.beta.decimal(); beta == 0 && d && !d->is_zero() && !d->negative())
+    throw UnderflowError("beta = '" + d->text() + "' underflows to 0 in this number type: expected a magnitude the type represents (mpfr: more digits)");
   if (const Profile<Real>* profile = waves.profile()) {
     if (q == Quantity::psi)
       throw InputError("psi with profile " + profile->name() +
@@ -229,8 +231,8 @@ Real evaluate_point(WaveCache<Real>& waves, const WaveSpec& spec, Quantity q, co
         [&] { return compute_point(waves, q, p, opt, Real(pow(Real(10), -digits) / 8)); },
         [&](const PointValue<Real>& r) { return shortfall(r.relative_error, Real(pow(Real(10), -digits) / 2)); });
     if (v) return v->value;
-    throw SolverError("wave " + spec.name + ", beta = " + p.beta +
-                      (q == Quantity::mu ? ", gamma = " + p.gamma : std::string()) +
+    throw SolverError("wave " + spec.name + ", beta = " + p.beta.text() +
+                      (q == Quantity::mu ? ", gamma = " + p.gamma.text() : std::string()) +
                       ": could not reach " + std::to_string(digits) + " digits (ill-conditioned)");
   } else {
     return compute_point(waves, q, p, opt).value;
@@ -366,25 +368,22 @@ class ContactCheck {
  public:
   ContactCheck(const WaveSpec& spec, Quantity q) : spec_(spec), q_(q) {}
   void operator()(const Point& p) {
-    if (q_ == Quantity::psi || (!p.gamma_value && p.gamma == last_)) return;
-    if (!p.gamma_value) try {
-        check_decimal(p.gamma, "gamma");
-      } catch (const InputError&) {
-        return;
-      }
+    const Decimal* typed = p.gamma.decimal();
+    const mpfr* computed = p.gamma.computed_value();
+    if (q_ == Quantity::psi || (!typed && !computed) || (typed && typed->text() == last_)) return;
     // Clear of the boundary in double, no exact test is needed (a sweep's points stay cheap): the
     // catalogue has max w = 1, and a normalised user wave max w >= 0 (zero mean).
-    const double g = p.gamma_value ? static_cast<double>(*p.gamma_value) : std::strtod(p.gamma.c_str(), nullptr);
+    const double g = p.gamma.to<double>();
     const bool catalogue = spec_.kind != WaveKind::samples && spec_.kind != WaveKind::fourier;
     if (!(g > (catalogue ? -1 + 1e-9 : 1e-9))) {
-      const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.size() + 10));
+      const unsigned digits = static_cast<unsigned>(std::max<std::size_t>(60, p.gamma.text().size() + 10));
       PrecisionScope scope(digits);
       // A computed γ keeps its own precision (mpfr's sum rounds once, at the wider operand's).
-      const mpfr gamma = p.gamma_value ? *p.gamma_value : mpfr(p.gamma);
+      const mpfr gamma = computed ? *computed : typed->to<mpfr>();
       if (!(gamma + top() > 0))
-        throw no_contact(p.gamma, spec_.name, short_str(mpfr(-top())));
+        throw no_contact(p.gamma.text(), spec_.name, short_str(mpfr(-top())));
     }
-    if (!p.gamma_value) last_ = p.gamma;  // only a γ that passed
+    if (typed) last_ = typed->text();  // only a γ that passed
   }
 
  private:
