@@ -23,7 +23,7 @@
 #include "ladder.hpp"
 #include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/baseline.hpp"
 #include "vibrofric/verification/grid_envelope.hpp"
 

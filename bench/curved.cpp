@@ -30,10 +30,10 @@
 
 #include "common.hpp"
 #include "floor.hpp"
-#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "evaluate_impl.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
-#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved/curved.hpp"
 #include "vibrofric/verification/spring_row.hpp"
 
 namespace vibrofric::bench {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "common.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace vibrofric::bench {
 

@@ -1,4 +1,4 @@
-// Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"; core/dynamics.hpp): the cost
+// Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"; core/dynamics/dynamics.hpp): the cost
 // of one periodic state, in every way the library offers:
 //   rig/<case>/solver_double         solve_rig<double>, raw (the value as computed)
 //   rig/<case>/solver_mpfr_50        solve_rig<mpfr> at 50 + guard digits, from its two starts
@@ -18,7 +18,7 @@
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/ladder.hpp"
 #include "vibrofric/api/rig.hpp"
-#include "vibrofric/core/dynamics.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 
 namespace vibrofric::bench {
 namespace {

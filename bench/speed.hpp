@@ -9,7 +9,7 @@
 
 #include "common.hpp"
 #include "floor.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace vibrofric::bench {
 

@@ -24,7 +24,7 @@
 #include "common.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "common.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 #include "vibrofric/verification/grid_envelope.hpp"
 

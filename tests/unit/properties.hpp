@@ -16,7 +16,7 @@
 #include "correct_rounding.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 
 namespace vt {

@@ -2,7 +2,7 @@
 // points of every piecewise-linear wave, of the sine, of power:P and of Fourier series (fewer
 // points), the double and long double that
 // evaluate() prints are the exact value (core/exact.hpp) or both ends of its enclosure
-// (core/enclosure.hpp) correctly rounded, as the certificate says and as MPFR's own correctly
+// (core/certified/enclosure.hpp) correctly rounded, as the certificate says and as MPFR's own correctly
 // rounded conversion says (an independent decision); and the solver's first-order rounding bound
 // in raw double and long double is a true bound of the actual error, measured against the exact
 // value (the enclosed waves: against the farther end of a 256-bit enclosure). Its ratio to the actual
@@ -21,8 +21,8 @@
 #include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/enclosure.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/certified/enclosure.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "correct_rounding.hpp"
 
 namespace {

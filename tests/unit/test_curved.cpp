@@ -17,7 +17,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved/curved.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 #include "vibrofric/verification/curved_closed_forms.hpp"
 

@@ -20,7 +20,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/profile_spec.hpp"
-#include "vibrofric/core/curved_trace.hpp"
+#include "vibrofric/core/curved/curved_trace.hpp"
 #include "vibrofric/verification/spring_row.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// Certified enclosures of the sine and power:p (core/enclosure.hpp) against the event solver at 100
+// Certified enclosures of the sine and power:p (core/certified/enclosure.hpp) against the event solver at 100
 // digits (its own bound about 1e-95): every enclosure holds the solver's μ̄, Ψ, areas and stick
 // phase, is at most a few hundred ulps of its precision wide, and decides its structure only
 // when certain (β a hair from β_c is Undecided at 64 bits and decided at 256).
@@ -12,10 +12,10 @@
 #include <string>
 
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/core/enclosure.hpp"
-#include "vibrofric/core/solver.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/certified/enclosure.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/core/solver.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
 #include "vibrofric/verification/envelope.hpp"
 
 namespace {

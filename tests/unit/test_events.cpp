@@ -13,9 +13,9 @@
 
 #include "correct_rounding.hpp"
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "evaluate_impl.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace {
 

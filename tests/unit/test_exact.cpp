@@ -12,8 +12,8 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/exact.hpp"
-#include "vibrofric/core/solver.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 #include "vibrofric/verification/envelope.hpp"
 

@@ -11,7 +11,7 @@
 #include <tuple>
 #include <vector>
 
-#include "vibrofric/core/interval.hpp"
+#include "vibrofric/core/certified/interval.hpp"
 
 namespace {
 

@@ -16,8 +16,8 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
-#include "vibrofric/core/curved.hpp"
-#include "vibrofric/core/curved_trace.hpp"
+#include "vibrofric/core/curved/curved.hpp"
+#include "vibrofric/core/curved/curved_trace.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"; core/dynamics.hpp): the
+// Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"; core/dynamics/dynamics.hpp): the
 // event-driven solver against an independent time-stepping peer (rig_peer.hpp), the limits of
 // model.md, the energy balance and the mean force, the exact resonance, and the same algorithm at
 // much higher precision.
@@ -12,7 +12,7 @@
 #include <complex>
 
 #include "rig_peer.hpp"
-#include "vibrofric/core/dynamics.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 
 namespace vibrofric {
 namespace {

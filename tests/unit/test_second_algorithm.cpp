@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/core/solver.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 #include "vibrofric/verification/baseline.hpp"
 #include "vibrofric/verification/envelope.hpp"
 #include "vibrofric/verification/grid_envelope.hpp"

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 
 namespace {

@@ -48,7 +48,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/profile_spec.hpp"
-#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved/curved.hpp"
 #include "vibrofric/verification/spring_row.hpp"
 
 namespace {

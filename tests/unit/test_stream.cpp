@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "evaluate_impl.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
-#include "vibrofric/core/curved.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/curved/curved.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 #include <gmp.h>
 

@@ -11,7 +11,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/envelope.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "vibrofric/api/detail/tables.hpp"
+#include "tables.hpp"
 
 namespace vibrofric {
 

@@ -4,7 +4,7 @@
 #include <csv.h>
 
 #include "vibrofric/api/decimal_value.hpp"
-#include "vibrofric/api/detail/tables.hpp"
+#include "tables.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/suggest.hpp"
 

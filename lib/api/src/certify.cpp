@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "vibrofric/api/decimal.hpp"
-#include "vibrofric/core/enclosure.hpp"
+#include "vibrofric/core/certified/enclosure.hpp"
 
 namespace vibrofric {
 
@@ -159,7 +159,7 @@ mpfr_prec_t first_bits(const Precision& p) {
 }  // namespace
 
 Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
-  // The sine, power:P (P ≠ 1) and Fourier series are enclosed per point (core/enclosure.hpp);
+  // The sine, power:P (P ≠ 1) and Fourier series are enclosed per point (core/certified/enclosure.hpp);
   // the others exactly.
   if (wave.kind == WaveKind::power) {
     const Rational p = exact_decimal(wave.exponent, "power exponent p");

@@ -10,11 +10,11 @@
 #include <set>
 #include <string>
 
-#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "evaluate_impl.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/api/suggest.hpp"
-#include "vibrofric/core/curved.hpp"
-#include "vibrofric/core/curved_trace.hpp"
+#include "vibrofric/core/curved/curved.hpp"
+#include "vibrofric/core/curved/curved_trace.hpp"
 #include "vibrofric/core/physical.hpp"
 
 namespace vibrofric {

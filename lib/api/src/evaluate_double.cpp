@@ -1,4 +1,4 @@
-#include "vibrofric/api/detail/evaluate_impl.hpp"
+#include "evaluate_impl.hpp"
 
 namespace vibrofric {
 VIBROFRIC_INSTANTIATE_EVALUATE(double)

@@ -6,7 +6,7 @@
 #include <sys/stat.h>
 
 #include "vibrofric/api/catalogue.hpp"
-#include "vibrofric/api/detail/tables.hpp"
+#include "tables.hpp"
 #include "vibrofric/api/suggest.hpp"
 
 namespace vibrofric {

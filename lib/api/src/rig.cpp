@@ -10,8 +10,8 @@
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/ladder.hpp"
-#include "vibrofric/api/detail/evaluate_impl.hpp"
-#include "vibrofric/core/dynamics.hpp"
+#include "evaluate_impl.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/exact.hpp"
 
 namespace vibrofric {

@@ -1,4 +1,4 @@
-// The rig's motion between events (core/dynamics.hpp, model.md "Rig dynamics"): the wave on a
+// The rig's motion between events (core/dynamics/dynamics.hpp, model.md "Rig dynamics"): the wave on a
 // piece as a line plus harmonics, and the closed-form solution of Y'' + cY' + KY = F on it.
 #pragma once
 #include <array>
@@ -7,8 +7,8 @@
 
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 

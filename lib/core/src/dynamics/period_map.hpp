@@ -1,4 +1,4 @@
-// The 3×3 algebra of the rig's one-period map (core/dynamics.hpp): Newton's linear solve and the
+// The 3×3 algebra of the rig's one-period map (core/dynamics/dynamics.hpp): Newton's linear solve and the
 // largest Floquet multiplier of the map's Jacobian.
 #pragma once
 #include <algorithm>

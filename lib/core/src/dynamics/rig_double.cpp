@@ -1,4 +1,4 @@
-// The rig dynamics solver in double, compiled once (core/dynamics.hpp).
+// The rig dynamics solver in double, compiled once (core/dynamics/dynamics.hpp).
 #include "rig_solver.hpp"
 
 namespace vibrofric {

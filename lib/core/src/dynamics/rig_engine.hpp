@@ -1,4 +1,4 @@
-// The rig's solver (core/dynamics.hpp, model.md "Rig dynamics: mass and system stiffness"): the
+// The rig's solver (core/dynamics/dynamics.hpp, model.md "Rig dynamics: mass and system stiffness"): the
 // closed-form motion of each mode between events, the events' bracketing and refinement, the
 // sweeping-process rules at jumps and kinks of n, and the shooting for the periodic state. Private
 // to the core: RigSolver forwards to RigEngine, instantiated in rig_double.cpp, rig_long_double.cpp
@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "vibrofric/core/dynamics.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/solver.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 #include "motion.hpp"
 #include "period_map.hpp"
 

@@ -1,4 +1,4 @@
-// RigSolver (core/dynamics.hpp) forwards to the private RigEngine.
+// RigSolver (core/dynamics/dynamics.hpp) forwards to the private RigEngine.
 #pragma once
 #include <memory>
 

@@ -11,10 +11,10 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/ladder.hpp"
-#include "vibrofric/core/enclosure.hpp"
+#include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/claims.hpp"
 
 namespace vibrofric::claims {

@@ -27,7 +27,7 @@
 
 #include "check.hpp"
 #include "vibrofric/api/profile_spec.hpp"
-#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved/curved.hpp"
 #include "vibrofric/verification/curved_closed_forms.hpp"
 
 namespace vibrofric::claims {

@@ -1,7 +1,7 @@
 // The exact claims: Eqs. 6, 13, 17, 18, 19, 20–21, 22, Fig. 3 and model.md's β_c table, each
 // decided by the solver at high precision against the closed form (closed_forms.hpp) or against
 // the solver at the reference point the claim names; then all but the β_c table again, certified
-// (claims.hpp): exactly in rationals (core/exact.hpp) and by enclosures (core/enclosure.hpp).
+// (claims.hpp): exactly in rationals (core/exact.hpp) and by enclosures (core/certified/enclosure.hpp).
 #include "check.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/exact.hpp"

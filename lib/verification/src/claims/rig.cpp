@@ -1,6 +1,6 @@
 // Rig dynamics (model.md, "Rig dynamics: mass and system stiffness"): its limits, and the two
 // claims of the abstract of the series' Part II (Mao, V.L. Popov, Starcevic, M. Popov, Friction 5
-// (2017) 194–206), decided with the rig solver (core/dynamics.hpp) against the quasi-static solver.
+// (2017) 194–206), decided with the rig solver (core/dynamics/dynamics.hpp) against the quasi-static solver.
 //
 // - Limits (model.md): for continuous n, a massless body (Ω → ∞) is the paper's model at the
 //   series stiffness, μ̄ → g_w(βκ/(1+κ), γ) as O(1/Ω); where n jumps down in contact (square wave,
@@ -13,7 +13,7 @@
 #include <cstdio>
 
 #include "check.hpp"
-#include "vibrofric/core/dynamics.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 
 namespace vibrofric::claims {
 

@@ -6,8 +6,8 @@
 #include <random>
 
 #include "check.hpp"
-#include "vibrofric/core/curved.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
+#include "vibrofric/core/curved/curved.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 #include "vibrofric/verification/envelope.hpp"
 

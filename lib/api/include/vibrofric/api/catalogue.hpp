@@ -14,8 +14,8 @@
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/user_waveforms.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/waves/user_waveforms.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 

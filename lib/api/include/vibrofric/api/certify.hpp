@@ -1,6 +1,6 @@
 // Certified values (README, "Precision"): μ̄/μ0 (Eq. 15) and Ψ_w(β) (Eq. 12) of the
 // piecewise-linear waves as exact rationals (core/exact.hpp), of the sine, power:P and Fourier
-// series as interval enclosures (core/enclosure.hpp) narrowed until they decide the rounding, and
+// series as interval enclosures (core/certified/enclosure.hpp) narrowed until they decide the rounding, and
 // the proof that a value evaluate() printed is their correct rounding in the number type or to
 // the digits asked for.
 #pragma once
@@ -14,7 +14,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
-#include "vibrofric/core/enclosure.hpp"
+#include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
 
 namespace vibrofric {

@@ -21,7 +21,7 @@ namespace vibrofric {
 // pressure is unbounded: the punch's rim, the cone's tip, a profile's kink), beta_c,
 // contact_fraction (curved: the central spring's, while the body touches), stick_fraction (curved:
 // the springs' stick shares averaged over the row out to the largest contact radius,
-// curved_stick_integral / X of core/curved_trace.hpp).
+// curved_stick_integral / X of core/curved/curved_trace.hpp).
 using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
 
 // A text input (a shape, a unit) as typed (none: not given), and the name the caller knows it by,
@@ -80,7 +80,7 @@ struct TraceRequest {
   int points = 1000;  // in [min_trace_points, max_trace_points]
   int digits = 17;    // in [min_digits, max_digits]
   std::string points_name = "points", digits_name = "digits";
-  ProfileSpec profile;  // flat: the punch; else the MDR row's sums (core/curved_trace.hpp)
+  ProfileSpec profile;  // flat: the punch; else the MDR row's sums (core/curved/curved_trace.hpp)
 };
 
 // InputError unless β and γ are given as decimals and points and digits lie in their ranges.

@@ -20,7 +20,7 @@
 #include "vibrofric/api/number_type.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/api/rig.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace vibrofric {
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "vibrofric/core/errors.hpp"
+#include "vibrofric/core/escalate.hpp"
 #include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric {
@@ -42,29 +43,6 @@ struct RaisePolicy {
   bool double_on_precision_error = true;  // false: a PrecisionError is rethrown at once
   void (*on_solver_retry)() = nullptr;  // told of each such retry (a claim check reports them)
 };
-
-// The one loop that raises a precision until an attempt decides: attempt(work) returns the answer,
-// or none where `work` (digits or bits: the caller's unit) did not decide it; next(work) gives the
-// precision to try next, or none to stop. None where it stops undecided: the caller names its case
-// in the error it raises. Every escalation of the library is this loop (raise_precision below, the
-// rig's two precisions, the curved trace's rows, certification's and the claims' bit doubling).
-template <class Attempt, class Next>
-auto escalate(long work, Attempt attempt, Next next) -> decltype(attempt(work)) {
-  for (;;) {
-    if (auto r = attempt(work)) return r;
-    const std::optional<long> w = next(work);
-    if (!w) return {};
-    work = *w;
-  }
-}
-
-// Doubling from `first` up to `most` (inclusive): escalate's most common next().
-inline auto doubling_up_to(long most) {
-  return [most](long work) -> std::optional<long> {
-    if (2 * work > most) return std::nullopt;
-    return 2 * work;
-  };
-}
 
 // Runs compute() under PrecisionScope(work) until judge(result) is met, and returns that result.
 // Between attempts the working precision grows by the digits missing plus policy.guard, and

@@ -1,6 +1,6 @@
 // Profiles as written (model.md, "Curved contacts (MDR)"): names and measured files parsed once,
 // without a number type, then built at any precision by make_profile (the classes are in
-// vibrofric/core/profile.hpp).
+// vibrofric/core/curved/profile.hpp).
 #pragma once
 #include <memory>
 #include <optional>
@@ -10,7 +10,7 @@
 
 #include "vibrofric/api/input_value.hpp"
 #include "vibrofric/core/errors.hpp"
-#include "vibrofric/core/profile.hpp"
+#include "vibrofric/core/curved/profile.hpp"
 
 namespace vibrofric {
 

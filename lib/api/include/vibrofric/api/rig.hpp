@@ -1,6 +1,6 @@
 // Rig dynamics at a requested precision (model.md, "Rig dynamics: mass and system stiffness"):
 // μ̄/μ0 of the periodic state of a body of mass m on a system spring, with what a tribologist
-// checks of it, from decimal inputs to decimal text. The core's RigSolver (core/dynamics.hpp)
+// checks of it, from decimal inputs to decimal text. The core's RigSolver (core/dynamics/dynamics.hpp)
 // computes in mpfr at two working precisions; the printed digits are those both agree on.
 #pragma once
 #include <optional>
@@ -10,7 +10,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/input_value.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace vibrofric {
 

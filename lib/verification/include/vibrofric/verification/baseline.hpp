@@ -23,7 +23,7 @@
 
 #include "vibrofric/core/detail/roots.hpp"
 #include "vibrofric/core/errors.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 

@@ -44,8 +44,8 @@
 
 #include "vibrofric/core/detail/roots.hpp"
 #include "vibrofric/core/errors.hpp"
-#include "vibrofric/core/profile.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/curved/profile.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 

@@ -28,8 +28,8 @@
 
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/solver.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 

@@ -24,7 +24,7 @@
 #include "vibrofric/core/detail/roots.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 
@@ -832,7 +832,7 @@ Real tangential_force(const Waveform<Real>& w, const Result<Real>& r, const Real
   return v > 0 ? v : Real(0);
 }
 
-// The solver is compiled once per number type of the API, in lib/core/src/solver_<type>.cpp
+// The solver is compiled once per number type of the API, in lib/core/src/flat/solver_<type>.cpp
 // (explicit instantiation definitions); every other translation unit sees these declarations
 // and links to that copy instead of instantiating its own ([temp.explicit]). Other types are
 // instantiated where they are used, as before.

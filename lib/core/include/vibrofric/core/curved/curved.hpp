@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "vibrofric/core/detail/gauss_legendre.hpp"
-#include "vibrofric/core/profile.hpp"
-#include "vibrofric/core/solver.hpp"
+#include "vibrofric/core/curved/profile.hpp"
+#include "vibrofric/core/flat/solver.hpp"
 
 namespace vibrofric {
 

@@ -24,7 +24,7 @@
 #include <map>
 #include <vector>
 
-#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved/curved.hpp"
 
 namespace vibrofric {
 

@@ -1,5 +1,5 @@
 // Certified enclosures of the sine, power:p and Fourier series (enclosure.hpp).
-#include "vibrofric/core/enclosure.hpp"
+#include "vibrofric/core/certified/enclosure.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Certified enclosures of μ̄/μ0 = g_w(β, γ) (Eq. 15) and Ψ_w(β) (Eq. 12) at rational β and γ,
-// in interval arithmetic (core/interval.hpp), for the waves with the sine's symmetries: the
+// in interval arithmetic (core/certified/interval.hpp), for the waves with the sine's symmetries: the
 // harmonic wave sin 2πφ and power:p, p > 1 (model.md's catalogue). Both are odd on their rising
 // flank r(t), t ∈ [−1/4, 1/4] (r' largest at 0, r concave for t > 0), with w(1/2 − φ) = w(φ)
 // and w(φ + 1/2) = −w(φ). So n = max(γ + w, 0) has one maximum per period, the steady state
@@ -37,7 +37,7 @@
 
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/exact.hpp"
-#include "vibrofric/core/interval.hpp"
+#include "vibrofric/core/certified/interval.hpp"
 
 namespace vibrofric::certified {
 

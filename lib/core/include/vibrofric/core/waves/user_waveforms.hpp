@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "vibrofric/core/escalate.hpp"
 #include "vibrofric/core/numbers.hpp"
-#include "vibrofric/core/waveform.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 
@@ -287,9 +289,10 @@ SampleNormalisation normalise_samples(const std::string& name, std::size_t n, Sa
     throw InputError("sampled waveform " + name + " has " + std::to_string(n) + " sample(s): expected at least 2");
   using std::abs;
   const int log_n = static_cast<int>(std::ceil(std::log10(static_cast<double>(n))));
-  for (int p = wanted + log_n, attempt = 0;; ++attempt) {
-    if (attempt == 8)
-      throw InputError("sampled waveform " + name + ": the normalisation does not converge: offset too large against the amplitude");
+  int attempts = 0;
+  long following = 0;  // the precision the last attempt asks for next
+  const auto attempt = [&](long p) -> std::optional<SampleNormalisation> {
+    ++attempts;
     PrecisionScope scope(static_cast<unsigned>(p));
     mpfr sum = 0, lo = sample(0), hi = lo, big = abs(lo);
     for (std::size_t j = 0; j < n; ++j) {
@@ -302,13 +305,13 @@ SampleNormalisation normalise_samples(const std::string& name, std::size_t n, Sa
     if (!(hi > lo)) {
       if (p >= distinct_digits + log_n + 10)
         throw InputError("sampled waveform " + name + " is constant: expected a signal with non-zero amplitude");
-      p = distinct_digits + log_n + 10;
-      continue;
+      following = distinct_digits + log_n + 10;
+      return std::nullopt;
     }
     const int cancelled = static_cast<int>(std::ceil(static_cast<double>(log10(2 * big / (hi - lo)))));
     if (wanted + log_n + cancelled + 2 > p) {
-      p = wanted + log_n + cancelled + 2;
-      continue;
+      following = wanted + log_n + cancelled + 2;
+      return std::nullopt;
     }
     mpfr mean = sum / n;
     if (phase) {
@@ -318,8 +321,14 @@ SampleNormalisation normalise_samples(const std::string& name, std::size_t n, Sa
         mean += sample(j) * (next - prev) / 2;
       }
     }
-    return {static_cast<unsigned>(p), mean, lo, hi, mpfr((hi - lo) / 2)};
-  }
+    return SampleNormalisation{static_cast<unsigned>(p), mean, lo, hi, mpfr((hi - lo) / 2)};
+  };
+  auto nz = escalate(wanted + log_n, attempt, [&](long) -> std::optional<long> {
+    if (attempts == 8) return std::nullopt;
+    return following;
+  });
+  if (!nz) throw InputError("sampled waveform " + name + ": the normalisation does not converge: offset too large against the amplitude");
+  return std::move(*nz);
 }
 
 // Periodic samples y_0 … y_{N−1} at φ_j = j/N, joined by straight lines (y_N = y_0), normalised

@@ -22,7 +22,7 @@
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/ladder.hpp"
-#include "vibrofric/core/curved.hpp"
+#include "vibrofric/core/curved/curved.hpp"
 
 namespace vibrofric::detail {
 
