@@ -254,7 +254,7 @@ std::optional<int> run_command(int argc, char** argv) {
       if (read)
         read(flags, text);
       else
-        flags.texts[name] = text;
+        read_physical(flags, name, text);
     });
     options[f.name] = o;
   };

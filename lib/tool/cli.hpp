@@ -7,6 +7,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,14 +50,18 @@ struct Flags {
   std::optional<std::string> output, claim;
   // Rig dynamics (model.md): κ, Ω, ζ
   InputValue kappa, omega, zeta;
-  std::map<std::string, std::string> texts;  // as typed, by flag name: the flags without a reader
+  // physical, by flag name: each number input's value, or a swept input's values (FROM:TO:N), read
+  // by read_physical; shape and unit as typed.
+  std::map<std::string, std::vector<InputValue>> physical;
+  std::map<std::string, std::string> physical_texts;
+  std::set<std::string> physical_ranges;  // the inputs given as FROM:TO:N
 };
 
 using Reader = void (*)(Flags&, const std::string& text);
 
 // One flag of a command: its name, the value's placeholder (empty: a switch), the help line, the
-// default shown by --help (empty: none) and the reader of its text (none: kept in Flags::texts
-// for the library to check, as physical's inputs are by physical_point).
+// default shown by --help (empty: none) and the reader of its text (none: physical's inputs, read
+// by read_physical).
 struct FlagSpec {
   const char* name;
   const char* value;
@@ -96,6 +101,10 @@ Format format_named(const std::string& text);
 std::vector<std::string> split(const std::string& s, char sep);
 std::vector<std::string> value_range(const std::string& spec, const std::string& flag, bool descending);
 std::vector<InputValue> read_all(const std::vector<std::string>& texts, const std::string& what);
+// physical's flag `name` (no leading --): a number, a range of one of the swept inputs (v0, A, f,
+// F-N, u-mean), or the text of shape and unit.
+void read_physical(Flags& f, const std::string& name, const std::string& text);
+extern const std::vector<std::string> kSweptPhysical;
 extern const std::vector<FlagSpec> kWaveFlags;
 extern const std::vector<FlagSpec> kPrecisionFlags;
 extern const std::vector<FlagSpec> kSolverFlags;

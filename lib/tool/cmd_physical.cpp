@@ -12,15 +12,19 @@
 namespace vibrofric::tool {
 namespace {
 
-// `physical`'s inputs as typed (`texts`, swept or not), each named by its flag (the input u_mean is
-// --u-mean), and its controls.
-PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, std::string>& texts, const WaveSpec& wave) {
+// `physical`'s inputs (`values`: one per number input, the swept one's value of this row), each named
+// by its flag (the input u_mean is --u-mean), and its controls.
+PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, InputValue>& values, const WaveSpec& wave) {
   PhysicalRequest request;
   for (const auto& input : request.inputs()) {
     std::string flag = input.member;
     std::replace(flag.begin(), flag.end(), '_', '-');
     input.name() = "--" + flag;
-    if (const auto it = texts.find(flag); it != texts.end()) input.set(it->second);
+    if (input.number) {
+      if (const auto it = values.find(flag); it != values.end()) input.number->value = it->second;
+    } else if (const auto it = f.physical_texts.find(flag); it != f.physical_texts.end()) {
+      input.text->text = it->second;
+    }
   }
   std::vector<std::string> warnings;
   PhysicalOutputs out = physical_point(wave, request, precision_of(f), batch_options(f), &warnings);
@@ -50,15 +54,17 @@ std::vector<std::string> values_of(const PhysicalOutputs& r) {
 int run_physical(const Flags& f) {
   const WaveSpec wave = read_wave(f);
   std::string swept;
-  for (const char* name : {"v0", "A", "f", "F-N", "u-mean"})
-    if (f.texts.count(name) && f.texts.at(name).find(':') != std::string::npos) {
+  std::map<std::string, InputValue> values;
+  for (const auto& [name, read] : f.physical) values[name] = read.front();
+  for (const std::string& name : kSweptPhysical)
+    if (f.physical_ranges.count(name)) {
       if (!swept.empty())
         throw InputError("--" + swept + " and --" + name + " are both ranges: expected one swept input at a time");
       swept = name;
     }
   if (swept.empty()) {
     const Format format = f.format.value_or(Format::text);
-    const PhysicalOutputs rec = physical_record(f, f.texts, wave);
+    const PhysicalOutputs rec = physical_record(f, values, wave);
     if (format == Format::csv) {
       write_csv_row(names_of(rec));
       write_csv_row(values_of(rec));
@@ -71,18 +77,16 @@ int run_physical(const Flags& f) {
   }
   const Format format = f.format.value_or(Format::csv);
   if (format == Format::text) throw InputError("--format text: a physical sweep writes csv (the default) or json");
-  // A range of u_mean may start below contact (gamma < -1 for the sine): such rows are errors, as at one point.
-  const auto range = value_range(f.texts.at(swept), "--" + swept, swept == "u-mean");
+  const std::vector<InputValue>& range = f.physical.at(swept);
   // Every input's domain is monotone along a range: its two ends decide it before the first row.
-  std::map<std::string, std::string> texts = f.texts;
   auto at = [&](std::size_t i) {
-    texts[swept] = range[i];
-    return physical_record(f, texts, wave);
+    values[swept] = range[i];
+    return physical_record(f, values, wave);
   };
   const PhysicalOutputs first = at(0), last = at(range.size() - 1);
   for (std::size_t i = 0; i < range.size(); ++i) {
     PhysicalOutputs rec = i == 0 ? first : i + 1 == range.size() ? last : at(i);
-    rec.insert(rec.begin(), {swept, range[i]});  // the swept input leads each row, under its flag's name
+    rec.insert(rec.begin(), {swept, range[i].text()});  // the swept input leads each row, under its flag's name
     if (format == Format::csv) {
       if (i == 0) write_csv_row(names_of(rec));
       write_csv_row(values_of(rec));

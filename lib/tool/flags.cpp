@@ -186,6 +186,25 @@ void format_of_rows(Flags& f, const std::string& t) {
 void text_beta(Flags& f, const std::string& t) { f.beta = InputValue::read(t, "--beta"); }
 void text_gamma(Flags& f, const std::string& t) { f.gamma = InputValue::read(t, "--gamma"); }
 
+const std::vector<std::string> kSweptPhysical{"v0", "A", "f", "F-N", "u-mean"};
+
+void read_physical(Flags& f, const std::string& name, const std::string& text) {
+  if (name == "shape" || name == "unit") {
+    f.physical_texts[name] = text;
+    return;
+  }
+  const std::string flag = "--" + name;
+  const bool swept = std::find(kSweptPhysical.begin(), kSweptPhysical.end(), name) != kSweptPhysical.end();
+  // A range of u_mean may start below contact (gamma < -1 for the sine): such rows are errors, as at one point.
+  f.physical_ranges.erase(name);  // the last of a repeated flag counts
+  if (swept && text.find(':') != std::string::npos) {
+    f.physical[name] = read_all(value_range(text, flag, name == "u-mean"), flag);
+    f.physical_ranges.insert(name);
+  } else {
+    f.physical[name] = {InputValue::read(text, flag)};
+  }
+}
+
 std::vector<InputValue> read_all(const std::vector<std::string>& texts, const std::string& what) {
   std::vector<InputValue> out;
   out.reserve(texts.size());

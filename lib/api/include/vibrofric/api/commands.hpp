@@ -57,11 +57,6 @@ struct PhysicalRequest {
     NamedInput* number;  // null for a text
     InputText* text;     // null for a number
     std::string& name() const { return number ? number->name : text->name; }
-    // The input as typed: a number read here by the one grammar (InputError naming it).
-    void set(const std::string& typed) const {
-      if (number) number->value = InputValue::read(typed, number->name);
-      else text->text = typed;
-    }
   };
   std::vector<Member> inputs();
 };
