@@ -39,8 +39,8 @@ py::dict physical_dict(const WaveSpec& wave, const PhysicalRequest& request, con
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();  // warnings as errors
   const Converter convert(result_form(precision, strings), precision);
   py::dict d;
-  for (const auto& [name, value] : record)
-    d[py::str(name)] = name == "shape" ? py::object(py::str(value)) : convert(value);
+  for (const auto& output : record)
+    d[py::str(output.name)] = output.name == "shape" ? py::object(py::str(output.word)) : convert(output.text());
   return d;
 }
 

@@ -11,49 +11,36 @@ namespace vibrofric::python {
 
 namespace {
 
-// trace_rows as three arrays, phi, n and s: float64, or decimal strings (object arrays).
-py::tuple trace_arrays(const std::vector<std::array<std::string, 3>>& rows, bool strings) {
+// Columns of rows, each value printed to `digits` significant digits: decimal strings (object
+// arrays), or float64 of those digits (the numbers the tool prints, as Python floats).
+template <class Row>
+py::array column_of(const std::vector<Row>& rows, const mpfr Row::*field, int digits, bool strings) {
   const auto n = static_cast<py::ssize_t>(rows.size());
-  py::list columns;
-  for (std::size_t c = 0; c < 3; ++c) {
-    if (strings) {
-      py::array out = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
-      for (py::ssize_t i = 0; i < n; ++i) out[py::int_(i)] = py::str(rows[static_cast<std::size_t>(i)][c]);
-      columns.append(out);
-    } else {
-      py::array_t<double> out(n);
-      double* p = out.mutable_data();
-      for (py::ssize_t i = 0; i < n; ++i) p[i] = read_decimal<double>(rows[static_cast<std::size_t>(i)][c]);
-      columns.append(out);
-    }
+  if (strings) {
+    py::array out = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
+    for (py::ssize_t i = 0; i < n; ++i) out[py::int_(i)] = py::str(format_significant(rows[static_cast<std::size_t>(i)].*field, digits));
+    return out;
   }
-  return py::tuple(columns);
+  py::array_t<double> out(n);
+  double* p = out.mutable_data();
+  for (py::ssize_t i = 0; i < n; ++i) p[i] = read_decimal<double>(format_significant(rows[static_cast<std::size_t>(i)].*field, digits));
+  return out;
 }
 
-// rig_trace_rows as six arrays, phi, n, s, lag, lag_rate (float64, or decimal strings) and mode (str).
-py::tuple rig_trace_arrays(const std::vector<RigTraceRow>& rows, bool strings) {
+// trace_rows as three arrays, phi, n and s.
+py::tuple trace_arrays(const std::vector<TraceRow>& rows, int digits, bool strings) {
+  return py::make_tuple(column_of(rows, &TraceRow::phi, digits, strings), column_of(rows, &TraceRow::n, digits, strings),
+                        column_of(rows, &TraceRow::s, digits, strings));
+}
+
+// rig_trace_rows as six arrays, phi, n, s, lag, lag_rate and mode (str).
+py::tuple rig_trace_arrays(const std::vector<RigTraceRow>& rows, int digits, bool strings) {
   const auto n = static_cast<py::ssize_t>(rows.size());
-  const auto numpy = py::module_::import("numpy");
-  py::list columns;
-  const auto text_column = [&](auto field) {
-    py::array out = numpy.attr("empty")(n, "dtype"_a = "object");
-    for (py::ssize_t i = 0; i < n; ++i) out[py::int_(i)] = py::str(field(rows[static_cast<std::size_t>(i)]));
-    columns.append(out);
-  };
-  const auto column = [&](auto field) {
-    if (strings) return text_column(field);
-    py::array_t<double> out(n);
-    double* p = out.mutable_data();
-    for (py::ssize_t i = 0; i < n; ++i) p[i] = read_decimal<double>(field(rows[static_cast<std::size_t>(i)]));
-    columns.append(out);
-  };
-  column([](const RigTraceRow& r) -> const std::string& { return r.phi; });
-  column([](const RigTraceRow& r) -> const std::string& { return r.n; });
-  column([](const RigTraceRow& r) -> const std::string& { return r.s; });
-  column([](const RigTraceRow& r) -> const std::string& { return r.lag; });
-  column([](const RigTraceRow& r) -> const std::string& { return r.lag_rate; });
-  text_column([](const RigTraceRow& r) -> const std::string& { return r.mode; });
-  return py::tuple(columns);
+  py::array modes = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
+  for (py::ssize_t i = 0; i < n; ++i) modes[py::int_(i)] = py::str(rig_mode_name(rows[static_cast<std::size_t>(i)].mode));
+  return py::make_tuple(column_of(rows, &RigTraceRow::phi, digits, strings), column_of(rows, &RigTraceRow::n, digits, strings),
+                        column_of(rows, &RigTraceRow::s, digits, strings), column_of(rows, &RigTraceRow::lag, digits, strings),
+                        column_of(rows, &RigTraceRow::lag_rate, digits, strings), modes);
 }
 
 }  // namespace
@@ -102,14 +89,14 @@ at the equally spaced phases and the central spring's contact boundaries.
             py::gil_scoped_release release;
             rows = rig_trace_rows(w, request, rig);
           }
-          return rig_trace_arrays(rows, strings);
+          return rig_trace_arrays(rows, request.digits, strings);
         }
-        std::vector<std::array<std::string, 3>> rows;
+        std::vector<TraceRow> rows;
         {
           py::gil_scoped_release release;
           rows = trace_rows(w, request);
         }
-        return trace_arrays(rows, strings);
+        return trace_arrays(rows, request.digits, strings);
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false,
       "kappa"_a = py::none(), "omega"_a = py::none(), "zeta"_a = py::none(), "profile"_a = "flat", trace_doc);

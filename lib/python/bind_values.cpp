@@ -162,10 +162,10 @@ Flat punch only (Psi does not exist for curved profiles).
         std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
         py::dict d;
         for (const auto& [name, value] : std::vector<std::pair<const char*, std::string>>{
-                 {"mu_over_mu0", r.mu}, {"stick_fraction", r.stick_fraction}, {"slip_fraction", r.slip_fraction},
-                 {"backward_slip_fraction", r.backward_fraction}, {"flight_fraction", r.flight_fraction},
-                 {"amplitude", r.amplitude}, {"largest_backward_slip", r.largest_backward_slip},
-                 {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error}})
+                 {"mu_over_mu0", r.mu}, {"stick_fraction", r.stick_fraction.text()}, {"slip_fraction", r.slip_fraction.text()},
+                 {"backward_slip_fraction", r.backward_fraction.text()}, {"flight_fraction", r.flight_fraction.text()},
+                 {"amplitude", r.amplitude.text()}, {"largest_backward_slip", r.largest_backward_slip.text()},
+                 {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()}})
           d[py::str(name)] = convert(value);
         return d;
       },

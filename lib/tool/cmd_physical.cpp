@@ -38,12 +38,12 @@ PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, Inpu
 // Names and values of output records, for CSV and JSON.
 std::vector<std::string> names_of(const PhysicalOutputs& r) {
   std::vector<std::string> out;
-  for (const auto& [name, value] : r) out.push_back(name);
+  for (const auto& output : r) out.push_back(output.name);
   return out;
 }
 std::vector<std::string> values_of(const PhysicalOutputs& r) {
   std::vector<std::string> out;
-  for (const auto& [name, value] : r) out.push_back(value);
+  for (const auto& output : r) out.push_back(output.text());
   return out;
 }
 
@@ -71,7 +71,7 @@ int run_physical(const Flags& f) {
     } else if (format == Format::json) {
       std::cout << json_record(names_of(rec), values_of(rec)).dump(1) << '\n';
     } else {
-      for (const auto& [name, value] : rec) std::cout << name << " = " << value << '\n';
+      for (const auto& output : rec) std::cout << output.name << " = " << output.text() << '\n';
     }
     return 0;
   }
@@ -85,13 +85,15 @@ int run_physical(const Flags& f) {
   };
   const PhysicalOutputs first = at(0), last = at(range.size() - 1);
   for (std::size_t i = 0; i < range.size(); ++i) {
-    PhysicalOutputs rec = i == 0 ? first : i + 1 == range.size() ? last : at(i);
-    rec.insert(rec.begin(), {swept, range[i].text()});  // the swept input leads each row, under its flag's name
+    const PhysicalOutputs rec = i == 0 ? first : i + 1 == range.size() ? last : at(i);
+    std::vector<std::string> names = names_of(rec), values = values_of(rec);
+    names.insert(names.begin(), swept);  // the swept input leads each row, under its flag's name
+    values.insert(values.begin(), range[i].text());
     if (format == Format::csv) {
-      if (i == 0) write_csv_row(names_of(rec));
-      write_csv_row(values_of(rec));
+      if (i == 0) write_csv_row(names);
+      write_csv_row(values);
     } else {
-      std::cout << (i ? ",\n " : "[\n ") << json_record(names_of(rec), values_of(rec)).dump();
+      std::cout << (i ? ",\n " : "[\n ") << json_record(names, values).dump();
     }
     std::cout.flush();
   }

@@ -34,10 +34,10 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
   char floquet[32];
   std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
   const std::vector<std::pair<std::string, std::string>> fields{
-      {"stick_fraction", r.stick_fraction}, {"slip_fraction", r.slip_fraction},
-      {"backward_slip_fraction", r.backward_fraction}, {"flight_fraction", r.flight_fraction},
-      {"amplitude", r.amplitude}, {"largest_backward_slip", r.largest_backward_slip},
-      {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error}};
+      {"stick_fraction", r.stick_fraction.text()}, {"slip_fraction", r.slip_fraction.text()},
+      {"backward_slip_fraction", r.backward_fraction.text()}, {"flight_fraction", r.flight_fraction.text()},
+      {"amplitude", r.amplitude.text()}, {"largest_backward_slip", r.largest_backward_slip.text()},
+      {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()}};
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';

@@ -22,13 +22,17 @@ int run_trace(const Flags& f) {
   if (o.rig) {
     const auto rows = rig_trace_rows(wave, request, *o.rig, o.solver);
     std::cout << "phi,n,s,lag,lag_rate,mode\n";
+    const int d = request.digits;
     for (const auto& r : rows)
-      std::cout << r.phi << ',' << r.n << ',' << r.s << ',' << r.lag << ',' << r.lag_rate << ',' << r.mode << '\n';
+      std::cout << format_significant(r.phi, d) << ',' << format_significant(r.n, d) << ',' << format_significant(r.s, d) << ','
+                << format_significant(r.lag, d) << ',' << format_significant(r.lag_rate, d) << ',' << rig_mode_name(r.mode) << '\n';
     return 0;
   }
   const auto rows = trace_rows(wave, request);
   std::cout << "phi,n,s\n";
-  for (const auto& r : rows) std::cout << r[0] << ',' << r[1] << ',' << r[2] << '\n';
+  const int d = request.digits;
+  for (const auto& r : rows)
+    std::cout << format_significant(r.phi, d) << ',' << format_significant(r.n, d) << ',' << format_significant(r.s, d) << '\n';
   return 0;
 }
 

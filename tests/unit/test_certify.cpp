@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/decimal.hpp"

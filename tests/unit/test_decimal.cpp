@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/decimal_value.hpp"
 #include "vibrofric/core/errors.hpp"
@@ -53,16 +54,16 @@ exact::Rational gmp_rational(const std::string& n, long k) {
 }
 
 TEST(Decimal, RationalIsExact) {
-  EXPECT_EQ(Decimal::read("-007.500e-2")->rational("x"), gmp_rational("-75", -3));
-  EXPECT_EQ(Decimal::read("1.25e3")->rational("x"), gmp_rational("125", 1));
-  EXPECT_EQ(Decimal::read("0.1")->rational("x"), gmp_rational("1", -1));
-  EXPECT_EQ(Decimal::read("-0")->rational("x"), 0);
-  EXPECT_EQ(Decimal::read("1e100000")->rational("x"), gmp_rational("1", 100000));
-  EXPECT_THROW(Decimal::read("1e100001")->rational("x"), InputError);
+  EXPECT_EQ(rational(*Decimal::read("-007.500e-2"), "x"), gmp_rational("-75", -3));
+  EXPECT_EQ(rational(*Decimal::read("1.25e3"), "x"), gmp_rational("125", 1));
+  EXPECT_EQ(rational(*Decimal::read("0.1"), "x"), gmp_rational("1", -1));
+  EXPECT_EQ(rational(*Decimal::read("-0"), "x"), 0);
+  EXPECT_EQ(rational(*Decimal::read("1e100000"), "x"), gmp_rational("1", 100000));
+  EXPECT_THROW(rational(*Decimal::read("1e100001"), "x"), InputError);
   // The limit counts the significand's digits on the small side: 10^-100001 is one digit past it
   // and still taken, 10^-100002 is not.
-  EXPECT_EQ(Decimal::read("1e-100001")->rational("x"), gmp_rational("1", -100001));
-  EXPECT_THROW(Decimal::read("1e-100002")->rational("x"), InputError);
+  EXPECT_EQ(rational(*Decimal::read("1e-100001"), "x"), gmp_rational("1", -100001));
+  EXPECT_THROW(rational(*Decimal::read("1e-100002"), "x"), InputError);
   EXPECT_THROW(exact_decimal("1,5", "beta"), InputError);  // the reader's refusal, with check_decimal's message
 }
 

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/flat/solver.hpp"

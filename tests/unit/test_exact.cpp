@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/exact.hpp"
 #include "vibrofric/core/flat/solver.hpp"

@@ -1,4 +1,5 @@
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/input_value.hpp"
 
 #include <csv.h>
@@ -408,7 +409,7 @@ InputValue InputValue::read(const std::string& text, const std::string& what) {
 exact::Rational exact_decimal(const std::string& text, const std::string& what) {
   const auto d = Decimal::read(text);
   if (!d) check_decimal(text, what);  // the grammar's refusal (an exact value has no overflow)
-  return d->rational(what);
+  return rational(*d, what);
 }
 
 WaveSpec detail::fourier_from_table(const Table& table, const RowSource& source) {

@@ -1,6 +1,7 @@
 // Certified values of the piecewise-linear waves (certify.hpp).
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/certify.hpp"
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/ladder.hpp"
 
 #include <cmath>
@@ -196,7 +197,7 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
   const auto exact_input = [&](const InputValue& in, const char* name) {
     if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
     if (!in.decimal()) throw InputError("a computed point (beta " + point.beta.text() + ") has no exact inputs to certify");
-    return in.decimal()->rational(name);
+    return rational(*in.decimal(), name);
   };
   const Rational beta = exact_input(point.beta, "beta");
   const Rational gamma = q == Quantity::psi ? Rational(1) : exact_input(point.gamma, "gamma");

@@ -97,7 +97,7 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   PhysicalOutputs out = physical_at(wave, request, prec, base, warnings);
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
-  out.insert(out.begin() + 1, {"A_m", format_significant(detail::rounded<mpfr>(amplitude), digits)});
+  out.insert(out.begin() + 1, PhysicalOutput{"A_m", {detail::rounded<mpfr>(amplitude), digits}, {}});
   return out;
 }
 
@@ -299,7 +299,6 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   RigReport report;
   const Evaluated ratio = options.rig ? rig_evaluated(wave, point, *options.rig, fine, options.solver, report)
                                       : evaluate_one(wave, Quantity::mu, point, fine, options);
-  const std::string mu_ratio = fine.type == NumberType::mpfr ? format_significant(ratio.value, digits) : ratio.text;
   const mpfr mu = ratio.value * in.mu0;
   mpfr edge;
   const mpfr force = load(g.gamma, g.beta, &edge);
@@ -363,8 +362,9 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     }
   }
   PhysicalOutputs rec;
-  auto field = [&](const char* name, const std::string& v) { rec.emplace_back(name, v); };
-  auto line = [&](const char* name, const mpfr& v) { field(name, format_significant(v, digits)); };
+  auto field = [&](const char* name, const std::string& word) { rec.push_back({name, {}, word}); };
+  auto number = [&](const char* name, const mpfr& v, int known) { rec.push_back({name, {v, known}, {}}); };
+  auto line = [&](const char* name, const mpfr& v) { number(name, v, digits); };
   field("shape", kind == "profile" ? shape : kind);
   line("E_star_Pa", g.E_star);
   line("G_star_Pa", g.G_star);
@@ -378,7 +378,9 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   line("beta", g.beta);
   line("gamma", g.gamma);
   if (by_load) line("u_mean_m", mpfr(g.gamma * A));
-  field("mu_over_mu0", mu_ratio);
+  // evaluate's text: the type's value (the rig's is computed in mpfr), or mpfr's to `digits`
+  rec.push_back({"mu_over_mu0", fine.type == NumberType::mpfr ? Significant{ratio.value, digits}
+                                                               : detail::type_significant(ratio.value, prec), {}});
   line("mu", mu);
   line("F_N_mean_N", force);
   line("F_x_mean_N", mpfr(mu * force));
@@ -400,21 +402,14 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     line("omega", *options.rig->omega.computed_value());
     line("zeta", *options.rig->zeta.computed_value());
     // the report's digits (those both precisions agree on, of the finer request) to the request's
-    const auto fraction = [&](const char* name, const std::string& text) {
-      const std::string shorter = format_significant(mpfr(text), digits);
-      field(name, text.size() < shorter.size() ? text : shorter);
-    };
+    const auto fraction = [&](const char* name, const Significant& v) { number(name, v.value, std::min(digits, v.digits)); };
     fraction("stick_fraction", report.stick_fraction);
     fraction("slip_fraction", report.slip_fraction);
     fraction("backward_slip_fraction", report.backward_fraction);
     fraction("flight_fraction", report.flight_fraction);
     // lengths: the rig's unit μ0 k_z A/k_x (model.md), to the digits both precisions agree on
-    const auto length_m = [&](const char* name, const std::string& text) {
-      int agreed = 0;
-      for (char ch : text.substr(0, text.find('e')))
-        if (std::isdigit(static_cast<unsigned char>(ch)) && (agreed > 0 || ch != '0')) ++agreed;
-      const mpfr v = mpfr(text) * in.mu0 * g.k_z * A / g.k_x;
-      field(name, v == 0 ? std::string("0") : format_significant(v, std::min(digits, agreed)));
+    const auto length_m = [&](const char* name, const Significant& v) {
+      number(name, mpfr(v.value * in.mu0 * g.k_z * A / g.k_x), std::min(digits, v.digits));
     };
     length_m("body_amplitude_m", report.amplitude);
     length_m("largest_backward_slip_m", report.largest_backward_slip);
@@ -444,8 +439,8 @@ namespace {
 // The curved trace (curved_trace.hpp) at the phases, each s to `digits` of itself. Rows whose s
 // only reached the rounding floor (just after first contact: s tiny) are computed again at twice
 // the working digits, up to three times; the contact boundaries are 0 by definition.
-std::vector<std::array<std::string, 3>> curved_trace_rows(const WaveSpec& wave, const TraceRequest& request,
-                                                          const std::vector<mpfr>& phis, const std::vector<mpfr>& edges) {
+std::vector<TraceRow> curved_trace_rows(const WaveSpec& wave, const TraceRequest& request, const std::vector<mpfr>& phis,
+                                        const std::vector<mpfr>& edges) {
   const int digits = request.digits;
   std::map<std::size_t, CurvedTraceRow<mpfr>> done;
   std::vector<std::size_t> todo;
@@ -478,20 +473,19 @@ std::vector<std::array<std::string, 3>> curved_trace_rows(const WaveSpec& wave, 
                       " keeps an error estimate of " + format_significant(t.error, 3) + " at " + std::to_string(last) +
                       " working digits, not " + std::to_string(digits) + " digits of itself");
   }
-  std::vector<std::array<std::string, 3>> rows;
+  std::vector<TraceRow> rows;
   for (std::size_t i = 0; i < phis.size(); ++i) {
     const auto it = done.find(i);
     if (it == done.end())
-      rows.push_back({format_significant(phis[i], digits), "0", "0"});
+      rows.push_back({phis[i], mpfr(0), mpfr(0)});
     else
-      rows.push_back({format_significant(phis[i], digits), format_significant(it->second.n, digits),
-                      format_significant(it->second.s, digits)});
+      rows.push_back({phis[i], it->second.n, it->second.s});
   }
   return rows;
 }
 }  // namespace
 
-std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request) {
+std::vector<TraceRow> trace_rows(const WaveSpec& wave, const TraceRequest& request) {
   check_trace_request(request);
   const int n_points = request.points, digits = request.digits;
   PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
@@ -515,13 +509,12 @@ std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const T
   std::sort(phis.begin(), phis.end());
   phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
   if (curved) return curved_trace_rows(wave, request, phis, edges);
-  std::vector<std::array<std::string, 3>> rows;
+  std::vector<TraceRow> rows;
   for (const mpfr& phi : phis) {
     const bool edge = std::find(edges.begin(), edges.end(), phi) != edges.end();
     const mpfr v = edge ? mpfr(0) : mpfr(gamma + (*w)(phi - floor(phi)));
     const mpfr s = edge ? mpfr(0) : tangential_force(*w, r, beta, gamma, phi == 1 ? mpfr(0) : phi);
-    rows.push_back({format_significant(phi, digits), format_significant(v > 0 ? v : mpfr(0), digits),
-                    format_significant(s, digits)});
+    rows.push_back({phi, v > 0 ? v : mpfr(0), s});
   }
   return rows;
 }

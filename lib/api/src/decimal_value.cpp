@@ -1,5 +1,6 @@
 // Decimal (decimal_value.hpp): the one reader of decimal text, exact values and comparison.
 #include "vibrofric/api/decimal_value.hpp"
+#include "vibrofric/api/exact_input.hpp"
 
 #include <boost/multiprecision/gmp.hpp>
 
@@ -53,17 +54,17 @@ std::optional<Decimal> Decimal::read(const std::string& t) {
   return d;
 }
 
-exact::Rational Decimal::rational(const std::string& what) const {
-  if (digits_.empty()) return 0;
-  const long power = exponent_;
-  if (power > max_rational_exponent || power < -max_rational_exponent - static_cast<long>(digits_.size()))
-    throw InputError(what + " '" + text_ + "': its exponent is beyond ±" + std::to_string(max_rational_exponent) +
+exact::Rational rational(const Decimal& d, const std::string& what) {
+  if (d.is_zero()) return 0;
+  const long power = d.exponent();
+  if (power > max_rational_exponent || power < -max_rational_exponent - static_cast<long>(d.digits().size()))
+    throw InputError(what + " '" + d.text() + "': its exponent is beyond ±" + std::to_string(max_rational_exponent) +
                      ", too large for an exact rational");
   using Integer = boost::multiprecision::mpz_int;
-  // mpz_int reads a leading 0 as octal: digits_ has none.
-  const Integer num(digits_), ten = pow(Integer(10), static_cast<unsigned>(power < 0 ? -power : power));
+  // mpz_int reads a leading 0 as octal: digits() has none.
+  const Integer num(d.digits()), ten = pow(Integer(10), static_cast<unsigned>(power < 0 ? -power : power));
   const exact::Rational r = power < 0 ? exact::Rational(num, ten) : exact::Rational(num * ten);
-  return negative_ ? exact::Rational(-r) : r;
+  return d.negative() ? exact::Rational(-r) : r;
 }
 
 int compare(const Decimal& a, const Decimal& b) {

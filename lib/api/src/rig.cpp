@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/ladder.hpp"
 #include "evaluate_impl.hpp"
 #include "vibrofric/core/dynamics/dynamics.hpp"
@@ -21,7 +23,7 @@ namespace {
 // A typed κ, Ω or ζ exactly; InputError where it is missing or out of range.
 exact::Rational rig_number(const InputValue& in, const char* name, bool zero_allowed) {
   if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
-  const exact::Rational v = in.decimal()->rational(name);
+  const exact::Rational v = rational(*in.decimal(), name);
   if (zero_allowed ? v < 0 : v <= 0)
     throw InputError(std::string(name) + " = " + detail::visible(in.text()) + ": expected a decimal " +
                      (zero_allowed ? ">= 0" : "> 0"));
@@ -80,12 +82,12 @@ Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsign
   }
 }
 
-// The digits of b (at most `most`) on which a and b agree.
-std::string agreed(const mpfr& a, const mpfr& b, int most) {
-  if (a == 0 && b == 0) return "0";
+// b with the significant digits (at most `most`) on which a and b agree.
+Significant agreed(const mpfr& a, const mpfr& b, int most) {
+  if (a == 0 && b == 0) return {mpfr(0), 1};
   for (int d = most; d > 1; --d)
-    if (same_significant(a, b, d)) return format_significant(b, d);
-  return format_significant(b, 1);
+    if (same_significant(a, b, d)) return {b, d};
+  return {b, 1};
 }
 
 // Whether every value of [lo, hi] rounds alike: to the type, or to `digits` digits (mpfr).
@@ -167,7 +169,7 @@ mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const P
     report->flight_fraction = agreed(a.r.flight_fraction, b.r.flight_fraction, most);
     report->amplitude = agreed(a.r.amplitude, b.r.amplitude, most);
     report->largest_backward_slip = agreed(a.r.largest_backward_slip, b.r.largest_backward_slip, most);
-    report->relative_error = format_significant(mpfr(b.r.mu == 0 ? d : mpfr(d / abs(b.r.mu))), 2);
+    report->relative_error = {mpfr(b.r.mu == 0 ? d : mpfr(d / abs(b.r.mu))), 2};
     report->floquet = a.r.floquet;
     report->working_digits = b.digits;
   }
@@ -216,14 +218,14 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
     // At a contact boundary n = 0 by definition, and so s (its computed value is a rounding, ~1e-31).
     const auto& g = solver.contact().segments()[span.segment];
     if ((phi == g.u && g.nu == 0) || (phi == g.v && g.nv == 0)) n = y[2] = 0;
-    static const char* const names[] = {"stick", "slip", "backward", "flight"};
-    RigTraceRow row{format_significant(phi, digits), format_significant(n > 0 ? n : mpfr(0), digits),
-                    format_significant(y[2], digits), format_significant(y[0], digits), format_significant(y[1], digits),
-                    names[static_cast<int>(span.mode)]};
-    // one row where a span ends and the next begins in the same mode with the same values
-    if (!rows.empty() && rows.back().phi == row.phi && rows.back().mode == row.mode && rows.back().n == row.n &&
-        rows.back().s == row.s && rows.back().lag == row.lag && rows.back().lag_rate == row.lag_rate)
-      return;
+    RigTraceRow row{phi, n > 0 ? n : mpfr(0), y[2], y[0], y[1], span.mode};
+    // one row where a span ends and the next begins in the same mode with the same printed values
+    const auto same = [&](const RigTraceRow& r) {
+      return r.mode == row.mode && same_significant(r.phi, row.phi, digits) && same_significant(r.n, row.n, digits) &&
+             same_significant(r.s, row.s, digits) && same_significant(r.lag, row.lag, digits) &&
+             same_significant(r.lag_rate, row.lag_rate, digits);
+    };
+    if (!rows.empty() && same(rows.back())) return;
     rows.push_back(std::move(row));
   };
   const int points = request.points;
@@ -236,6 +238,24 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
     add(span, span.end);
   }
   return rows;
+}
+
+const char* rig_mode_name(RigMode mode) {
+  static const char* const names[] = {"stick", "slip", "backward", "flight"};
+  return names[static_cast<int>(mode)];
+}
+
+Significant detail::type_significant(const mpfr& v, const Precision& precision) {
+  const int digits = output_digits(precision);
+  return visit_number_type(precision.type, [&](auto tag) -> Significant {
+    using Real = typename decltype(tag)::type;
+    if constexpr (is_runtime_precision_v<Real>) {
+      return {v, digits};
+    } else {
+      PrecisionScope exact(static_cast<unsigned>(std::numeric_limits<Real>::digits10 + 20));  // holds the type's value
+      return {mpfr(detail::rounded<Real>(v)), digits};
+    }
+  });
 }
 
 std::string detail::rig_text(const mpfr& v, const Precision& precision) {

@@ -3,6 +3,7 @@
 // the solver at the reference point the claim names; then all but the β_c table again, certified
 // (claims.hpp): exactly in rationals (core/exact.hpp) and by enclosures (core/certified/enclosure.hpp).
 #include "check.hpp"
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/exact.hpp"
 #include "vibrofric/verification/closed_forms.hpp"

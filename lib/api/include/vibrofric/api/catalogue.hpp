@@ -106,9 +106,6 @@ Real parse_real(const std::string& text, const std::string& what) {
   return Decimal::read(text)->template to<Real>();
 }
 
-// The exact rational of decimal text: certification's inputs. Text outside the grammar is
-// check_decimal's refusal; any magnitude is a value (Decimal::rational's limit on its power of ten).
-exact::Rational exact_decimal(const std::string& text, const std::string& what);
 
 namespace detail {
 // Text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').

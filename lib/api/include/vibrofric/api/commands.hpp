@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/input_value.hpp"
 
@@ -22,7 +23,15 @@ namespace vibrofric {
 // contact_fraction (curved: the central spring's, while the body touches), stick_fraction (curved:
 // the springs' stick shares averaged over the row out to the largest contact radius,
 // curved_stick_integral / X of core/curved/curved_trace.hpp).
-using PhysicalOutputs = std::vector<std::pair<std::string, std::string>>;
+// Each a number with its significant digits (the request's; the rig's fractions and lengths those
+// both precisions agree on), or a word (the shape, "inf", the Floquet multiplier's 6 digits).
+struct PhysicalOutput {
+  std::string name;
+  Significant number;
+  std::string word;  // not empty: the output is this text
+  std::string text() const { return word.empty() ? number.text() : word; }
+};
+using PhysicalOutputs = std::vector<PhysicalOutput>;
 
 // A text input (a shape, a unit) as typed (none: not given), and the name the caller knows it by,
 // which every message about it uses (the tool's "--shape", Python's "shape"). Numbers are
@@ -86,6 +95,9 @@ void check_trace_request(const TraceRequest& request);
 // digits each (at digits plus guard digits of working precision). A curved profile: n and s summed
 // over the half-row (N(φ), S(φ) of curved_trace.hpp: ∫₀¹ n dφ / ∫₀¹ s dφ is the mu of `mu
 // --profile`), at the equally spaced phases and the central spring's contact boundaries.
-std::vector<std::array<std::string, 3>> trace_rows(const WaveSpec& wave, const TraceRequest& request);
+struct TraceRow {
+  mpfr phi, n, s;  // each to request.digits significant digits: format_significant(x, digits)
+};
+std::vector<TraceRow> trace_rows(const WaveSpec& wave, const TraceRequest& request);
 
 }  // namespace vibrofric

@@ -3,6 +3,7 @@
 // the reports print (README, "Precision"). The core computes in binary and prints nothing.
 #pragma once
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -90,5 +91,19 @@ std::string format_significant(const Real& x, int digits) {
   }
   return sign + out;
 }
+
+// A result as the API hands it to the front ends: the value and the significant digits it is known
+// to. The front ends print text(); a front end storing numbers takes `value`.
+struct Significant {
+  mpfr value;
+  int digits = 1;
+  std::string text() const {
+    using std::isinf;
+    using std::isnan;
+    if (isnan(value)) return "nan";
+    if (isinf(value)) return value > 0 ? "inf" : "-inf";
+    return format_significant(value, digits);
+  }
+};
 
 }  // namespace vibrofric

@@ -7,7 +7,7 @@
 // (at most 9 exponent digits: no value of the model needs |exponent| ≥ 10^9, and Boost's
 // cpp_bin_float reader overflows from 15 on), and held exactly: sign, significand digits and power
 // of ten, with the text as typed for messages. Each number type takes its correctly rounded value
-// (to<Real>), certification the exact rational (rational), comparisons are exact (compare).
+// (to<Real>), certification the exact rational (exact_input.hpp), comparisons are exact (compare).
 #pragma once
 #include <cstdlib>
 #include <optional>
@@ -15,7 +15,6 @@
 #include <type_traits>
 #include <vector>
 
-#include "vibrofric/core/exact.hpp"
 #include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric {
@@ -46,10 +45,6 @@ class Decimal {
       return Real(text_);
   }
 
-  // The exact value; InputError naming `what` where its power of ten is beyond
-  // ±max_rational_exponent (the rational would have that many digits).
-  static constexpr long max_rational_exponent = 100000;
-  exact::Rational rational(const std::string& what) const;
 
  private:
   std::string text_, digits_;

@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/input_value.hpp"
 #include "vibrofric/core/numbers.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/flat/solver.hpp"
 
 namespace vibrofric {
@@ -25,14 +27,14 @@ struct RigSpec {
   InputValue kappa, omega, zeta = InputValue(*Decimal::read("0"));
 };
 
-// One point's periodic state. Each number is printed with the significant digits (at most the
-// request's) on which the two working precisions agree.
+// One point's periodic state. Each number with the significant digits (at most the request's, and
+// 17) on which the two working precisions agree; the front ends print them (Significant::text).
 struct RigReport {
   std::string mu;  // μ̄/μ0, as evaluate() prints it
-  std::string stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // of the period
-  std::string amplitude;              // (max − min)/2 of X − βφ, in units of μ0 k_z A/k_x
-  std::string largest_backward_slip;  // of the contact point in one phase, same units
-  std::string relative_error;         // estimate: the two precisions apart
+  Significant stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // of the period
+  Significant amplitude;              // (max − min)/2 of X − βφ, in units of μ0 k_z A/k_x
+  Significant largest_backward_slip;  // of the contact point in one phase, same units
+  Significant relative_error;         // estimate: the two precisions apart (2 digits)
   double floquet = 0;                 // largest modulus of the one-period map's multipliers
   int working_digits = 0;             // the higher of the two precisions
 };
@@ -47,10 +49,11 @@ RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& 
                        const Options& solver = {});
 
 // One row of the periodic state for `trace` (the rig's Fig. 2): φ, n, s, the body's lag
-// Y = X − βφ behind the drive and its rate Y' (units μ0 k_z A/k_x, per period), and the mode
-// (stick, slip, backward, flight).
+// Y = X − βφ behind the drive and its rate Y' (units μ0 k_z A/k_x, per period), and the mode.
+const char* rig_mode_name(RigMode mode);  // the front ends' names: "stick", "slip", "backward", "flight"
 struct RigTraceRow {
-  std::string phi, n, s, lag, lag_rate, mode;
+  mpfr phi, n, s, lag, lag_rate;  // each to the request's digits: format_significant(x, digits)
+  RigMode mode;
 };
 
 // Rows over one period, φ ascending: `points` + 1 equally spaced phases and both ends of every
@@ -69,6 +72,8 @@ mpfr rig_value(const WaveSpec& wave, const Point& point, const RigSpec& rig, con
                const Options& solver, RigReport* report = nullptr);
 // The text evaluate() prints for that value: rounded to the type, its significant digits.
 std::string rig_text(const mpfr& value, const Precision& precision);
+// That value rounded to the type (held exactly) with the digits evaluate() prints; mpfr as it is.
+Significant type_significant(const mpfr& value, const Precision& precision);
 }  // namespace detail
 
 }  // namespace vibrofric
