@@ -65,7 +65,7 @@ inline void check_user_wave(const vibrofric::WaveSpec& spec, const std::string& 
       outcomes[i] = clean(input, stage, [&] { values[i] = evaluate(spec, q, {points[i]}, {t, digits}).front(); });
   };
   // Within 1e-12 of the no-contact boundary γ = −max w, rounding may decide contact either way.
-  auto near_boundary = [&](const Point& p) { return !p.gamma.empty() && abs(mpfr(p.gamma) + wm->maximum()) <= mpfr("1e-12"); };
+  auto near_boundary = [&](const Point& p) { return p.gamma.given() && abs(mpfr(p.gamma.text()) + wm->maximum()) <= mpfr("1e-12"); };
   for (Quantity q : {Quantity::mu, Quantity::psi}) {
     const std::vector<Point> points = q == Quantity::mu ? mu_points : std::vector<Point>{{"1", ""}};
     std::vector<Outcome> om, od;
@@ -74,7 +74,7 @@ inline void check_user_wave(const vibrofric::WaveSpec& spec, const std::string& 
     run(NumberType::float64, 17, q, points, od, vd);
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Point& p = points[i];
-      const std::string at = " at beta " + p.beta + " gamma " + p.gamma;
+      const std::string at = " at beta " + p.beta.text() + " gamma " + p.gamma.text();
       for (const auto& [o, v, type] : {std::tuple{om[i], vm[i], "mpfr"}, std::tuple{od[i], vd[i], "double"}}) {
         if (o != Outcome::value) continue;
         const double x = std::strtod(v.c_str(), nullptr);
@@ -89,7 +89,7 @@ inline void check_user_wave(const vibrofric::WaveSpec& spec, const std::string& 
           // evaluate decides contact from the exact input, the 31-digit wave only to 31 digits: at
           // the boundary the reference solve may round the contact away (normal area 0, μ free).
           double normal = 0;
-          if (clean(input, "solve mpfr", [&] { normal = static_cast<double>(solve(*wm, mpfr(p.beta), mpfr(p.gamma)).normal_area); }) !=
+          if (clean(input, "solve mpfr", [&] { normal = static_cast<double>(solve(*wm, mpfr(p.beta.text()), mpfr(p.gamma.text())).normal_area); }) !=
                   Outcome::value &&
               !near_boundary(p))
             finding("evaluate gave a value where solve fails" + at, input);
