@@ -96,7 +96,7 @@ std::optional<mpfr> beta_c_formula(const WaveSpec& spec, const mpfr& gamma) {
     case WaveKind::triangle: return mpfr(4);
     case WaveKind::sawtooth_right: return mpfr(2);
     case WaveKind::power: {
-      const mpfr p(spec.exponent);
+      const mpfr p(spec.exponent.text());
       return gamma >= 0 ? mpfr(4 * p) : mpfr(4 * p * pow(1 + gamma, (p - 1) / p));
     }
     default: return std::nullopt;

@@ -22,7 +22,8 @@ WaveSpec certified_wave(const std::string& wave) {
   WaveSpec f;
   f.kind = WaveKind::fourier;
   f.name = wave;
-  f.harmonics = {{1, "0", "1"}, {2, "0.1", "-0.05"}, {3, "0", "0.333"}};
+  const auto d = [](const char* t) { return *Decimal::read(t); };
+  f.harmonics = {{1, d("0"), d("1")}, {2, d("0.1"), d("-0.05")}, {3, d("0"), d("0.333")}};
   return f;
 }
 

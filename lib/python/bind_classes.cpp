@@ -15,22 +15,31 @@ namespace {
 // Pickle states (Wave and Profile cross to other processes: multiprocessing, concurrent.futures,
 // Dask): every field as written, so a wave read from a file needs no file where it is unpickled,
 // and the wave unpickled is the same wave, value for value. The first item is the state's version.
-py::list text_list(const std::vector<std::string>& v) {
+py::list text_list(const std::vector<Decimal>& v) {
   py::list out;
-  for (const auto& x : v) out.append(x);
+  for (const auto& x : v) out.append(x.text());
   return out;
 }
 std::vector<std::string> texts_of(const py::handle& l) { return l.cast<std::vector<std::string>>(); }
+// A state's decimal, read as any input is ("" for none).
+Decimal decimal_of(const std::string& text, const std::string& what) {
+  return text.empty() ? Decimal() : *InputValue::read(text, "unpickled " + what).decimal();
+}
+std::vector<Decimal> decimals_of(const py::handle& l, const std::string& what) {
+  std::vector<Decimal> out;
+  for (const std::string& t : texts_of(l)) out.push_back(decimal_of(t, what));
+  return out;
+}
 py::list harmonic_list(const std::vector<WaveSpec::Harmonic>& hs) {
   py::list out;
-  for (const auto& h : hs) out.append(py::make_tuple(h.k, h.a, h.b));
+  for (const auto& h : hs) out.append(py::make_tuple(h.k, h.a.text(), h.b.text()));
   return out;
 }
 std::vector<WaveSpec::Harmonic> harmonics_of(const py::handle& l) {
   std::vector<WaveSpec::Harmonic> out;
   for (const auto& h : l.cast<py::list>()) {
     const auto t = h.cast<py::tuple>();
-    out.push_back({t[0].cast<unsigned>(), t[1].cast<std::string>(), t[2].cast<std::string>()});
+    out.push_back({t[0].cast<unsigned>(), decimal_of(t[1].cast<std::string>(), "a_k"), decimal_of(t[2].cast<std::string>(), "b_k")});
   }
   return out;
 }
@@ -122,7 +131,7 @@ void bind_classes(py::module_& m) {
             if (w.spec.kind != WaveKind::fourier) return py::none();
             py::list out;
             for (const auto& h : w.spec.harmonics)
-              out.append(py::make_tuple(h.k, read_decimal<double>(h.a), read_decimal<double>(h.b)));
+              out.append(py::make_tuple(h.k, h.a.to<double>(), h.b.to<double>()));
             return out;
           },
           "fourier waves: [(k, a_k, b_k)] as given or fitted (floats, the raw coefficients before the "
@@ -176,9 +185,11 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
             if (w.fit)
               fit = py::make_tuple(harmonic_list(w.fit->harmonics), w.fit->method, w.fit->rms_residual, w.fit->max_residual,
                                    w.fit->samples);
-            return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.exponent, harmonic_list(s.harmonics),
-                                  text_list(s.samples), text_list(s.times), s.column, s.value_column, s.time_column,
-                                  s.period_from_stamps, fit, w.fitted, s.periods_averaged);
+            return py::make_tuple(pickle_version, static_cast<int>(s.kind), s.name, s.exponent.text(),
+                                  harmonic_list(s.harmonics), text_list(s.samples), text_list(s.times), s.column,
+                                  s.value_column, s.time_column,
+                                  s.period_from_stamps ? s.period_from_stamps->text() : std::string(), fit, w.fitted,
+                                  s.periods_averaged);
           },
           [](const py::tuple& t) {
             check_state(t, 14, "Wave");
@@ -186,14 +197,14 @@ peak_to_peak, scale, factor. Catalogue waves: {'normalisation': 'none (...)'}. N
             WaveSpec& s = w.spec;
             s.kind = static_cast<WaveKind>(t[1].cast<int>());
             s.name = t[2].cast<std::string>();
-            s.exponent = t[3].cast<std::string>();
+            s.exponent = decimal_of(t[3].cast<std::string>(), "exponent");
             s.harmonics = harmonics_of(t[4]);
-            s.samples = texts_of(t[5]);
-            s.times = texts_of(t[6]);
+            s.samples = decimals_of(t[5], "sample");
+            s.times = decimals_of(t[6], "time");
             s.column = t[7].cast<std::string>();
             s.value_column = t[8].cast<std::string>();
             s.time_column = t[9].cast<std::string>();
-            s.period_from_stamps = t[10].cast<std::string>();
+            if (const auto period = t[10].cast<std::string>(); !period.empty()) s.period_from_stamps = decimal_of(period, "period");
             if (!t[11].is_none()) {
               const auto f = t[11].cast<py::tuple>();
               auto fit = std::make_shared<FourierFit>();

@@ -96,11 +96,11 @@ WaveSpec read_wave(const Flags& f) {
   options.periods_name = "--periods";
   WaveSpec wave = parse_wave(need(f, f.wave, "wave"), options);
   const unsigned k = wave.periods_averaged;
-  if (!wave.period_from_stamps.empty())  // a period the file did not state: always said
+  if (wave.period_from_stamps)  // a period the file did not state: always said
     pending_diagnostics += "vibrofric: note: " + detail::visible(wave.name) + " has no end point; its " +
                            std::to_string(wave.samples.size() * k) + " time stamps are uniform, so the samples sit at phi = j/N "
                            "and the period is N dt" + (k > 1 ? "/" + std::to_string(k) : std::string()) + " = " +
-                           format_significant(mpfr(wave.period_from_stamps), 6) + "\n";
+                           format_significant(wave.period_from_stamps->to<mpfr>(), 6) + "\n";
   if (f.diagnostics)
     for (const auto& [name, value] : describe_normalisation(wave, 17))
       pending_diagnostics += "normalisation: " + name + " = " + value + "\n";

@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& h : spec.harmonics) {
     if (h.k > 100000) fuzz::finding("accepted harmonic k > 100000", input);
     if (h.k > 8) return 0;
-    sum += h.k * (std::fabs(std::strtold(h.a.c_str(), nullptr)) + std::fabs(std::strtold(h.b.c_str(), nullptr)));
+    sum += h.k * (std::fabs(std::strtold(h.a.text().c_str(), nullptr)) + std::fabs(std::strtold(h.b.text().c_str(), nullptr)));
   }
   // κ = Σ k(|a_k| + |b_k|)/scale, the scale from the 20-digit wave (fuzz_waves.hpp).
   double kappa = 1;

@@ -23,6 +23,7 @@
 #include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/closed_forms.hpp"
 #include "vibrofric/verification/grid_envelope.hpp"
+#include "../unit/decimals.hpp"
 
 namespace {
 
@@ -337,7 +338,7 @@ TEST(BadInput, QuotedFieldsMayHoldTheSeparator) {
   const WaveSpec w = parse_wave("samples:" + quoted.path());
   EXPECT_EQ(w.time_column, "time [s]");
   EXPECT_EQ(w.value_column, "disp, \"raw\"");
-  EXPECT_EQ(w.samples, (std::vector<std::string>{"0", "1", "0", "-1"}));
+  EXPECT_EQ(texts(w.samples), (std::vector<std::string>{"0", "1", "0", "-1"}));
   // ';' separates where it stands: decimal commas are then fields that are not numbers, named as
   // typed (the first line, holding no number, is read as the header).
   const ScratchFile semicolons("0,5;1,5\n2,5;0,25\n");

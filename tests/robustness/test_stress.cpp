@@ -48,6 +48,7 @@
 #include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/verification/envelope.hpp"
 #include "vibrofric/verification/grid_envelope.hpp"
+#include "../unit/decimals.hpp"
 
 namespace {
 
@@ -152,7 +153,7 @@ Wave random_wave(std::mt19937& rng) {
       w.spec.name = "samples:stress";
       std::vector<Rational> raw;
       for (int y : w.raw_samples) {
-        w.spec.samples.push_back(std::to_string(y));
+        w.spec.samples.push_back(dec(std::to_string(y)));
         raw.push_back(y);
       }
       const env::NormalisedSamples n = env::normalise_samples(raw);
@@ -180,7 +181,7 @@ Wave random_wave(std::mt19937& rng) {
       w.k.push_back(0);
       w.a.push_back(mean / 4096.0);
       w.b.push_back(0);
-      w.spec.harmonics.push_back({0, dyadic(mean, 12), "0"});
+      w.spec.harmonics.push_back({0, dec(dyadic(mean, 12)), dec("0")});
       for (unsigned k = 1; k <= kmax; ++k) {
         if (k < kmax && u(rng) < 0.3) continue;
         const double amp = (0.05 + u(rng)) / std::pow(double(k), decay), phase = kTwoPi * u(rng);
@@ -189,13 +190,13 @@ Wave random_wave(std::mt19937& rng) {
         w.k.push_back(k);
         w.a.push_back(ca / 4096.0);
         w.b.push_back(cb / 4096.0);
-        w.spec.harmonics.push_back({k, dyadic(ca, 12), dyadic(cb, 12)});
+        w.spec.harmonics.push_back({k, dec(dyadic(ca, 12)), dec(dyadic(cb, 12))});
       }
       if (w.k.size() == 1) {  // every harmonic rounded to zero: one plain sine
         w.k.push_back(1);
         w.a.push_back(0);
         w.b.push_back(1);
-        w.spec.harmonics.push_back({1, "0", "1"});
+        w.spec.harmonics.push_back({1, dec("0"), dec("1")});
       }
       w.spec.kind = WaveKind::fourier;
       w.spec.name = "fourier:stress";
@@ -209,7 +210,7 @@ Wave random_wave(std::mt19937& rng) {
     w.text += "}";
   } else if (w.family == Family::fourier) {
     w.text = "fourier {";
-    for (const auto& h : w.spec.harmonics) w.text += " " + std::to_string(h.k) + " " + h.a + " " + h.b + ";";
+    for (const auto& h : w.spec.harmonics) w.text += " " + std::to_string(h.k) + " " + h.a.text() + " " + h.b.text() + ";";
     w.text += " }";
   } else {
     w.text = w.spec.name;

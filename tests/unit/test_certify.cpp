@@ -25,6 +25,7 @@
 #include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/flat/solver.hpp"
 #include "correct_rounding.hpp"
+#include "decimals.hpp"
 
 namespace {
 
@@ -92,7 +93,7 @@ Interval enclosure_at_256_bits(const WaveSpec& spec, Quantity q, const Rational&
     auto it = shapes.find(spec.name);
     if (it == shapes.end()) {
       std::vector<certified::RationalHarmonic> series;
-      for (const auto& h : spec.harmonics) series.push_back({h.k, exact_decimal(h.a, "a"), exact_decimal(h.b, "b")});
+      for (const auto& h : spec.harmonics) series.push_back({h.k, rational(h.a, "a"), rational(h.b, "b")});
       it = shapes.emplace(spec.name, certified::FourierShape(series, 256)).first;
     }
     const certified::FourierEnclosure e = certified::enclose_fourier(it->second, beta, q == Quantity::psi ? Rational(2) : gamma);
@@ -101,7 +102,7 @@ Interval enclosure_at_256_bits(const WaveSpec& spec, Quantity q, const Rational&
   const Rational g = q == Quantity::psi ? Rational(1) : gamma;
   const certified::SineEnclosure e = spec.kind == WaveKind::sine
                                          ? certified::enclose_sine(beta, g, 256)
-                                         : certified::enclose_power(exact_decimal(spec.exponent, "p"), beta, g, 256);
+                                         : certified::enclose_power(rational(spec.exponent, "p"), beta, g, 256);
   return q == Quantity::psi ? e.lost_area : e.mu;
 }
 
@@ -155,7 +156,7 @@ std::vector<WaveSpec> certified_waves_to_test(std::mt19937& rng) {
   s.kind = WaveKind::samples;
   s.name = "samples:noisy";
   std::normal_distribution<double> noise(0, 0.03);
-  for (int j = 0; j < 60; ++j) s.samples.push_back(format_significant(2 * std::sin(6.283185307179586 * j / 60) + noise(rng), 4));
+  for (int j = 0; j < 60; ++j) s.samples.push_back(dec(format_significant(2 * std::sin(6.283185307179586 * j / 60) + noise(rng), 4)));
   waves.push_back(s);
   // With time stamps (non-uniform phases), 25 samples.
   WaveSpec t = s;
@@ -163,7 +164,7 @@ std::vector<WaveSpec> certified_waves_to_test(std::mt19937& rng) {
   t.samples.resize(25);
   double time = 0;
   for (int j = 0; j <= 25; ++j) {
-    t.times.push_back(format_significant(time, 6));
+    t.times.push_back(dec(format_significant(time, 6)));
     time += std::uniform_real_distribution<double>(0.5, 1.5)(rng);
   }
   waves.push_back(t);
@@ -171,12 +172,12 @@ std::vector<WaveSpec> certified_waves_to_test(std::mt19937& rng) {
   WaveSpec f;
   f.kind = WaveKind::fourier;
   f.name = "fourier:three";
-  f.harmonics = {{1, "0", "1"}, {2, "0.1", "-0.05"}, {3, "0", "0.333"}};
+  f.harmonics = {{1, dec("0"), dec("1")}, {2, dec("0.1"), dec("-0.05")}, {3, dec("0"), dec("0.333")}};
   waves.push_back(f);
   f.name = "fourier:random";
   f.harmonics.clear();
   for (unsigned k = 1; k <= 6; ++k)
-    f.harmonics.push_back({k, uniform(rng, -1, 1, 3), uniform(rng, -1, 1, 3)});
+    f.harmonics.push_back({k, dec(uniform(rng, -1, 1, 3)), dec(uniform(rng, -1, 1, 3))});
   waves.push_back(f);
   return waves;
 }

@@ -49,6 +49,7 @@ struct Signal {
 std::string dec30(const mpfr& x) { return x.str(30, std::ios_base::scientific); }
 
 double number(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
+double number(const vibrofric::Decimal& d) { return number(d.text()); }
 
 // The recovered coefficients against the signal's. Bound 4 eps × amplitude: the samples carry 30
 // digits (1e-30 relative), the fit works at ≥ 60 digits, and the 17-digit rounding of a
@@ -147,8 +148,8 @@ TEST(Fit, FittedFileRoundTrips) {
   ASSERT_EQ(back.harmonics.size(), 4u);
   for (std::size_t k = 0; k < 4; ++k) {
     EXPECT_EQ(back.harmonics[k].k, fit.harmonics[k].k);
-    EXPECT_EQ(back.harmonics[k].a, fit.harmonics[k].a);
-    EXPECT_EQ(back.harmonics[k].b, fit.harmonics[k].b);
+    EXPECT_EQ(back.harmonics[k].a.text(), fit.harmonics[k].a.text());
+    EXPECT_EQ(back.harmonics[k].b.text(), fit.harmonics[k].b.text());
   }
   const auto w = make_waveform<double>(back);
   const double offset = w->normalisation().offset, scale = w->normalisation().scale;

@@ -69,7 +69,8 @@ WaveSpec fitted_wave(const FourierFit& fit, const std::string& label) {
   // The rows 'k a_k b_k' of the fit's fourier file, from its coefficients as stated (17 digits),
   // not from the file's text: row k + 1 is label[k].
   detail::Table table;
-  for (const auto& h : fit.harmonics) table.rows.push_back({static_cast<int>(h.k) + 1, {std::to_string(h.k), h.a, h.b}});
+  for (const auto& h : fit.harmonics)
+    table.rows.push_back({static_cast<int>(h.k) + 1, {std::to_string(h.k), h.a.text(), h.b.text()}});
   WaveSpec spec = detail::fourier_from_table(table, detail::array_source(label, 1));
   spec.name = label;
   return spec;

@@ -84,22 +84,17 @@ bool is_time_name(const std::string& name) {
 }
 
 // The value of a decimal at 60 significant digits: decimals of up to 60 digits compare exactly.
-mpfr exact_value(const std::string& text) {
+mpfr exact_value(const Decimal& d) {
   PrecisionScope scope(60);
-  return mpfr(text);
+  return d.to<mpfr>();
 }
 
-// The unit of the last written digit of a decimal: "2.50e-07" → 1e-9, "12" → 1, "0.5" → 0.1; 0
-// for a zero, which a DAQ's first stamp is exactly.
-mpfr last_place(const std::string& text) {
+// The unit of the last written digit of a decimal: "2.50e-07" → 1e-9, "12" → 1, "0.5" → 0.1 (the
+// power of ten of its significand); 0 for a zero, which a DAQ's first stamp is exactly.
+mpfr last_place(const Decimal& d) {
   PrecisionScope scope(60);
-  if (exact_value(text) == 0) return mpfr(0);
-  const auto e = text.find_first_of("eE");
-  const std::string mantissa = text.substr(0, e);
-  const long exponent = e == std::string::npos ? 0 : std::stol(text.substr(e + 1));
-  const auto dot = mantissa.find('.');
-  const long fraction = dot == std::string::npos ? 0 : static_cast<long>(mantissa.size() - dot - 1);
-  return pow(mpfr(10), exponent - fraction);
+  if (d.is_zero()) return mpfr(0);
+  return pow(mpfr(10), d.exponent());
 }
 
 // dt if the stamps t_0 … t_{N−1} are t_0 + j·dt, dt = (t_{N−1} − t_0)/(N − 1), else none. Each
@@ -109,7 +104,7 @@ mpfr last_place(const std::string& text) {
 // (u_0 + u_{N−1})/(2(N − 1)) of dt, so t_j − t_0 − j·dt is at most (u_j + 2u_0 + u_{N−1})/2;
 // and the printed digits resolve the step (u_j ≤ dt/10), else 0, 1, 3 would pass as 0, 1.5, 3
 // rounded.
-std::optional<mpfr> uniform_step(const std::vector<std::string>& t) {
+std::optional<mpfr> uniform_step(const std::vector<Decimal>& t) {
   PrecisionScope scope(60);
   const std::size_t n = t.size();
   const mpfr t0 = exact_value(t.front()), u0 = last_place(t.front()), un = last_place(t.back());
@@ -126,38 +121,30 @@ std::optional<mpfr> uniform_step(const std::vector<std::string>& t) {
 // The smallest p dividing n with y_j = y_{j+p} for every j (n if none), and with a time column
 // also t_{j+p} − t_j the same for every j (the signal repeats, not only its values): doubles
 // filter the candidates, 60 digits confirm them.
-std::size_t smallest_period(const std::vector<std::string>& y, const std::vector<std::string>& t) {
+std::size_t smallest_period(const std::vector<Decimal>& y, const std::vector<Decimal>& t) {
   const std::size_t n = y.size();
-  std::vector<double> v, tv;
+  std::vector<double> v;
   v.reserve(n);
-  for (const auto& x : y) v.push_back(std::strtod(x.c_str(), nullptr));
-  for (const auto& x : t) tv.push_back(std::strtod(x.c_str(), nullptr));
+  for (const auto& x : y) v.push_back(x.to<double>());
   for (std::size_t p = 1; p < n; ++p) {
     if (n % p) continue;
     bool same = true;
     for (std::size_t j = 0; j + p < n && same; ++j) same = v[j] == v[j + p];
     if (!same) continue;
     PrecisionScope scope(60);
-    for (std::size_t j = 0; j + p < n && same; ++j) same = mpfr(y[j]) == mpfr(y[j + p]);
+    for (std::size_t j = 0; j + p < n && same; ++j) same = y[j].to<mpfr>() == y[j + p].to<mpfr>();
     if (same && !t.empty()) {
-      const mpfr shift = mpfr(t[p]) - mpfr(t[0]);
-      for (std::size_t j = 0; j + p < n && same; ++j) same = mpfr(t[j + p]) - mpfr(t[j]) == shift;
+      const mpfr shift = t[p].to<mpfr>() - t[0].to<mpfr>();
+      for (std::size_t j = 0; j + p < n && same; ++j) same = t[j + p].to<mpfr>() - t[j].to<mpfr>() == shift;
     }
     if (same) return p;
   }
   return n;
 }
 
-// Σ texts exactly, as a decimal "Me-E": the K periods of a record summed sample by sample, which
-// the normalisation makes the wave of their mean. The texts are samples the reader has checked.
-std::string decimal_sum(const std::vector<const std::string*>& texts) {
-  std::vector<Decimal> values;
-  values.reserve(texts.size());
-  for (const std::string* t : texts) values.push_back(*Decimal::read(*t));
-  std::vector<const Decimal*> terms;
-  for (const Decimal& d : values) terms.push_back(&d);
-  return exact_sum_text(terms);
-}
+// Σ terms exactly, as a decimal "Me-E": the K periods of a record summed sample by sample, which
+// the normalisation makes the wave of their mean.
+Decimal decimal_sum(const std::vector<const Decimal*>& terms) { return *Decimal::read(exact_sum_text(terms)); }
 
 // How far a record of N samples (uniform phases, linear between) is from repeating after `lag`
 // samples: r(L) = rms(y(x) − y(x + L)) / rms(y − ȳ) over up to 20,000 equally spaced x (every
@@ -166,9 +153,9 @@ std::string decimal_sum(const std::vector<const std::string*>& texts) {
 // (a sine by N/2: 2).
 class Repetition {
  public:
-  explicit Repetition(const std::vector<std::string>& y) : n_(y.size()), m_(std::min<std::size_t>(n_, 20000)) {
+  explicit Repetition(const std::vector<Decimal>& y) : n_(y.size()), m_(std::min<std::size_t>(n_, 20000)) {
     v_.reserve(n_);
-    for (const auto& x : y) v_.push_back(std::strtod(x.c_str(), nullptr));
+    for (const auto& x : y) v_.push_back(x.to<double>());
     step_ = static_cast<double>(n_) / static_cast<double>(m_);
     double mean = 0;
     for (std::size_t i = 0; i < m_; ++i) mean += at(static_cast<double>(i) * step_) / static_cast<double>(m_);
@@ -201,7 +188,7 @@ class Repetition {
 // j = 1 … 7, about √2 for any signal: one period of a smooth signal, shifted by a small N/K,
 // differs little, but no less than by those. The largest K up to min(64, N/8) that passes, with
 // its r; none where no K does (or N < 16).
-std::optional<std::pair<std::size_t, double>> repeated_periods(const std::vector<std::string>& y) {
+std::optional<std::pair<std::size_t, double>> repeated_periods(const std::vector<Decimal>& y) {
   const std::size_t n = y.size();
   if (n < 16) return std::nullopt;
   const Repetition rep(y);
@@ -343,24 +330,17 @@ std::string detail::visible(const std::string& s) {
 
 int detail::distinct_digits(const WaveSpec& spec) {
   int distinct = 1;
-  for (const std::string& t : spec.samples) {
-    int d = 0;
-    for (const char c : t) {
-      if (c == 'e' || c == 'E') break;
-      if (c >= '0' && c <= '9') ++d;
-    }
-    distinct = std::max(distinct, d);
-  }
+  for (const Decimal& y : spec.samples) distinct = std::max(distinct, y.written_digits());
   return distinct;
 }
 
-mpfr detail::sample_value(const WaveSpec& spec, std::size_t j) { return mpfr(spec.samples[j]); }
+mpfr detail::sample_value(const WaveSpec& spec, std::size_t j) { return spec.samples[j].to<mpfr>(); }
 
 std::function<mpfr(std::size_t)> detail::sample_phase(const WaveSpec& spec) {
   if (spec.times.empty()) return {};
   return [&spec](std::size_t j) {
-    const mpfr t0(spec.times.front());
-    return mpfr((mpfr(spec.times[j]) - t0) / (mpfr(spec.times.back()) - t0));
+    const mpfr t0 = spec.times.front().to<mpfr>();
+    return mpfr((spec.times[j].to<mpfr>() - t0) / (spec.times.back().to<mpfr>() - t0));
   };
 }
 
@@ -431,9 +411,8 @@ WaveSpec detail::fourier_from_table(const Table& table, const RowSource& source)
     if (k > max_harmonic_index)
       throw InputError(where + ": harmonic k = " + tok[0] + ": expected k ≤ " + std::to_string(max_harmonic_index));
     if (!seen.insert(k).second) throw InputError(where + ": harmonic k = " + tok[0] + " given twice");
-    check_decimal(tok[1], where + " a_" + tok[0]);
-    check_decimal(tok[2], where + " b_" + tok[0]);
-    s.harmonics.push_back({k, tok[1], tok[2]});
+    s.harmonics.push_back({k, *InputValue::read(tok[1], where + " a_" + tok[0]).decimal(),
+                           *InputValue::read(tok[2], where + " b_" + tok[0]).decimal()});
   }
   if (s.harmonics.empty()) throw InputError("file " + quoted(visible(source.name)) + " has no coefficients: expected lines 'k a_k b_k'");
   return s;
@@ -450,7 +429,7 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
     for (const auto& t : tok) check_decimal(t, source.where(line) + " sample");
   std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
   if (!chosen && rows.size() == 1 && table.header.empty()) {
-    s.samples = rows[0].second;  // one line of values: one period
+    for (const auto& t : rows[0].second) s.samples.push_back(*Decimal::read(t));  // one line of values: one period
   } else {
     for (const auto& [line, tok] : rows)
       if (tok.size() != columns)
@@ -514,8 +493,8 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
                        "1-based index (" + options.column_name + ")");
     }
     for (const auto& [line, tok] : rows) {
-      if (tc != std::string::npos) s.times.push_back(tok[tc]);
-      s.samples.push_back(tok[vc]);
+      if (tc != std::string::npos) s.times.push_back(*Decimal::read(tok[tc]));
+      s.samples.push_back(*Decimal::read(tok[vc]));
     }
     if (!header.empty() && vc < header.size()) s.value_column = header[vc];
     if (tc != std::string::npos) s.time_column = header[tc];
@@ -528,29 +507,29 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
     PrecisionScope scope(60);
     for (std::size_t j = 1; j < s.times.size(); ++j)
       if (!(exact_value(s.times[j]) > exact_value(s.times[j - 1])))
-        throw InputError(source.name + ": time " + quoted(visible(s.times[j])) + " after " + quoted(visible(s.times[j - 1])) +
+        throw InputError(source.name + ": time " + quoted(visible(s.times[j].text())) + " after " + quoted(visible(s.times[j - 1].text())) +
                          ": expected strictly increasing time stamps");
     const mpfr period = exact_value(s.times.back()) - exact_value(s.times.front());
     for (std::size_t j = 1; j < s.times.size(); ++j)
       if (exact_value(s.times[j]) - exact_value(s.times[j - 1]) < period * mpfr("1e-12"))
-        throw InputError(source.name + ": time stamps " + quoted(visible(s.times[j - 1])) + " and " + quoted(visible(s.times[j])) +
+        throw InputError(source.name + ": time stamps " + quoted(visible(s.times[j - 1].text())) + " and " + quoted(visible(s.times[j].text())) +
                          " are closer than 1e-12 of the period: expected distinct phases");
     if (exact_value(s.samples.back()) == exact_value(s.samples.front())) {
       s.samples.pop_back();  // the end point: its time stays, as the period's end
     } else if (const auto dt = uniform_step(s.times)) {
       // No end point, the stamps of a DAQ (t_j = t_0 + j·dt): the samples at φ = j/N, period N·dt.
-      s.period_from_stamps = format_significant(mpfr(*dt * s.samples.size()), 40);
+      s.period_from_stamps = Decimal::read(format_significant(mpfr(*dt * s.samples.size()), 40));  // defined to 40 digits
       s.times.clear();
     } else {
-      throw InputError(source.name + ": the last value " + quoted(visible(s.samples.back())) + " differs from the first " +
-                       quoted(visible(s.samples.front())) +
+      throw InputError(source.name + ": the last value " + quoted(visible(s.samples.back().text())) + " differs from the first " +
+                       quoted(visible(s.samples.front().text())) +
                        " and the time stamps are not uniform, so the period is unknown: append the line at time t0 + "
                        "period with the first value (the end point), or give uniform stamps t_j = t0 + j dt (period N dt)");
     }
   }
   // Several periods in one record (uniform phases): averaged where the caller says how many,
   // refused where they are recognised and the caller has not said.
-  const bool uniform_phases = s.times.empty() || uniform_step(std::vector<std::string>(s.times.begin(), s.times.end())).has_value();
+  const bool uniform_phases = s.times.empty() || uniform_step(s.times).has_value();
   const std::size_t n = s.samples.size();
   if (options.periods < 0 || options.periods > max_record_periods)
     throw InputError(options.periods_name + " = " + std::to_string(options.periods) + ": expected an integer from 1 to " +
@@ -575,17 +554,17 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
                          (seen ? " (the record looks like " + std::to_string(seen->first) + ")" : ""));
       }
     }
-    std::vector<std::string> folded;
+    std::vector<Decimal> folded;
     for (std::size_t j = 0; j < n / k; ++j) {
-      std::vector<const std::string*> same_phase;
+      std::vector<const Decimal*> same_phase;
       for (std::size_t i = 0; i < k; ++i) same_phase.push_back(&s.samples[j + i * (n / k)]);
       folded.push_back(decimal_sum(same_phase));
     }
     s.samples = std::move(folded);
     if (!s.times.empty()) s.times.resize(n / k + 1);  // t_0 … t_{N/K}: uniform, the first period
-    if (!s.period_from_stamps.empty()) {
+    if (s.period_from_stamps) {
       PrecisionScope scope(60);
-      s.period_from_stamps = format_significant(mpfr(mpfr(s.period_from_stamps) / static_cast<long>(k)), 40);
+      s.period_from_stamps = Decimal::read(format_significant(mpfr(s.period_from_stamps->to<mpfr>() / static_cast<long>(k)), 40));
     }
     s.periods_averaged = static_cast<unsigned>(k);
   } else if (options.periods == 0 && uniform_phases) {
@@ -604,7 +583,7 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
   if (period == 1)
     throw InputError("sampled waveform " + quoted(visible(source.wave)) + " is constant: expected a signal with non-zero amplitude");
   if (s.times.empty() && s.samples.size() >= 3 && exact_value(s.samples.back()) == exact_value(s.samples.front())) {
-    throw InputError(source.name + ": the last sample " + quoted(visible(s.samples.back())) +
+    throw InputError(source.name + ": the last sample " + quoted(visible(s.samples.back().text())) +
                      " repeats the first: a one-column file holds one period without its end point (y_j at phi = j/N); "
                      "remove the last value, or add a time column (then the end point is expected)");
   }
@@ -627,7 +606,7 @@ std::string column_unit(const std::string& header) {
 }
 
 std::optional<StampedPeriod> stamped_period(const WaveSpec& wave) {
-  if (wave.kind != WaveKind::samples || (wave.times.empty() && wave.period_from_stamps.empty())) return std::nullopt;
+  if (wave.kind != WaveKind::samples || (wave.times.empty() && !wave.period_from_stamps)) return std::nullopt;
   const std::string unit = column_unit(wave.time_column);
   static const std::map<std::string, const char*> seconds{{"s", "1"},     {"sec", "1"},   {"ms", "1e-3"}, {"us", "1e-6"},
                                                           {"\xC2\xB5s", "1e-6"}, {"\xCE\xBCs", "1e-6"}, {"ns", "1e-9"},
@@ -637,8 +616,8 @@ std::optional<StampedPeriod> stamped_period(const WaveSpec& wave) {
   p.unit = p.assumed ? "s" : unit;
   const auto it = seconds.find(p.unit);
   if (it == seconds.end()) return std::nullopt;
-  const mpfr span = !wave.period_from_stamps.empty() ? mpfr(wave.period_from_stamps)
-                                                     : mpfr(mpfr(wave.times.back()) - mpfr(wave.times.front()));
+  const mpfr span = wave.period_from_stamps ? wave.period_from_stamps->to<mpfr>()
+                                            : mpfr(wave.times.back().to<mpfr>() - wave.times.front().to<mpfr>());
   p.seconds = span * mpfr(it->second);
   return p;
 }
@@ -671,10 +650,9 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
   const std::string head = text.substr(0, colon), arg = colon == std::string::npos ? "" : text.substr(colon + 1);
   if (colon != std::string::npos && head == "power") {
     s.kind = WaveKind::power;
-    s.exponent = arg;
-    check_decimal(arg, "power exponent p in " + quoted(visible(text)));
-    // strtold, not stold: an exponent that underflows (power:1e-5000) is 0 here, not an exception.
-    if (!(std::strtold(arg.c_str(), nullptr) >= 1))
+    s.exponent = *InputValue::read(arg, "power exponent p in " + quoted(visible(text))).decimal();
+    // An exponent that underflows (power:1e-5000) is 0 here, not an exception.
+    if (!(s.exponent.to<long double>() >= 1))
       throw InputError("power exponent p = " + quoted(arg) + ": expected p ≥ 1");
     return s;
   }
@@ -718,18 +696,18 @@ std::vector<std::pair<std::string, std::string>> describe_normalisation(const Wa
       wave.name, wave.samples.size(), [&](std::size_t j) { return detail::sample_value(wave, j); },
       detail::distinct_digits(wave), detail::sample_phase(wave), static_cast<int>(guarded));
   std::string period = "1 (uniform phases)";
-  if (!wave.period_from_stamps.empty()) {
-    period = text(mpfr(wave.period_from_stamps));
+  if (wave.period_from_stamps) {
+    period = text(wave.period_from_stamps->to<mpfr>());
   } else if (!wave.times.empty()) {
     // t_N − t_0 with the digits both stamps share cancelled: estimated at 60 digits first.
     int cancelled = 0;
     {
       PrecisionScope scope(60);
-      const mpfr a(wave.times.front()), b(wave.times.back());
+      const mpfr a = wave.times.front().to<mpfr>(), b = wave.times.back().to<mpfr>();
       cancelled = static_cast<int>(std::ceil(static_cast<double>(log10(mpfr(std::max(abs(a), abs(b)) / (b - a))))));
     }
     PrecisionScope scope(guarded + static_cast<unsigned>(std::max(cancelled, 0)));
-    period = text(mpfr(mpfr(wave.times.back()) - mpfr(wave.times.front())));
+    period = text(mpfr(wave.times.back().to<mpfr>() - wave.times.front().to<mpfr>()));
   }
   const std::string column =
       !wave.value_column.empty() ? wave.value_column : !wave.column.empty() ? wave.column : std::string("1");
@@ -744,11 +722,11 @@ std::vector<std::pair<std::string, std::string>> describe_normalisation(const Wa
   std::vector<std::pair<std::string, std::string>> rows{{"samples", std::to_string(wave.samples.size())}};
   if (k > 1) rows.emplace_back("periods", std::to_string(k) + " (averaged sample by sample)");
   for (auto& row : std::vector<std::pair<std::string, std::string>>{
-          {"end_point", !wave.period_from_stamps.empty()
+          {"end_point", wave.period_from_stamps
                             ? "none (uniform stamps: period N dt" + (k > 1 ? "/" + std::to_string(k) : std::string()) + ")"
                         : wave.times.empty() ? "none"
                                              : "dropped"},
-          {"time_column", wave.times.empty() && wave.period_from_stamps.empty() ? "none"
+          {"time_column", wave.times.empty() && !wave.period_from_stamps ? "none"
                           : wave.time_column.empty()                          ? "unnamed"
                                                                               : wave.time_column},
           {"period", period},

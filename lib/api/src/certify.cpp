@@ -24,16 +24,16 @@ exact::Wave exact_wave(const WaveSpec& spec) {
     case WaveKind::sawtooth_left: return exact::sawtooth_left();
     case WaveKind::square: return exact::square();
     case WaveKind::power:
-      if (exact_decimal(spec.exponent, "power exponent p") == 1) return exact::power_one();
+      if (rational(spec.exponent, "power exponent p") == 1) return exact::power_one();
       break;
     case WaveKind::samples: {
       std::vector<Rational> y, phases;
-      for (const std::string& t : spec.samples) y.push_back(exact_decimal(t, spec.name + " sample"));
+      for (const Decimal& t : spec.samples) y.push_back(rational(t, spec.name + " sample"));
       if (!spec.times.empty()) {  // t_0 … t_N: φ_j = (t_j − t_0)/(t_N − t_0)
-        const Rational t0 = exact_decimal(spec.times.front(), spec.name + " time"),
-                       period = exact_decimal(spec.times.back(), spec.name + " time") - t0;
+        const Rational t0 = rational(spec.times.front(), spec.name + " time"),
+                       period = rational(spec.times.back(), spec.name + " time") - t0;
         for (std::size_t j = 0; j < spec.samples.size(); ++j)
-          phases.push_back((exact_decimal(spec.times[j], spec.name + " time") - t0) / period);
+          phases.push_back((rational(spec.times[j], spec.name + " time") - t0) / period);
       }
       return exact::samples(spec.name, y, phases);
     }
@@ -163,14 +163,14 @@ Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
   // The sine, power:P (P ≠ 1) and Fourier series are enclosed per point (core/certified/enclosure.hpp);
   // the others exactly.
   if (wave.kind == WaveKind::power) {
-    const Rational p = exact_decimal(wave.exponent, "power exponent p");
+    const Rational p = rational(wave.exponent, "power exponent p");
     if (p != 1) power_ = p;
   }
   if (wave.kind == WaveKind::fourier) {
     fourier_.emplace();
     for (const WaveSpec::Harmonic& h : wave.harmonics)
-      fourier_->push_back({h.k, exact_decimal(h.a, wave.name + " coefficient a_" + std::to_string(h.k)),
-                           exact_decimal(h.b, wave.name + " coefficient b_" + std::to_string(h.k))});
+      fourier_->push_back({h.k, rational(h.a, wave.name + " coefficient a_" + std::to_string(h.k)),
+                           rational(h.b, wave.name + " coefficient b_" + std::to_string(h.k))});
   }
   name_ = detail::visible(wave.name);
   if (wave.kind != WaveKind::sine && !power_ && !fourier_) {

@@ -32,12 +32,12 @@ std::vector<PhysicalRequest::Member> PhysicalRequest::inputs() {
 namespace {
 // Everything that defines a wave, for a key: its name and, for a user wave, its numbers as read.
 std::string wave_fingerprint(const WaveSpec& w) {
-  std::string out = std::to_string(static_cast<int>(w.kind)) + " " + w.name + " " + w.exponent + " " + w.column + " " +
-                    w.period_from_stamps;
-  for (const auto& h : w.harmonics) out += "\n" + std::to_string(h.k) + " " + h.a + " " + h.b;
-  for (const auto& y : w.samples) out += "\n" + y;
+  std::string out = std::to_string(static_cast<int>(w.kind)) + " " + w.name + " " + w.exponent.text() + " " + w.column +
+                    " " + (w.period_from_stamps ? w.period_from_stamps->text() : std::string());
+  for (const auto& h : w.harmonics) out += "\n" + std::to_string(h.k) + " " + h.a.text() + " " + h.b.text();
+  for (const auto& y : w.samples) out += "\n" + y.text();
   out += "\nt";
-  for (const auto& t : w.times) out += "\n" + t;
+  for (const auto& t : w.times) out += "\n" + t.text();
   return out;
 }
 }  // namespace

@@ -5,6 +5,7 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include <algorithm>
+#include <ostream>
 
 #include "vibrofric/core/errors.hpp"
 
@@ -47,11 +48,28 @@ std::optional<Decimal> Decimal::read(const std::string& t) {
     if (negative_exponent) exponent = -exponent;
   }
   if (i != n) return std::nullopt;
-  significand.erase(0, std::min(significand.find_first_not_of('0'), significand.size()));
   d.text_ = t;
-  d.digits_ = std::move(significand);
+  d.zero_ = significand.find_first_not_of('0') == std::string::npos;
   d.exponent_ = exponent - scale;
   return d;
+}
+
+std::string Decimal::digits() const {
+  std::string out;
+  for (const char c : text_) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '0' && c <= '9' && (c != '0' || !out.empty())) out += c;
+  }
+  return out;
+}
+
+int Decimal::written_digits() const {
+  int n = 0;
+  for (const char c : text_) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '0' && c <= '9') ++n;
+  }
+  return n;
 }
 
 exact::Rational rational(const Decimal& d, const std::string& what) {
@@ -66,6 +84,8 @@ exact::Rational rational(const Decimal& d, const std::string& what) {
   const exact::Rational r = power < 0 ? exact::Rational(num, ten) : exact::Rational(num * ten);
   return d.negative() ? exact::Rational(-r) : r;
 }
+
+std::ostream& operator<<(std::ostream& out, const Decimal& d) { return out << d.text(); }
 
 int compare(const Decimal& a, const Decimal& b) {
   const int sa = a.is_zero() ? 0 : (a.negative() ? -1 : 1), sb = b.is_zero() ? 0 : (b.negative() ? -1 : 1);

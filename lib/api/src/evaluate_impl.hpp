@@ -72,7 +72,7 @@ class ThreadWaves {
   // "" for a wave built per call; else the key that names it.
   static std::string key(const WaveSpec& spec) {
     if (spec.kind == WaveKind::samples || spec.kind == WaveKind::fourier) return "";
-    return spec.kind == WaveKind::power ? "power:" + spec.exponent : spec.name;
+    return spec.kind == WaveKind::power ? "power:" + spec.exponent.text() : spec.name;
   }
   std::shared_ptr<const Waveform<Real>> wave(const WaveSpec& spec, const std::string& key, int digits) {
     auto& slot = waves_[{key, digits}];

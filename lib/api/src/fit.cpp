@@ -1,4 +1,5 @@
 #include "vibrofric/api/fit.hpp"
+#include "vibrofric/api/input_value.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +28,9 @@ constexpr double max_condition = 1e12;
 // written as 0: its digits would be rounding noise.
 unsigned working_digits(const WaveSpec& wave, std::size_t unknowns) {
   PrecisionScope scope(60);
-  mpfr lo(wave.samples.front()), hi = lo, big = abs(lo);
+  mpfr lo = wave.samples.front().to<mpfr>(), hi = lo, big = abs(lo);
   for (const auto& t : wave.samples) {
-    const mpfr v(t);
+    const mpfr v = t.to<mpfr>();
     if (v < lo) lo = v;
     if (v > hi) hi = v;
     if (abs(v) > big) big = abs(v);
@@ -93,7 +94,7 @@ FourierFit fit_fourier(const WaveSpec& wave, unsigned harmonics) {
   PrecisionScope scope(digits);
   std::vector<mpfr> y(n), phi;
   // Averaged periods: a sample is the sum of K values, the fit is of their mean.
-  for (std::size_t j = 0; j < n; ++j) y[j] = mpfr(mpfr(wave.samples[j]) / static_cast<long>(wave.periods_averaged));
+  for (std::size_t j = 0; j < n; ++j) y[j] = mpfr(wave.samples[j].to<mpfr>() / static_cast<long>(wave.periods_averaged));
 
   std::vector<mpfr> a(k_count + 1, mpfr(0)), b(k_count + 1, mpfr(0));
   std::ostringstream method;
@@ -221,11 +222,12 @@ FourierFit fit_fourier(const WaveSpec& wave, unsigned harmonics) {
     if (abs(b[k]) <= noise) b[k] = 0;
     const std::string at = format_significant(a[k], coefficient_digits);
     const std::string bt = k == 0 ? std::string("0") : format_significant(b[k], coefficient_digits);
-    check_decimal(at, "fitted coefficient a_" + std::to_string(k) + " of " + quoted(detail::visible(wave.name)));
-    check_decimal(bt, "fitted coefficient b_" + std::to_string(k) + " of " + quoted(detail::visible(wave.name)));
-    fit.harmonics.push_back({static_cast<unsigned>(k), at, bt});
-    aw[k] = mpfr(at);
-    bw[k] = mpfr(bt);
+    // The coefficients are the 17-digit decimals written: read back as the file's reader would.
+    const Decimal ad = *InputValue::read(at, "fitted coefficient a_" + std::to_string(k) + " of " + quoted(detail::visible(wave.name))).decimal();
+    const Decimal bd = *InputValue::read(bt, "fitted coefficient b_" + std::to_string(k) + " of " + quoted(detail::visible(wave.name))).decimal();
+    fit.harmonics.push_back({static_cast<unsigned>(k), ad, bd});
+    aw[k] = ad.to<mpfr>();
+    bw[k] = bd.to<mpfr>();
   }
   mpfr sum2 = 0, worst = 0;
   for (std::size_t j = 0; j < n; ++j) {
@@ -250,11 +252,7 @@ std::string fourier_file_text(const FourierFit& fit, const std::string& source) 
       << "# residual of the samples, in their units: rms " << detail::visible(fit.rms_residual) << ", max "
       << detail::visible(fit.max_residual) << "\n"
       << "k a_k b_k\n";
-  for (const auto& h : fit.harmonics) {
-    check_decimal(h.a, "coefficient a_" + std::to_string(h.k) + " to write");
-    check_decimal(h.b, "coefficient b_" + std::to_string(h.k) + " to write");
-    out << h.k << " " << h.a << " " << h.b << "\n";
-  }
+  for (const auto& h : fit.harmonics) out << h.k << " " << h.a.text() << " " << h.b.text() << "\n";
   return out.str();
 }
 

@@ -1,6 +1,6 @@
 // Waveform names and files (model.md, "Waveform catalogue"): parsed once, without a number type,
-// then built at any precision by make_waveform<Real>. Numbers are kept as decimal strings so that
-// each precision reads them exactly ("0.1" at 100 digits is 0.1 to 100 digits).
+// then built at any precision by make_waveform<Real>. Numbers are read once, as Decimals, so that
+// each precision takes them correctly rounded ("0.1" at 100 digits is 0.1 to 100 digits).
 #pragma once
 #include <array>
 #include <cstdlib>
@@ -24,14 +24,14 @@ enum class WaveKind { sine, triangle, sawtooth_right, sawtooth_left, square, pow
 struct WaveSpec {
   WaveKind kind = WaveKind::sine;
   std::string name;      // canonical: "sine", "triangle", …, "power:2.5", "fourier:FILE"
-  std::string exponent;  // power:p, as written
+  Decimal exponent;  // power:p
   struct Harmonic {
     unsigned k;
-    std::string a, b;
+    Decimal a, b;
   };
   std::vector<Harmonic> harmonics;  // fourier: w = Σ a_k cos 2πkφ + b_k sin 2πkφ
-  std::vector<std::string> samples;  // samples: y_j at φ = j/N, or at the times below
-  std::vector<std::string> times;    // samples with a time column: t_0 … t_N (t_N − t_0 = the period), else empty
+  std::vector<Decimal> samples;  // samples: y_j at φ = j/N, or at the times below
+  std::vector<Decimal> times;    // samples with a time column: t_0 … t_N (t_N − t_0 = the period), else empty
   // samples: which columns were read. `column` is the value column as chosen by
   // WaveReadOptions::column, canonical (the header's name if it names that column once, else the
   // 1-based index), and empty without the option; it is what tells "samples:a#b" (file a, column
@@ -40,8 +40,8 @@ struct WaveSpec {
   std::string column, value_column, time_column;
   // samples with a time column but no end point, as a DAQ writes t_j = t_0 + j·dt (README, "File
   // formats"): every stamp is that to its printed digits, so the N samples sit at φ = j/N (times
-  // is then empty) and this is the period N·dt as a decimal (40 digits). Empty otherwise.
-  std::string period_from_stamps;
+  // is then empty) and this is the period N·dt as a decimal (40 digits). None otherwise.
+  std::optional<Decimal> period_from_stamps;
   // samples averaged from a record of this many periods (WaveReadOptions::periods): each y_j is
   // then the exact sum of the K values at its phase, whose normalised wave is their mean's; raw
   // values (describe_normalisation, fit) divide by it.
@@ -127,20 +127,20 @@ std::unique_ptr<Waveform<Real>> make_waveform(const WaveSpec& spec) {
     case WaveKind::sawtooth_left: return make_sawtooth_left<Real>();
     case WaveKind::square: return make_square<Real>();
     case WaveKind::power:
-      return std::make_unique<Power<Real>>(parse_real<Real>(spec.exponent, "power exponent p"), spec.name);
+      return std::make_unique<Power<Real>>(spec.exponent.to<Real>(), spec.name);
     case WaveKind::fourier: {
       std::vector<unsigned> k;
       std::vector<Real> a, b;
       for (const auto& h : spec.harmonics) {
         k.push_back(h.k);
-        a.push_back(parse_real<Real>(h.a, spec.name + " coefficient a_" + std::to_string(h.k)));
-        b.push_back(parse_real<Real>(h.b, spec.name + " coefficient b_" + std::to_string(h.k)));
+        a.push_back(h.a.to<Real>());
+        b.push_back(h.b.to<Real>());
       }
       return std::make_unique<FourierSeries<Real>>(spec.name, k, a, b);
     }
     case WaveKind::samples: {
-      // Normalised from the decimal text itself (parse_wave checked its grammar and range): its
-      // rounding to Real would be amplified by the offset-to-amplitude ratio.
+      // Normalised from the decimals themselves: their rounding to Real would be amplified by the
+      // offset-to-amplitude ratio.
       return make_samples_from<Real>(
           spec.name, spec.samples.size(), [&](std::size_t j) { return detail::sample_value(spec, j); },
           detail::distinct_digits(spec), detail::sample_phase(spec));

@@ -10,6 +10,7 @@
 // (to<Real>), certification the exact rational (exact_input.hpp), comparisons are exact (compare).
 #pragma once
 #include <cstdlib>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -27,10 +28,13 @@ class Decimal {
 
   const std::string& text() const { return text_; }
   bool negative() const { return negative_; }
-  bool is_zero() const { return digits_.empty(); }
-  // value = ±digits · 10^exponent; digits without leading zeros, "" for zero.
-  const std::string& digits() const { return digits_; }
+  bool is_zero() const { return zero_; }
+  // value = ±digits · 10^exponent; digits without leading zeros, "" for zero. Made from the text
+  // when asked (a record of millions of samples keeps one string per value).
+  std::string digits() const;
   long exponent() const { return exponent_; }
+  // The digits the text writes before any exponent, leading zeros included ("0.0012" has 5).
+  int written_digits() const;
 
   // The value correctly rounded to nearest in Real (mpfr: at the current precision): the C
   // library's strtod/strtold for double and long double, MPFR's and Boost's readers otherwise;
@@ -47,10 +51,13 @@ class Decimal {
 
 
  private:
-  std::string text_, digits_;
-  bool negative_ = false;
+  std::string text_;
   long exponent_ = 0;
+  bool negative_ = false, zero_ = true;
 };
+
+// Its text, for messages.
+std::ostream& operator<<(std::ostream& out, const Decimal& d);
 
 // Exact comparison: −1, 0 or 1 as a < b, a = b, a > b.
 int compare(const Decimal& a, const Decimal& b);

@@ -14,7 +14,7 @@
 namespace vibrofric {
 
 struct FourierFit {
-  std::vector<WaveSpec::Harmonic> harmonics;  // k = 0 (the mean, b_0 = "0"), 1 … K; 17 significant digits
+  std::vector<WaveSpec::Harmonic> harmonics;  // k = 0 (the mean, b_0 = 0), 1 … K; 17 significant digits
   std::string method;                         // how they were computed, for the file's comments
   std::string rms_residual, max_residual;     // of y_j − fit(φ_j) with the coefficients as written, 3 digits
   std::size_t samples = 0;                    // N, the samples fitted (the end point of a time column excluded)
