@@ -2287,6 +2287,53 @@ def rig_tests():
         if "kappa" in plain or plain["mu_over_mu0"] == out["mu_over_mu0"]:
             raise Fail("physical without --mass: %r" % plain)
     case("rig: physical --mass --k-system gives kappa, omega, zeta and mu's value", physical_rig)
+
+    def physical_rig_in_double():
+        # In a fixed type, physical's mu_over_mu0 under a rig is the rig's value correctly rounded to
+        # the type and printed with the type's round-trip digits (README, physical), here against the
+        # same command at 40 digits, rounded here to 53 and 64 bits (a first typed version printed
+        # mpfr's value to 17 digits instead: the same double, but not its digits).
+        rig = rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "5", "--format", "json"]
+        wide = F(json.loads(ok_run(rig + ["--digits", "40"]))["mu_over_mu0"])
+        for kind, bits, digits in (("double", 53, 17), ("long-double", 64, 21)):
+            got = json.loads(ok_run(rig + ["--type", kind]))["mu_over_mu0"]
+            ulp = Fraction(2) ** (math.floor(math.log2(wide)) + 1 - bits)
+            nearest = round(wide / ulp) * ulp
+            with decimal.localcontext() as c:
+                c.prec = digits
+                want = Decimal(nearest.numerator) / Decimal(nearest.denominator)
+            if Decimal(got) != want or len(got.replace("0.", "", 1).lstrip("0")) != digits:
+                raise Fail("physical --mass --type %s: mu_over_mu0 %s, the 40-digit value %s rounded to %d bits: %s" % (
+                    kind, got, wide, bits, want))
+    case("rig: physical --mass in double and long double gives mu_over_mu0 correctly rounded", physical_rig_in_double)
+
+    def rig_trace_boundaries():
+        # The rig's trace rows at its spans' ends, against closed forms independent of the rig: a
+        # sine's n = gamma + sin 2 pi phi (the normal motion is prescribed) is 0 at the flight's
+        # ends, phi = 1/2 + asin(gamma)/(2 pi) and 1 - asin(gamma)/(2 pi); at the end of a stick
+        # span s = n (Coulomb's limit is reached), and n there is gamma + sin 2 pi phi.
+        import mpmath
+        mpmath.mp.dps = 40
+        args = ["trace", "--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "1", "--omega", "2",
+                "--zeta", "0.1", "--digits", "20"]
+        rows = [l.split(",") for l in ok_run(args).splitlines()[1:]]
+        starts = [i for i in range(1, len(rows)) if rows[i][5] != rows[i - 1][5]]
+        a = mpmath.asin(mpmath.mpf("0.3")) / (2 * mpmath.pi)
+        flights = [mpmath.mpf(rows[i][0]) for i in starts if rows[i][5] == "flight"]
+        ends = [mpmath.mpf(rows[i][0]) for i in starts if rows[i - 1][5] == "flight"]
+        if len(flights) != 1 or len(ends) != 1 or abs(flights[0] - (mpmath.mpf(1) / 2 + a)) > mpmath.mpf("1e-19") or \
+                abs(ends[0] - (1 - a)) > mpmath.mpf("1e-19"):
+            raise Fail("rig trace: flight from %s to %s, expected %s to %s" % (flights, ends, 0.5 + a, 1 - a))
+        slips = [i for i in starts if rows[i - 1][5] == "stick" and rows[i][5] == "slip"]
+        if not slips:
+            raise Fail("rig trace: no stick-to-slip boundary in %r" % [rows[i][5] for i in starts])
+        for i in slips:
+            phi, n, s = (mpmath.mpf(x) for x in rows[i][:3])
+            want = mpmath.mpf("0.3") + mpmath.sin(2 * mpmath.pi * phi)
+            if s != n or abs(n - want) > mpmath.mpf("1e-19"):
+                raise Fail("rig trace: at the stick's end phi = %s, n = %s, s = %s; gamma + sin 2 pi phi = %s" % (
+                    rows[i][0], rows[i][1], rows[i][2], want))
+    case("rig: trace rows at the flight's ends and the stick's end against closed forms", rig_trace_boundaries)
     bad("rig: physical --mass alone", rig_physical + ["--mass", "0.01"], [], ["--k-system"])
     bad("rig: physical --damping < 0", rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "-1"],
         ["-1"], ["--damping"])

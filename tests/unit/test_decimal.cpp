@@ -8,13 +8,19 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/decimal_value.hpp"
+#include "vibrofric/api/input_value.hpp"
+#include "vibrofric/api/number_type.hpp"
+#include "vibrofric/api/rig.hpp"
+#include "vibrofric/core/escalate.hpp"
 #include "vibrofric/core/errors.hpp"
 
 namespace vibrofric {
@@ -142,6 +148,126 @@ TEST(Decimal, EachTypeTakesTheCorrectlyRoundedValue) {
     mpfr_strtofr(reference.backend().data(), s.c_str(), nullptr, 10, MPFR_RNDN);
     EXPECT_EQ(d.to<mpfr>(), reference) << s;
   }
+}
+
+// escalate() (core/escalate.hpp), the one loop that raises a precision: it returns the first
+// precision's answer that is decided and tries no other, and stops undecided, without passing
+// the limit, where next() says so.
+TEST(Escalate, ReturnsTheFirstDecidedAnswer) {
+  std::vector<long> tried;
+  const auto r = escalate(
+      10, [&](long work) -> std::optional<long> {
+        tried.push_back(work);
+        if (work >= 80) return work * 3;
+        return std::nullopt;
+      },
+      doubling_up_to(1000));
+  ASSERT_TRUE(r);
+  EXPECT_EQ(*r, 240);
+  EXPECT_EQ(tried, (std::vector<long>{10, 20, 40, 80}));
+}
+
+TEST(Escalate, StopsUndecidedAtTheLimit) {
+  std::vector<long> tried;
+  const auto never = [&](long work) -> std::optional<int> {
+    tried.push_back(work);
+    return std::nullopt;
+  };
+  EXPECT_FALSE(escalate(10, never, doubling_up_to(160)));
+  EXPECT_EQ(tried, (std::vector<long>{10, 20, 40, 80, 160}));  // the limit itself is tried
+  tried.clear();
+  EXPECT_FALSE(escalate(10, never, doubling_up_to(159)));
+  EXPECT_EQ(tried, (std::vector<long>{10, 20, 40, 80}));
+}
+
+// InputValue (api/input_value.hpp): a decimal keeps its text and is rounded correctly in each
+// type; a computed value keeps its label and is rounded once; the grammar's refusal names the
+// input and quotes the text.
+TEST(InputValue, DecimalKeepsItsTextAndRoundsCorrectly) {
+  const InputValue v = InputValue::read("0.1", "beta");
+  ASSERT_TRUE(v.given());
+  ASSERT_NE(v.decimal(), nullptr);
+  EXPECT_EQ(v.computed_value(), nullptr);
+  EXPECT_EQ(v.text(), "0.1");
+  EXPECT_EQ(v.to<double>(), 0.1);
+  EXPECT_EQ(v.to<long double>(), 0.1L);
+  PrecisionScope scope(100);
+  mpfr reference;
+  mpfr_strtofr(reference.backend().data(), "0.1", nullptr, 10, MPFR_RNDN);
+  EXPECT_EQ(v.to<mpfr>(), reference);
+}
+
+TEST(InputValue, RefusalQuotesTheTextAndNamesTheInput) {
+  for (const std::string text : {"0.1x", "nan", "1e400", "0x1p3", "1,5"}) {
+    try {
+      (void)InputValue::read(text, "--beta");
+      ADD_FAILURE() << "accepted '" << text << "'";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("--beta"), std::string::npos) << m;
+      EXPECT_NE(m.find("'" + text + "'"), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  }
+  EXPECT_THROW((void)InputValue::read("", "--beta"), InputError);  // "--beta is empty: …"
+}
+
+TEST(InputValue, ComputedKeepsItsLabelAndRoundsOnce) {
+  PrecisionScope scope(60);
+  const mpfr third = mpfr(1) / 3;
+  const InputValue v = InputValue::computed(third, "beta from --v0 and --F_N");
+  EXPECT_EQ(v.decimal(), nullptr);
+  ASSERT_NE(v.computed_value(), nullptr);
+  EXPECT_EQ(*v.computed_value(), third);
+  EXPECT_EQ(v.text(), "beta from --v0 and --F_N");
+  EXPECT_EQ(v.to<double>(), 1.0 / 3.0);
+  EXPECT_EQ(v.to<long double>(), 1.0L / 3.0L);
+  const InputValue none;
+  EXPECT_FALSE(none.given());
+  EXPECT_EQ(none.text(), "");
+  EXPECT_EQ(none.to<double>(), 0.0);
+}
+
+// same_significant (api/decimal.hpp) decides on the rounded values, across a decade and by sign.
+TEST(Significant, SameSignificantDecidesOnRoundedValues) {
+  PrecisionScope scope(60);
+  const auto m = [](const char* s) {
+    mpfr x;
+    mpfr_strtofr(x.backend().data(), s, nullptr, 10, MPFR_RNDN);
+    return x;
+  };
+  EXPECT_TRUE(same_significant(m("0.12344"), m("0.12341"), 4));
+  EXPECT_FALSE(same_significant(m("0.12344"), m("0.12341"), 5));
+  EXPECT_FALSE(same_significant(m("0.12344"), m("0.12346"), 4));
+  EXPECT_TRUE(same_significant(m("0.99996"), m("1.0000"), 4));  // both 1.000
+  EXPECT_FALSE(same_significant(m("0.5"), m("-0.5"), 10));
+  EXPECT_TRUE(same_significant(m("0"), m("0"), 3));
+  EXPECT_FALSE(same_significant(m("0"), m("1e-30"), 3));
+}
+
+TEST(Significant, TextIsTheCorrectlyRoundedDigits) {
+  PrecisionScope scope(60);
+  mpfr x;
+  mpfr_strtofr(x.backend().data(), "1234.5678", nullptr, 10, MPFR_RNDN);
+  EXPECT_EQ((Significant{x, 6}.text()), "1234.57");
+  EXPECT_EQ((Significant{mpfr(1), 3}.text()), "1.00");
+  EXPECT_EQ((Significant{mpfr(-0.25), 1}.text()), "-0.2");  // a tie, to even
+  EXPECT_EQ((Significant{mpfr(std::numeric_limits<double>::quiet_NaN()), 5}.text()), "nan");
+  EXPECT_EQ((Significant{mpfr(-std::numeric_limits<double>::infinity()), 5}.text()), "-inf");
+}
+
+// type_significant: the value rounded to the type with the digits printed for it; mpfr as it is.
+TEST(Significant, TypeSignificantRoundsToTheType) {
+  PrecisionScope scope(200);
+  const mpfr third = mpfr(1) / 3;
+  const Significant d = detail::type_significant(third, Precision{NumberType::float64, 0});
+  EXPECT_EQ(d.value, mpfr(1.0 / 3.0));
+  EXPECT_EQ(d.digits, 17);
+  EXPECT_EQ(d.text(), "0.33333333333333331");  // 1/3 in double is 0.333333333333333314829…
+  const Significant m = detail::type_significant(third, Precision{NumberType::mpfr, 30});
+  EXPECT_EQ(m.value, third);
+  EXPECT_EQ(m.digits, 30);
+  EXPECT_EQ(m.text(), "0.333333333333333333333333333333");
 }
 
 }  // namespace

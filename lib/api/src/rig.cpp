@@ -259,14 +259,7 @@ Significant detail::type_significant(const mpfr& v, const Precision& precision) 
 }
 
 std::string detail::rig_text(const mpfr& v, const Precision& precision) {
-  const int digits = output_digits(precision);
-  return visit_number_type(precision.type, [&](auto tag) {
-    using Real = typename decltype(tag)::type;
-    if constexpr (is_runtime_precision_v<Real>)
-      return format_significant(v, digits);
-    else
-      return format_significant(detail::rounded<Real>(v), digits);
-  });
+  return type_significant(v, precision).text();
 }
 
 }  // namespace vibrofric
