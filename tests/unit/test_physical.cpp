@@ -2,8 +2,17 @@
 // at 50 digits from the double inputs exactly (independent of the double arithmetic under test).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
+#include <map>
+#include <string>
+#include <vector>
 
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/commands.hpp"
+#include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/physical.hpp"
 
@@ -75,6 +84,83 @@ TEST(Physical, ExplicitShearModuliAndBadInput) {
   bad = in;
   bad.mu0 = 0;
   EXPECT_THROW(physical_groups(bad), InputError);
+}
+
+// physical with two record options together, --unit and --periods, on the flat punch and a
+// sphere: A is half the peak-to-peak of the K periods' mean (README, "File formats"), averaged
+// here by hand in integers, and every output equals that of the mean record given with that A.
+TEST(Physical, AmplitudeFromAnAveragedRecordInItsUnit) {
+  const int n = 64, k = 2, m = n / k;
+  std::vector<long long> y(n);  // nanometres
+  std::string record = "time [s],displacement [um]\n";
+  for (int j = 0; j < n; ++j) {
+    y[static_cast<std::size_t>(j)] = std::llround(1e3 * (1.5 * std::sin(2 * M_PI * k * j / n) + 0.04 * std::sin(0.7 * j * j)));
+    const long long a = std::llabs(y[static_cast<std::size_t>(j)]);
+    char line[64];
+    // stamps 1.5625 µs apart: a period of 32 samples at f = 20 kHz
+    std::snprintf(line, sizeof line, "%de-10,%s%lld.%03lld\n", 15625 * j, y[static_cast<std::size_t>(j)] < 0 ? "-" : "", a / 1000,
+                  a % 1000);
+    record += line;
+  }
+  long long lo = 0, hi = 0;
+  std::string sums;
+  for (int j = 0; j < m; ++j) {
+    long long sum = 0;
+    for (int p = 0; p < k; ++p) sum += y[static_cast<std::size_t>(p * m + j)];
+    lo = j == 0 ? sum : std::min(lo, sum);
+    hi = j == 0 ? sum : std::max(hi, sum);
+    sums += std::to_string(sum) + "\n";
+  }
+  // A = (max − min)/2 of the mean = (hi − lo)/(2K) nm = (hi − lo)/4 · 1e-9 m: a finite decimal.
+  const long long quarter_nm_times_100 = (hi - lo) * 25;  // (hi − lo)/4 in units of 0.01 nm
+  char a_text[64];
+  std::snprintf(a_text, sizeof a_text, "%lld.%02llde-9", quarter_nm_times_100 / 100, quarter_nm_times_100 % 100);
+  const std::string dir = ::testing::TempDir();
+  std::ofstream(dir + "two_periods_um.csv") << record;
+  std::ofstream(dir + "mean_sums.txt") << sums;
+  WaveReadOptions two;
+  two.periods = k;
+  const WaveSpec recorded = parse_wave("samples:" + dir + "two_periods_um.csv", two);
+  const WaveSpec mean = parse_wave("samples:" + dir + "mean_sums.txt");
+  for (const char* shape : {"flat", "sphere"}) {
+    SCOPED_TRACE(shape);
+    PhysicalRequest with_unit, with_a;
+    for (PhysicalRequest* r : {&with_unit, &with_a}) {
+      r->E1.value = InputValue::read("210e9", "E1");
+      r->nu1.value = InputValue::read("0.3", "nu1");
+      r->E2.value = InputValue::read("70e9", "E2");
+      r->nu2.value = InputValue::read("0.33", "nu2");
+      r->v0.value = InputValue::read("2e-3", "v0");
+      r->f.value = InputValue::read("20000", "f");
+      r->u_mean.value = InputValue::read("1e-7", "u_mean");
+      r->mu0.value = InputValue::read("0.3", "mu0");
+      r->shape.text = shape;
+      (std::string(shape) == "flat" ? r->radius : r->R).value = InputValue::read("1e-3", "radius");
+    }
+    with_unit.unit.text = "um";
+    with_a.A.value = InputValue::read(a_text, "A");
+    const Precision precision{NumberType::mpfr, 40};
+    std::map<std::string, PhysicalOutput> by_hand;
+    for (const PhysicalOutput& o : physical_point(mean, with_a, precision)) by_hand.emplace(o.name, o);
+    int compared = 0;
+    for (const PhysicalOutput& o : physical_point(recorded, with_unit, precision)) {
+      PrecisionScope scope(60);
+      if (o.name == "A_m") {
+        EXPECT_LT(abs(o.number.value / mpfr(a_text) - 1), mpfr("1e-38")) << o.text() << " against " << a_text;
+        ++compared;
+        continue;
+      }
+      const auto h = by_hand.find(o.name);
+      ASSERT_NE(h, by_hand.end()) << o.name;
+      if (!o.word.empty() || o.number.value == 0) {
+        EXPECT_EQ(o.text(), h->second.text()) << o.name;
+      } else {
+        EXPECT_LT(abs(o.number.value / h->second.number.value - 1), mpfr("1e-38")) << o.name << " " << o.text() << " against " << h->second.text();
+      }
+      ++compared;
+    }
+    EXPECT_EQ(compared, static_cast<int>(by_hand.size()) + 1);
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Waveform catalogue and user waveforms (model.md, "Waveform catalogue"; Eq. 16).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -25,6 +26,14 @@ std::string temp_file(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + name;
   std::ofstream(path) << text;
   return path;
+}
+
+// An integer count of 10^-9 as a decimal ("-0.000001234").
+std::string decimal_nanos(long long v) {
+  const unsigned long long a = static_cast<unsigned long long>(v < 0 ? -v : v);
+  char out[48];
+  std::snprintf(out, sizeof out, "%s%llu.%09llu", v < 0 ? "-" : "", a / 1000000000ULL, a % 1000000000ULL);
+  return out;
 }
 
 // Mean by the antiderivative over each piece: zero for every catalogue wave.
@@ -264,6 +273,48 @@ TEST(Waveforms, SampleFileGrammar) {
 
 // A value column chosen by name or 1-based index (WaveReadOptions): more than two columns, the
 // header's time column still giving the phases; the canonical name records the column.
+// A record of K noisy periods (README, "File formats": refused without periods, averaged with
+// them) at the detector's edges: K = N/8 (the largest candidate below 512 samples), K = 64 (the
+// largest at 512), N = 16 (the fewest samples tried, one candidate) and K = 3. Without periods the
+// message names K itself; with periods = K the wave is, value for value, that of the record of the
+// K values' sums at each phase, summed here in integers (the normalised wave of the mean is the
+// sum's).
+TEST(Waveforms, RepeatedPeriodsFoundUpToTheLargestCandidateAndAveraged) {
+  for (const auto& [n, k] : {std::pair<int, int>{128, 16}, {512, 64}, {16, 2}, {24, 3}}) {
+    SCOPED_TRACE(std::to_string(n) + " samples of " + std::to_string(k) + " periods");
+    std::vector<long long> y(static_cast<std::size_t>(n));  // in units of 10^-9
+    std::string record;
+    for (int j = 0; j < n; ++j) {
+      const double v = std::sin(2 * M_PI * k * j / n) + 0.03 * std::sin(0.7 * j * j);  // noise of 4 % rms
+      y[static_cast<std::size_t>(j)] = std::llround(v * 1e9);
+      record += decimal_nanos(y[static_cast<std::size_t>(j)]) + "\n";
+    }
+    const std::string name = "periods_" + std::to_string(n) + "_" + std::to_string(k);
+    const std::string path = temp_file(name + ".txt", record);
+    try {
+      parse_wave("samples:" + path);
+      ADD_FAILURE() << "accepted as one period";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("look like " + std::to_string(k) + " periods"), std::string::npos) << e.what();
+    }
+    std::string sums;
+    const int m = n / k;
+    for (int j = 0; j < m; ++j) {
+      long long sum = 0;
+      for (int p = 0; p < k; ++p) sum += y[static_cast<std::size_t>(p * m + j)];
+      sums += decimal_nanos(sum) + "\n";
+    }
+    WaveReadOptions options;
+    options.periods = k;
+    const auto averaged = make_waveform<double>(parse_wave("samples:" + path, options));
+    const auto summed = make_waveform<double>(parse_wave("samples:" + temp_file(name + "_sums.txt", sums)));
+    for (int j = 0; j <= 4 * m; ++j) {
+      const double phi = static_cast<double>(j) / (4 * m);
+      EXPECT_EQ((*averaged)(phi), (*summed)(phi)) << "phi " << phi;
+    }
+  }
+}
+
 TEST(Waveforms, ColumnSelection) {
   const std::string path = temp_file("c_multi.csv", "t;a;b\n0;1;10\n1;3;20\n3;-1;40\n4;1;10\n");
   const WaveSpec b = parse_wave("samples:" + path, {"b"});
