@@ -362,28 +362,35 @@ bool decimal_comma(const std::string& text) {
   return is_decimal(point);
 }
 
-void check_decimal(const std::string& text, const std::string& what) {
+namespace {
+// check_decimal's decision, and the Decimal it read: each text is scanned once.
+Decimal checked_decimal(const std::string& text, const std::string& what) {
   if (text.empty()) throw InputError(what + " is empty: expected a decimal number");
-  if (decimal_comma(text)) {
-    std::string point = text;
-    std::replace(point.begin(), point.end(), ',', '.');
-    throw InputError(what + " = " + quoted(text) + " has a decimal comma: expected a decimal point (" + point + ")");
-  }
-  if (!is_decimal(text))
+  std::optional<Decimal> d = Decimal::read(text);
+  if (!d) {
+    if (decimal_comma(text)) {
+      std::string point = text;
+      std::replace(point.begin(), point.end(), ',', '.');
+      throw InputError(what + " = " + quoted(text) + " has a decimal comma: expected a decimal point (" + point + ")");
+    }
     throw InputError(what + " = " + quoted(visible(text)) + ": expected a finite decimal number such as 0.5 or -3e-2 (exponent below 1e9)");
+  }
   errno = 0;
   const long double v = std::strtold(text.c_str(), nullptr);
   if (errno == ERANGE && std::fabs(v) > 1) 
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
   if (std::fabs(v) > static_cast<long double>(std::numeric_limits<double>::max()))
     throw InputError(what + " = " + quoted(text) + " overflows: expected a magnitude below 1e308");
+  return std::move(*d);
 }
+}  // namespace
+
+void check_decimal(const std::string& text, const std::string& what) { (void)checked_decimal(text, what); }
 
 std::ostream& operator<<(std::ostream& out, const InputValue& v) { return out << v.text(); }
 
 InputValue InputValue::read(const std::string& text, const std::string& what) {
-  check_decimal(text, what);
-  return InputValue(*Decimal::read(text));
+  return InputValue(checked_decimal(text, what));
 }
 
 exact::Rational exact_decimal(const std::string& text, const std::string& what) {
@@ -425,11 +432,16 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
   s.kind = WaveKind::samples;
   const auto& rows = table.rows;
   // A header of names and nothing numeric after it, or a non-numeric field further down.
-  for (const auto& [line, tok] : rows)
-    for (const auto& t : tok) check_decimal(t, source.where(line) + " sample");
+  std::vector<std::vector<Decimal>> values;  // rows' fields, each read once
+  values.reserve(rows.size());
+  for (const auto& [line, tok] : rows) {
+    values.emplace_back();
+    values.back().reserve(tok.size());
+    for (const auto& t : tok) values.back().push_back(checked_decimal(t, source.where(line) + " sample"));
+  }
   std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
   if (!chosen && rows.size() == 1 && table.header.empty()) {
-    for (const auto& t : rows[0].second) s.samples.push_back(*Decimal::read(t));  // one line of values: one period
+    s.samples = std::move(values[0]);  // one line of values: one period
   } else {
     for (const auto& [line, tok] : rows)
       if (tok.size() != columns)
@@ -492,9 +504,9 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
                        ": expected one column of values, two with one named 'time', or a value column chosen by name or "
                        "1-based index (" + options.column_name + ")");
     }
-    for (const auto& [line, tok] : rows) {
-      if (tc != std::string::npos) s.times.push_back(*Decimal::read(tok[tc]));
-      s.samples.push_back(*Decimal::read(tok[vc]));
+    for (auto& row : values) {
+      if (tc != std::string::npos) s.times.push_back(std::move(row[tc]));
+      s.samples.push_back(std::move(row[vc]));
     }
     if (!header.empty() && vc < header.size()) s.value_column = header[vc];
     if (tc != std::string::npos) s.time_column = header[tc];
