@@ -375,6 +375,16 @@ TEST(BadInput, DomainAndArguments) {
                                                                 : std::vector<const char*>{"-1", "-1.5", "-1e300"}) EXPECT_THROW(evaluate(spec, Quantity::mu, {{"1", gamma}}, p), DomainError) << wave << " " << gamma;
       for (const char* beta : {"0", "-1", "-0"})
         EXPECT_THROW(evaluate(spec, Quantity::mu, {{beta, "0.5"}}, p), InputError) << wave << " beta " << beta;
+      // A zero typed as β is out of the domain, not an underflow: the message says what is expected.
+      for (const char* beta : {"0", "0.000", "0e-400"}) {
+        try {
+          evaluate(spec, Quantity::mu, {{beta, "0.5"}}, p);
+          ADD_FAILURE() << wave << " beta " << beta << ": no error";
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("expected a finite number > 0"), std::string::npos) << e.what();
+          EXPECT_EQ(std::string(e.what()).find("underflows"), std::string::npos) << e.what();
+        }
+      }
       // Below double's range: a value in every type alike, double's being mpfr's rounded (to 0).
       const std::string tiny = evaluate(spec, Quantity::mu, {{"1e-400", "0.5"}}, p).front();
       const std::string wide = evaluate(spec, Quantity::mu, {{"1e-400", "0.5"}}, {NumberType::mpfr, 20}).front();

@@ -232,6 +232,40 @@ TEST(Certify, GuaranteedValuesAreTheCertifiedRoundings) {
   }
 }
 
+// An enclosure's texts (certify.cpp: lower_text, upper_text) are its dyadic ends rounded outward
+// to a decimal: lower_text ≤ lower and upper_text ≥ upper exactly, each within one unit of its
+// own last place, so the printed interval holds the value and is no wider than it must be.
+TEST(Certify, EnclosureTextsAreTheEndsRoundedOutward) {
+  // The exact value of a text's last place, 10^(exponent − digits after the point).
+  const auto last_place = [](const std::string& text) {
+    const std::size_t e = text.find_first_of("eE"), dot = text.find('.');
+    const long exponent = e == std::string::npos ? 0 : std::stol(text.substr(e + 1));
+    const long after = dot == std::string::npos ? 0 : static_cast<long>((e == std::string::npos ? text.size() : e) - dot - 1);
+    return exact_decimal("1e" + std::to_string(exponent - after), "last place");
+  };
+  int checked = 0;
+  for (const char* wave : {"sine", "power:2.5"}) {
+    const WaveSpec spec = parse_wave(wave);
+    const Certifier certifier(spec, ProfileSpec{});
+    ASSERT_TRUE(certifier.encloses()) << wave;
+    for (const Precision& precision : {Precision{NumberType::float64, 0}, Precision{NumberType::float80, 0}, Precision{NumberType::mpfr, 30}})
+      for (const Point& point : {Point{"0.5", "0.2"}, Point{"1", "-0.3"}, Point{"3", "1.5"}, Point{"0.01", "-0.9"}}) {
+        const std::string printed = evaluate(spec, Quantity::mu, {point}, precision).front();
+        const Certificate c = certifier(Quantity::mu, point, precision, printed);
+        const std::string at = std::string(wave) + " beta " + point.beta.text() + " gamma " + point.gamma.text() + ": [" +
+                               c.lower_text + ", " + c.upper_text + "]";
+        ASSERT_TRUE(c.correctly_rounded) << at;
+        const Rational lo = exact_decimal(c.lower_text, "lower"), hi = exact_decimal(c.upper_text, "upper");
+        EXPECT_LE(lo, c.lower) << at;
+        EXPECT_GE(hi, c.upper) << at;
+        EXPECT_GT(Rational(lo + last_place(c.lower_text)), c.lower) << at;
+        EXPECT_LT(Rational(hi - last_place(c.upper_text)), c.upper) << at;
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, 24);
+}
+
 // The certificate is not a formality: a neighbour of the right value, and a value of the wrong
 // point, are refused.
 TEST(Certify, RefusesWrongValues) {

@@ -13,6 +13,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/rig.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/physical.hpp"
 
@@ -161,6 +162,78 @@ TEST(Physical, AmplitudeFromAnAveragedRecordInItsUnit) {
     }
     EXPECT_EQ(compared, static_cast<int>(by_hand.size()) + 1);
   }
+}
+
+// physical's rig outputs (commands.cpp): κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)) against
+// the formulas at 50 digits from the SI inputs, and the rig's lengths in metres against the
+// dimensionless rig (evaluate_rig at the same β, γ, κ, Ω, ζ) times its unit μ0 k_z A/k_x
+// (model.md), with μ0 = 0.3 so that a unit without μ0 shows.
+TEST(Physical, RigOutputsInSIUnits) {
+  PhysicalRequest r;
+  r.E1.value = InputValue::read("210e9", "E1");
+  r.nu1.value = InputValue::read("0.3", "nu1");
+  r.E2.value = InputValue::read("70e9", "E2");
+  r.nu2.value = InputValue::read("0.33", "nu2");
+  r.radius.value = InputValue::read("1e-3", "radius");
+  r.v0.value = InputValue::read("1e-3", "v0");
+  r.f.value = InputValue::read("20000", "f");
+  r.A.value = InputValue::read("2e-6", "A");
+  r.u_mean.value = InputValue::read("1e-6", "u_mean");
+  r.mu0.value = InputValue::read("0.3", "mu0");
+  r.mass.value = InputValue::read("0.01", "mass");
+  r.k_system.value = InputValue::read("1e7", "k_system");
+  r.damping.value = InputValue::read("5", "damping");
+  const WaveSpec sine = parse_wave("sine");
+  const Precision precision{NumberType::mpfr, 20};
+  std::map<std::string, PhysicalOutput> out;
+  for (const PhysicalOutput& o : physical_point(sine, r, precision)) out.emplace(o.name, o);
+  PrecisionScope scope(50);
+  const mpfr E1("210e9"), E2("70e9"), nu1("0.3"), nu2("0.33"), a("1e-3"), f("20000"), A("2e-6"), mu0("0.3");
+  const mpfr m("0.01"), ks("1e7"), c("5"), v0("1e-3"), u_mean("1e-6");
+  const mpfr G1 = E1 / (2 * (1 + nu1)), G2 = E2 / (2 * (1 + nu2));
+  const mpfr E_star = 1 / ((1 - nu1 * nu1) / E1 + (1 - nu2 * nu2) / E2);
+  const mpfr G_star = 1 / ((2 - nu1) / (4 * G1) + (2 - nu2) / (4 * G2));
+  const mpfr k_z = 2 * E_star * a, k_x = 2 * G_star * a;
+  const mpfr beta = k_x * v0 / (mu0 * k_z * A * f), gamma = u_mean / A;
+  const mpfr kappa = ks / k_x, omega = sqrt(mpfr(k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * f),
+             zeta = c / (2 * sqrt(mpfr(m * ks)));
+  const auto expect_close = [&](const std::string& name, const mpfr& want, int digits) {
+    const auto o = out.find(name);
+    ASSERT_NE(o, out.end()) << name;
+    if (want == 0) {
+      EXPECT_EQ(o->second.number.value, 0) << name;
+      return;
+    }
+    EXPECT_LT(abs(o->second.number.value / want - 1), pow(mpfr(10), 1 - digits)) << name << " " << o->second.text() << " against " << want.str(25);
+  };
+  for (const auto& [name, value] : {std::pair<std::string, mpfr>{"kappa", kappa}, {"omega", omega}, {"zeta", zeta},
+                                    {"beta", beta}, {"gamma", gamma}})
+    expect_close(name, value, 20);
+  const auto computed = [](const mpfr& v) { return InputValue::computed(v, format_significant(v, 17)); };
+  RigSpec spec;
+  spec.kappa = computed(kappa);
+  spec.omega = computed(omega);
+  spec.zeta = computed(zeta);
+  const RigReport rig = evaluate_rig(sine, Point(computed(beta), computed(gamma)), spec, {NumberType::mpfr, 30});
+  const mpfr unit = mu0 * k_z * A / k_x;
+  ASSERT_GT(rig.amplitude.digits, 8);
+  expect_close("body_amplitude_m", mpfr(rig.amplitude.value * unit), std::min(20, rig.amplitude.digits));
+  if (rig.largest_backward_slip.value != 0)
+    expect_close("largest_backward_slip_m", mpfr(rig.largest_backward_slip.value * unit),
+                 std::min(20, rig.largest_backward_slip.digits));
+  else
+    EXPECT_EQ(out.at("largest_backward_slip_m").number.value, 0);
+  expect_close("stick_fraction", rig.stick_fraction.value, std::min(20, rig.stick_fraction.digits));
+  expect_close("slip_fraction", rig.slip_fraction.value, std::min(20, rig.slip_fraction.digits));
+  expect_close("mu", mpfr(mu0 * mpfr(rig.mu)), 19);
+  // Without a damper the rig is undamped (ζ = 0), not refused.
+  PhysicalRequest undamped = r;
+  undamped.damping.value = InputValue();
+  std::map<std::string, PhysicalOutput> free;
+  for (const PhysicalOutput& o : physical_point(sine, undamped, precision)) free.emplace(o.name, o);
+  ASSERT_EQ(free.count("zeta"), 1u);
+  EXPECT_EQ(free.at("zeta").number.value, 0);
+  EXPECT_EQ(free.at("kappa").text(), out.at("kappa").text());
 }
 
 }  // namespace

@@ -203,8 +203,6 @@ TEST(Waveforms, TimeColumnMatchesTheExactEnvelope) {
   using envelope::Rational;
   const std::vector<Rational> phi{0, Rational(1, 10), Rational(1, 4), Rational(3, 10), Rational(11, 20), Rational(4, 5)};
   const std::vector<Rational> y{0, Rational(9, 10), Rational(1, 5), 1, Rational(-2, 5), -1};
-  const std::string path = temp_file("time_column.csv",
-                                     "time [s], value\n0, 0\n0.1, 0.9\n0.25, 0.2\n0.3, 1\n0.55, -0.4\n0.8, -1\n1, 0\n");
   const std::size_t n = phi.size();
   Rational mean = 0;
   for (std::size_t j = 0; j < n; ++j) {
@@ -214,20 +212,28 @@ TEST(Waveforms, TimeColumnMatchesTheExactEnvelope) {
   envelope::Vertices v;
   for (std::size_t j = 0; j < n; ++j) v.push_back({phi[j], y[j] - mean, y[j] - mean});  // scale (1 − (−1))/2 = 1
   ASSERT_EQ(envelope::mean(v), 0) << "the trapezoid mean is the mean of the piecewise-linear signal";
-  const WaveSpec spec = parse_wave("samples:" + path);
-  ASSERT_EQ(spec.times.size(), n + 1);
-  PrecisionScope scope(50);
-  const auto w = make_waveform<mpfr>(spec);
-  for (const Rational& beta : {Rational(1, 10), Rational(1), Rational(5)})
-    for (const Rational& gamma : {Rational(3), Rational(1, 2), Rational(-1, 5), Rational(-7, 10)}) {
-      if (!(gamma + envelope::range(v).second > 0)) continue;
-      const Rational exact = envelope::mu(v, beta, gamma).mu;
-      const mpfr b(static_cast<mpfr>(numerator(beta)) / static_cast<mpfr>(denominator(beta)));
-      const mpfr g(static_cast<mpfr>(numerator(gamma)) / static_cast<mpfr>(denominator(gamma)));
-      const mpfr got = solve(*w, b, g).mu;
-      const mpfr want = static_cast<mpfr>(numerator(exact)) / static_cast<mpfr>(denominator(exact));
-      EXPECT_LE(static_cast<double>(abs(got - want) / want), 1e-38) << "beta " << beta << ", gamma " << gamma;
-    }
+  // The same record, its clock started at 0 and at 10 s: the phases are (t − t_0)/(t_N − t_0).
+  for (const char* stamps : {"time [s], value\n0, 0\n0.1, 0.9\n0.25, 0.2\n0.3, 1\n0.55, -0.4\n0.8, -1\n1, 0\n",
+                             "time [s], value\n10, 0\n10.1, 0.9\n10.25, 0.2\n10.3, 1\n10.55, -0.4\n10.8, -1\n11, 0\n"}) {
+    SCOPED_TRACE(stamps);
+    const WaveSpec spec = parse_wave("samples:" + temp_file("time_column.csv", stamps));
+    ASSERT_EQ(spec.times.size(), n + 1);
+    const auto period = stamped_period(spec);
+    ASSERT_TRUE(period);
+    EXPECT_EQ(period->seconds, 1);
+    PrecisionScope scope(50);
+    const auto w = make_waveform<mpfr>(spec);
+    for (const Rational& beta : {Rational(1, 10), Rational(1), Rational(5)})
+      for (const Rational& gamma : {Rational(3), Rational(1, 2), Rational(-1, 5), Rational(-7, 10)}) {
+        if (!(gamma + envelope::range(v).second > 0)) continue;
+        const Rational exact = envelope::mu(v, beta, gamma).mu;
+        const mpfr b(static_cast<mpfr>(numerator(beta)) / static_cast<mpfr>(denominator(beta)));
+        const mpfr g(static_cast<mpfr>(numerator(gamma)) / static_cast<mpfr>(denominator(gamma)));
+        const mpfr got = solve(*w, b, g).mu;
+        const mpfr want = static_cast<mpfr>(numerator(exact)) / static_cast<mpfr>(denominator(exact));
+        EXPECT_LE(static_cast<double>(abs(got - want) / want), 1e-38) << "beta " << beta << ", gamma " << gamma;
+      }
+  }
 }
 
 // The grammar's refusals name what to do (README, "File formats"); the same table in every layout
