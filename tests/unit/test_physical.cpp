@@ -32,11 +32,12 @@ void expect_eps(double x, const mpfr& ref, const char* what) {
       << what << ": " << x << " against " << ref.str(20);
 }
 
-// Eq. 1 and Eq. 5 at 50 digits from the inputs' exact double values.
+// Eq. 1 and Eq. 5 at 50 digits from the inputs' exact values (double, or mpfr read at 50 digits).
 struct Reference {
   mpfr E_star, G_star, k_z, k_x, beta, gamma;
 };
-Reference reference(const PhysicalInput<double>& in) {
+template <class Real>
+Reference reference(const PhysicalInput<Real>& in) {
   PrecisionScope scope(50);
   const mpfr E1(in.E1), E2(in.E2), nu1(in.nu1), nu2(in.nu2), a(in.radius);
   const mpfr G1 = in.G1 != 0 ? mpfr(in.G1) : mpfr(E1 / (2 * (1 + nu1)));
@@ -60,6 +61,20 @@ void expect_groups(const PhysicalInput<double>& in) {
   expect_eps(g.k_x, r.k_x, "k_x");
   expect_eps(g.beta, r.beta, "beta");
   expect_eps(g.gamma, r.gamma, "gamma");
+}
+
+// A request with the inputs named by their members (PhysicalRequest::inputs), as decimal text.
+void set_inputs(PhysicalRequest& r, const std::map<std::string, std::string>& values) {
+  std::size_t set = 0;
+  for (const PhysicalRequest::Member& m : r.inputs())
+    if (const auto v = values.find(m.member); v != values.end()) {
+      if (m.number)
+        m.number->value = InputValue::read(v->second, m.member);
+      else
+        m.text->text = v->second;
+      ++set;
+    }
+  if (set != values.size()) ADD_FAILURE() << "an input name that is no member of PhysicalRequest";
 }
 
 TEST(Physical, SteelOnSteelFlatPunch) {
@@ -126,18 +141,10 @@ TEST(Physical, AmplitudeFromAnAveragedRecordInItsUnit) {
   for (const char* shape : {"flat", "sphere"}) {
     SCOPED_TRACE(shape);
     PhysicalRequest with_unit, with_a;
-    for (PhysicalRequest* r : {&with_unit, &with_a}) {
-      r->E1.value = InputValue::read("210e9", "E1");
-      r->nu1.value = InputValue::read("0.3", "nu1");
-      r->E2.value = InputValue::read("70e9", "E2");
-      r->nu2.value = InputValue::read("0.33", "nu2");
-      r->v0.value = InputValue::read("2e-3", "v0");
-      r->f.value = InputValue::read("20000", "f");
-      r->u_mean.value = InputValue::read("1e-7", "u_mean");
-      r->mu0.value = InputValue::read("0.3", "mu0");
-      r->shape.text = shape;
-      (std::string(shape) == "flat" ? r->radius : r->R).value = InputValue::read("1e-3", "radius");
-    }
+    for (PhysicalRequest* r : {&with_unit, &with_a})
+      set_inputs(*r, {{"E1", "210e9"}, {"nu1", "0.3"}, {"E2", "70e9"}, {"nu2", "0.33"}, {"v0", "2e-3"}, {"f", "20000"},
+                      {"u_mean", "1e-7"}, {"mu0", "0.3"}, {"shape", shape},
+                      {std::string(shape) == "flat" ? "radius" : "R", "1e-3"}});
     with_unit.unit.text = "um";
     with_a.A.value = InputValue::read(a_text, "A");
     const Precision precision{NumberType::mpfr, 40};
@@ -170,31 +177,21 @@ TEST(Physical, AmplitudeFromAnAveragedRecordInItsUnit) {
 // (model.md), with μ0 = 0.3 so that a unit without μ0 shows.
 TEST(Physical, RigOutputsInSIUnits) {
   PhysicalRequest r;
-  r.E1.value = InputValue::read("210e9", "E1");
-  r.nu1.value = InputValue::read("0.3", "nu1");
-  r.E2.value = InputValue::read("70e9", "E2");
-  r.nu2.value = InputValue::read("0.33", "nu2");
-  r.radius.value = InputValue::read("1e-3", "radius");
-  r.v0.value = InputValue::read("1e-3", "v0");
-  r.f.value = InputValue::read("20000", "f");
-  r.A.value = InputValue::read("2e-6", "A");
-  r.u_mean.value = InputValue::read("1e-6", "u_mean");
-  r.mu0.value = InputValue::read("0.3", "mu0");
-  r.mass.value = InputValue::read("0.01", "mass");
-  r.k_system.value = InputValue::read("1e7", "k_system");
-  r.damping.value = InputValue::read("5", "damping");
+  set_inputs(r, {{"E1", "210e9"}, {"nu1", "0.3"}, {"E2", "70e9"}, {"nu2", "0.33"}, {"radius", "1e-3"}, {"v0", "1e-3"},
+                 {"f", "20000"}, {"A", "2e-6"}, {"u_mean", "1e-6"}, {"mu0", "0.3"}, {"mass", "0.01"}, {"k_system", "1e7"},
+                 {"damping", "5"}});
   const WaveSpec sine = parse_wave("sine");
   const Precision precision{NumberType::mpfr, 20};
   std::map<std::string, PhysicalOutput> out;
   for (const PhysicalOutput& o : physical_point(sine, r, precision)) out.emplace(o.name, o);
   PrecisionScope scope(50);
-  const mpfr E1("210e9"), E2("70e9"), nu1("0.3"), nu2("0.33"), a("1e-3"), f("20000"), A("2e-6"), mu0("0.3");
-  const mpfr m("0.01"), ks("1e7"), c("5"), v0("1e-3"), u_mean("1e-6");
-  const mpfr G1 = E1 / (2 * (1 + nu1)), G2 = E2 / (2 * (1 + nu2));
-  const mpfr E_star = 1 / ((1 - nu1 * nu1) / E1 + (1 - nu2 * nu2) / E2);
-  const mpfr G_star = 1 / ((2 - nu1) / (4 * G1) + (2 - nu2) / (4 * G2));
-  const mpfr k_z = 2 * E_star * a, k_x = 2 * G_star * a;
-  const mpfr beta = k_x * v0 / (mu0 * k_z * A * f), gamma = u_mean / A;
+  PhysicalInput<mpfr> in;
+  in.E1 = mpfr("210e9"), in.nu1 = mpfr("0.3"), in.E2 = mpfr("70e9"), in.nu2 = mpfr("0.33"), in.radius = mpfr("1e-3");
+  in.v0 = mpfr("1e-3"), in.f = mpfr("20000"), in.A = mpfr("2e-6"), in.u_mean = mpfr("1e-6"), in.mu0 = mpfr("0.3");
+  const Reference groups = reference(in);
+  const mpfr &k_z = groups.k_z, &k_x = groups.k_x, &beta = groups.beta, &gamma = groups.gamma, &f = in.f, &A = in.A,
+             &mu0 = in.mu0;
+  const mpfr m("0.01"), ks("1e7"), c("5");
   const mpfr kappa = ks / k_x, omega = sqrt(mpfr(k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * f),
              zeta = c / (2 * sqrt(mpfr(m * ks)));
   const auto expect_close = [&](const std::string& name, const mpfr& want, int digits) {
