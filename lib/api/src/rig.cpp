@@ -13,6 +13,7 @@
 #include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/ladder.hpp"
 #include "evaluate_impl.hpp"
+#include "two_precisions.hpp"
 #include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/exact.hpp"
 
@@ -82,50 +83,15 @@ Solved solve_at(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsign
   }
 }
 
-// b with the significant digits (at most `most`) on which a and b agree.
-Significant agreed(const mpfr& a, const mpfr& b, int most) {
-  if (a == 0 && b == 0) return {mpfr(0), 1};
-  for (int d = most; d > 1; --d)
-    if (same_significant(a, b, d)) return {b, d};
-  return {b, 1};
-}
-
-// Whether every value of [lo, hi] rounds alike: to the type, or to `digits` digits (mpfr).
-bool decides(const mpfr& lo, const mpfr& hi, const Precision& precision, int digits) {
-  return visit_number_type(precision.type, [&](auto tag) {
-    using Real = typename decltype(tag)::type;
-    if constexpr (is_runtime_precision_v<Real>)
-      return same_significant(lo, hi, digits);
-    else
-      return detail::rounded<Real>(lo) == detail::rounded<Real>(hi);
-  });
-}
-
-// The rig's periodic state at two precisions, the higher raised (from the lower's state) until
-// settled(lower, higher): the escalation routine's loop (ladder.hpp), 4 attempts, each adding
-// max(12, half the digits). SolverError naming the case and both values where it does not settle.
+// The rig's periodic state at two precisions, the higher from the lower's state, until
+// settled(lower, higher) (two_precisions.hpp).
 template <class Settled>
 std::pair<Solved, Solved> settle(const WaveSpec& wave, const Point& p, const RigSpec& rig, unsigned resonant,
                                  int digits, const Options& opt, Settled settled) {
-  std::optional<Solved> a, b;
-  a.emplace(solve_at(wave, p, rig, resonant, digits + 10, opt, nullptr));
-  RaisePolicy policy;
-  policy.guard = 0;
-  policy.attempts = 4;
-  policy.double_on_precision_error = false;
-  const auto done = raise_precision(
-      digits + 22, policy,
-      [&] {
-        if (b) a = std::move(b);
-        b.emplace(solve_at(wave, p, rig, resonant, working_digits10<mpfr>(), opt, &*a));
-        return true;
-      },
-      [&](bool) { return Shortfall{settled(a->r, b->r), std::max(12, b->digits / 2)}; });
-  if (!done)
-    throw SolverError(rig_context(wave, p, rig) + "rig dynamics: mu did not settle to " + std::to_string(digits) +
-                      " digits (" + format_significant(a->r.mu, digits + 2) + " at " + std::to_string(a->digits) +
-                      " digits, " + format_significant(b->r.mu, digits + 2) + " at " + std::to_string(b->digits) + ")");
-  return {std::move(*a), std::move(*b)};
+  return detail::two_precisions<Solved>(
+      digits, [&](int d, const Solved* seed) { return solve_at(wave, p, rig, resonant, d, opt, seed); },
+      [&](const Solved& lower, const Solved& higher) { return settled(lower.r, higher.r); }, rig_context(wave, p, rig),
+      "rig dynamics");
 }
 
 }  // namespace
