@@ -256,13 +256,19 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
 py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta, const py::object& gamma,
                               const Evaluation& e) {
   const py::module_ np = py::module_::import("numpy");
-  const WaveSpec wave = to_wave(wave_obj);
+  const bool constant = e.inplane && e.inplane->constant_normal;
+  WaveSpec wave;
+  if (constant)
+    wave.name = "constant";  // n = 1: the in-plane solver reads no wave
+  else
+    wave = to_wave(wave_obj);
   const Precision precision = to_precision(e.digits, e.type);
   BatchOptions options;
   options.profile = e.profile;
   options.threads = e.threads;
   options.escalate = e.escalate;
   options.rig = e.rig;
+  options.inplane = e.inplane;
   if (e.max_iterations) {
     if (*e.max_iterations < 1 || *e.max_iterations > root_iterations_limit)
       throw InputError("max_iterations = " + std::to_string(*e.max_iterations) + ": expected 1 to " +
@@ -270,7 +276,9 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
     options.solver.max_root_iterations = static_cast<std::uintmax_t>(*e.max_iterations);
   }
 
-  const bool with_gamma = e.quantity == Quantity::mu;
+  const bool with_gamma = e.quantity == Quantity::mu && !constant;
+  if (constant && !gamma.is_none())
+    throw InputError("gamma = " + py_repr(gamma) + " with wave 'constant': the normal force is constant (give gamma=None)");
   const py::array b = np.attr("asarray")(beta);
   const py::array g = np.attr("asarray")(with_gamma ? gamma : py::object(py::float_(0.0)));
   const py::tuple shape = np.attr("broadcast")(b, g).attr("shape");  // ValueError if they do not broadcast

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/rig.hpp"
 
 namespace vibrofric::python {
@@ -22,6 +23,7 @@ struct Evaluation {
   bool certify = false;
   std::string profile_text;  // as given, for messages
   std::optional<RigSpec> rig;  // kappa, omega, zeta (rig dynamics)
+  std::optional<InPlaneSpec> inplane;  // longitudinal, phase, in_plane_wave; wave "constant"
 };
 
 // Values of `quantity` at the broadcast of beta and gamma (gamma None for psi): one evaluate_stream

@@ -63,6 +63,14 @@ const char* const kRig =
     "  slip that goes backward), the body's amplitude, the largest backward slip and the largest\n"
     "  Floquet multiplier (0: below what difference quotients resolve) after the value.\n";
 
+const char* const kInPlane =
+    "in-plane oscillation (model.md): --longitudinal A [--phase P] [--in-plane-wave W] move the\n"
+    "  spring's far end along D = beta phi + A w_p(phi + P) while the normal indentation oscillates\n"
+    "  (--wave constant: a constant normal force, no --gamma; A in units of mu0 F_N/k_x); beta >= 0;\n"
+    "  flat punch, longitudinal only. mu prints mean_lateral (the force across the sliding\n"
+    "  direction, 0 here) and the stick, slip and flight fractions after the value; a negative mu\n"
+    "  means the oscillation pushes the body forward.\n";
+
 const char* const kProfiles =
     "profiles P (model.md MDR): flat (the flat punch), sphere, cone, power:N (N >= 1, sigma = x^N),\n"
     "  wearflat:LAMBDA (sphere with a wear flat, LAMBDA = b^2/(R A) > 0), profile:FILE (lines\n"
@@ -101,8 +109,8 @@ const std::vector<CommandSpec>& commands() {
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
         {"format", "F", "text | csv | json", "text", format_of_point},
         kCertifyFlag},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags},
-       std::string(kWaves) + kProfiles + kRig,
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags, &kInPlaneFlags},
+       std::string(kWaves) + kProfiles + kRig + kInPlane,
        run_mu},
       {"psi", "psi --wave W --beta B: Psi_w(beta) (Eq. 12), flat punch, non-jumping",
        {{"beta", "B", "beta (Eq. 5), a decimal > 0 (required)", "", decimal_beta},
@@ -129,8 +137,8 @@ const std::vector<CommandSpec>& commands() {
          [](Flags& f, const std::string& t) { f.threads = static_cast<unsigned>(integer(t, "--threads", 0, max_threads)); }},
         {"format", "F", "csv | json", "csv", format_of_rows},
         kCertifyFlag},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags},
-       std::string(kWaves) + kProfiles + kRig,
+       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags, &kInPlaneFlags},
+       std::string(kWaves) + kProfiles + kRig + kInPlane,
        run_sweep},
       {"physical", "physical --wave W --E1 PA --nu1 NU --E2 PA --nu2 NU [--G1 PA --G2 PA] --v0 M/S --f HZ\n"
                    "                          (--A M | --unit U) (--u-mean M | --F-N N) --mu0 MU [--shape S GEOMETRY]",

@@ -15,6 +15,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 
 namespace vibrofric::tool {
@@ -50,6 +51,9 @@ struct Flags {
   std::optional<std::string> output, claim;
   // Rig dynamics (model.md): κ, Ω, ζ
   InputValue kappa, omega, zeta;
+  // In-plane oscillation (model.md): a_l, the phase P, the in-plane wave
+  InputValue longitudinal, phase;
+  std::optional<std::string> in_plane_wave;
   // physical, by flag name: each number input's value, or a swept input's values (FROM:TO:N), read
   // by read_physical; shape and unit as typed.
   std::map<std::string, std::vector<InputValue>> physical;
@@ -109,6 +113,7 @@ extern const std::vector<FlagSpec> kWaveFlags;
 extern const std::vector<FlagSpec> kPrecisionFlags;
 extern const std::vector<FlagSpec> kSolverFlags;
 extern const std::vector<FlagSpec> kRigFlags;
+extern const std::vector<FlagSpec> kInPlaneFlags;
 extern const FlagSpec kCertifyFlag;
 void decimal_beta(Flags& f, const std::string& t);
 void profile_named(Flags& f, const std::string& t);
@@ -123,6 +128,11 @@ const std::string& need(const Flags& f, const std::optional<std::string>& value,
 const InputValue& need(const Flags& f, const InputValue& value, const std::string& name);
 Precision precision_of(const Flags& f);
 BatchOptions batch_options(const Flags& f);
+// The in-plane drive of --longitudinal, --phase, --in-plane-wave and --wave constant (none: the paper's model).
+std::optional<InPlaneSpec> inplane_options(const Flags& f);
+// The normal wave of --wave: read_wave's, or for --wave constant (with the in-plane drive) a
+// WaveSpec named "constant" that the in-plane solver does not read.
+WaveSpec normal_wave(const Flags& f, const std::optional<InPlaneSpec>& inplane);
 void write_csv_row(const std::vector<std::string>& fields);
 nlohmann::ordered_json json_record(const std::vector<std::string>& names, const std::vector<std::string>& values);
 extern std::string pending_diagnostics;

@@ -53,7 +53,39 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
   return write_record(names, values, format);
 }
 
+// mu with --longitudinal (or --wave constant): the value, then the periodic state's fractions.
+int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& precision, Format format) {
+  const WaveSpec wave = normal_wave(f, spec);
+  if (spec.constant_normal && f.gamma.given())
+    throw InputError("--gamma " + detail::visible(f.gamma.text()) + " with --wave constant: the normal force is constant (give no --gamma)");
+  const Point p{need(f, f.beta, "beta"), spec.constant_normal ? InputValue() : need(f, f.gamma, "gamma")};
+  const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver);
+  const std::vector<std::pair<std::string, std::string>> fields{
+      {"mean_lateral", r.mean_lateral.text()},     {"stick_fraction", r.stick_fraction.text()},
+      {"slip_fraction", r.slip_fraction.text()},   {"backward_slip_fraction", r.backward_fraction.text()},
+      {"flight_fraction", r.flight_fraction.text()}, {"relative_error_estimate", r.relative_error.text()}};
+  if (format == Format::text) {
+    std::cout << r.mu << '\n';
+    for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
+    return 0;
+  }
+  std::vector<std::string> names{"wave", "beta", "gamma", "longitudinal", "phase", "in_plane_wave", "mu_over_mu0"};
+  std::vector<std::string> values{wave.name, p.beta.text(),
+                                  spec.constant_normal ? std::string() : p.gamma.text(), spec.longitudinal.text(),
+                                  spec.phase.text(), spec.wave.name, r.mu};
+  for (const auto& [name, value] : fields) {
+    names.push_back(name);
+    values.push_back(value);
+  }
+  return write_record(names, values, format);
+}
+
 int run_point(const Flags& f, Quantity q) {
+  if (const auto spec = inplane_options(f)) {
+    if (q == Quantity::psi)
+      throw InputError("--longitudinal does not apply to psi: Psi (Eq. 12) belongs to the normal oscillation alone (use mu)");
+    return print_inplane(f, *spec, precision_of(f), f.format.value_or(Format::text));
+  }
   const WaveSpec wave = read_wave(f);
   const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : InputValue()};
   const BatchOptions opt = batch_options(f);

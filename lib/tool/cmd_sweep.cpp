@@ -16,12 +16,19 @@
 namespace vibrofric::tool {
 
 int run_sweep(const Flags& f) {
-  const WaveSpec wave = read_wave(f);
+  const std::optional<InPlaneSpec> inplane = inplane_options(f);
+  const WaveSpec wave = normal_wave(f, inplane);
   if (f.betas.empty()) throw InputError("missing --beta for 'sweep'");
-  // --quantity psi: Ψ_w(β) (Eq. 12), which has no γ.
+  // --quantity psi: Ψ_w(β) (Eq. 12), which has no γ; nor has a constant normal force.
   const Quantity q = f.quantity;
+  const bool constant = inplane && inplane->constant_normal;
+  if (inplane && q == Quantity::psi)
+    throw InputError("--longitudinal does not apply to --quantity psi: Psi (Eq. 12) belongs to the normal oscillation alone");
   std::vector<InputValue> gammas;
-  if (q == Quantity::psi) {
+  if (constant) {
+    if (!f.gammas.empty()) throw InputError("--gamma with --wave constant: the normal force is constant (give no --gamma)");
+    gammas.emplace_back();
+  } else if (q == Quantity::psi) {
     if (!f.gammas.empty()) throw InputError("--gamma does not apply to --quantity psi: Psi_w(beta) has no gamma (Eq. 12)");
     gammas.emplace_back();
   } else {
@@ -63,8 +70,9 @@ int run_sweep(const Flags& f) {
   std::vector<std::string> names{"wave"};
   if (curved) names.push_back("profile");
   names.push_back("beta");
-  if (q == Quantity::mu) names.push_back("gamma");
+  if (q == Quantity::mu && !constant) names.push_back("gamma");
   if (opt.rig) names.insert(names.end(), {"kappa", "omega", "zeta"});
+  if (inplane) names.insert(names.end(), {"longitudinal", "phase", "in_plane_wave"});
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   if (certifier)
@@ -82,7 +90,7 @@ int run_sweep(const Flags& f) {
     std::vector<Point> corners;
     for (bool big_beta : {false, true})
       for (bool big_gamma : {false, true})
-        corners.push_back({extreme(betas, big_beta), q == Quantity::mu ? extreme(gammas, big_gamma) : InputValue()});
+        corners.push_back({extreme(betas, big_beta), q == Quantity::mu && !constant ? extreme(gammas, big_gamma) : InputValue()});
     BatchOptions quiet = opt;
     quiet.progress = nullptr;
     evaluate(wave, q, corners, prec, quiet);
@@ -96,8 +104,9 @@ int run_sweep(const Flags& f) {
     std::vector<std::string> r{wave.name};
     if (curved) r.push_back(opt.profile.name);
     r.push_back(pt.beta.text());
-    if (q == Quantity::mu) r.push_back(pt.gamma.text());
+    if (q == Quantity::mu && !constant) r.push_back(pt.gamma.text());
     if (opt.rig) r.insert(r.end(), {opt.rig->kappa.text(), opt.rig->omega.text(), opt.rig->zeta.text()});
+    if (inplane) r.insert(r.end(), {inplane->longitudinal.text(), inplane->phase.text(), inplane->wave.name});
     r.push_back(value.text);
     if (certifier)
       for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), certifier->encloses()))

@@ -1485,13 +1485,14 @@ WAVE = ["--wave", "--column", "--periods", "--diagnostics"]
 PRECISION = ["--digits", "--type", "--no-escalate"]
 SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
 RIG = ["--kappa", "--omega", "--zeta"]  # psi lists them to refuse them with the reason
+INPLANE = ["--longitudinal", "--phase", "--in-plane-wave"]
 HELP_FLAGS = {
-    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG,
+    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG + INPLANE,
            {"--profile": "flat", "--format": "text", "--digits": "50", "--type": "mpfr", "--area": "auto",
-            "--max-levels": "15"}),
+            "--max-levels": "15", "--phase": "0", "--in-plane-wave": "sine"}),
     "psi": (["--beta", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG, {"--format": "text"}),
-    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG,
-              {"--quantity": "mu", "--threads": "0", "--format": "csv"}),
+    "sweep": (["--beta", "--gamma", "--quantity", "--profile", "--threads", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG
+              + INPLANE, {"--quantity": "mu", "--threads": "0", "--format": "csv", "--phase": "0", "--in-plane-wave": "sine"}),
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
@@ -2150,6 +2151,22 @@ def certify_tests():
         ["maybe"], ["certify"])
 
 
+def sixty_digits_rounded(args):
+    """mu ARGS (rig or in-plane) in double and at 20 digits is its 60-digit value rounded, the JSON
+    record's value is the 20-digit one and its mode fractions add up to 1; the record."""
+    ref = F(ok_run(["mu"] + args + ["--digits", "60"]).splitlines()[0])
+    dbl = ok_run(["mu"] + args + ["--type", "double"]).splitlines()
+    if float(dbl[0]) != float(ref):
+        raise Fail("mu %s --type double: %s, the 60-digit value rounds to %r" % (" ".join(args), dbl[0], float(ref)))
+    d20 = ok_run(["mu"] + args + ["--digits", "20"]).splitlines()[0]
+    expect_digits(d20, ref, 20, "mu %s --digits 20" % " ".join(args))
+    out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+    total = F(out["stick_fraction"]) + F(out["slip_fraction"]) + F(out["flight_fraction"])
+    if abs(total - 1) > F("1e-15") or out["mu_over_mu0"] != d20:
+        raise Fail("mu %s --format json: %r" % (" ".join(args), out))
+    return out
+
+
 def rig_tests():
     """Rig dynamics (--kappa, --omega, --zeta; model.md): refusals, and the printed digits against the
     same algorithm at much higher precision."""
@@ -2177,15 +2194,8 @@ def rig_tests():
                  ["--wave", "square", "--beta", "1.2", "--gamma", "1.25", "--kappa", "0.6", "--omega", "4", "--zeta", "0.05"],
                  ["--wave", "sine", "--beta", "1", "--gamma", "0.5", "--kappa", "1", "--omega", "1"])
         for args in cases[:1] if os.environ.get("VIBROFRIC_SANITIZED") == "1" else cases:
-            ref = F(ok_run(["mu"] + args + ["--digits", "60"]).splitlines()[0])
-            dbl = ok_run(["mu"] + args + ["--type", "double"]).splitlines()
-            if float(dbl[0]) != float(ref):
-                raise Fail("mu %s --type double: %s, the 60-digit value rounds to %r" % (" ".join(args), dbl[0], float(ref)))
-            d20 = ok_run(["mu"] + args + ["--digits", "20"]).splitlines()[0]
-            expect_digits(d20, ref, 20, "mu %s --digits 20" % " ".join(args))
-            out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
-            total = F(out["stick_fraction"]) + F(out["slip_fraction"]) + F(out["flight_fraction"])
-            if abs(total - 1) > F("1e-15") or out["mu_over_mu0"] != d20 or not 0 <= float(out["floquet_multiplier"]) < 1:
+            out = sixty_digits_rounded(args)
+            if not 0 <= float(out["floquet_multiplier"]) < 1:
                 raise Fail("mu %s --format json: %r" % (" ".join(args), out))
     case("rig: double and 20 digits are the 60-digit value rounded; fractions add up to 1", digits_against_more_digits)
 
@@ -2343,6 +2353,86 @@ def rig_tests():
          "--k-system", "1e7"], ["sphere"], ["does not decouple"])
 
 
+def inplane_tests():
+    """In-plane oscillation, longitudinal (--longitudinal, --phase, --in-plane-wave, --wave constant;
+    model.md): refusals, a zero amplitude printing what mu prints, and the printed digits against the
+    same algorithm at much higher precision."""
+    sine = ["mu", "--wave", "sine", "--beta", "1", "--gamma", "0.5"]
+    bad("in-plane: negative amplitude", sine + ["--longitudinal", "-1"], ["-1"], ["longitudinal", ">= 0"])
+    bad("in-plane: amplitude nan", sine + ["--longitudinal", "nan"], ["nan"], ["longitudinal"])
+    bad("in-plane: phase inf", sine + ["--longitudinal", "1", "--phase", "inf"], ["inf"], ["phase"])
+    bad("in-plane: phase without amplitude", sine + ["--phase", "0.25"], [], ["--phase", "--longitudinal"])
+    bad("in-plane: unknown in-plane wave", sine + ["--longitudinal", "1", "--in-plane-wave", "sinus"], ["sinus"], [])
+    bad("in-plane: an in-plane wave from a file",
+        sine + ["--longitudinal", "1", "--in-plane-wave", "samples:" + write("inplane.txt", "0\n1\n0\n-1\n")],
+        [], ["catalogue"])
+    bad("in-plane: gamma with a constant normal force",
+        ["mu", "--wave", "constant", "--beta", "1", "--gamma", "0.5", "--longitudinal", "1"], ["0.5"], ["gamma", "constant"])
+    bad("in-plane: negative beta", sine[:4] + ["-1", "--gamma", "0.5", "--longitudinal", "1"], ["-1"], ["beta", ">= 0"])
+    bad("in-plane: with --kappa", sine + ["--longitudinal", "1", "--kappa", "1", "--omega", "2"], [], ["--kappa", "in-plane"])
+    bad("in-plane: with --certify", sine + ["--longitudinal", "1", "--certify"], [], ["--certify"])
+    bad("in-plane: a curved profile", sine + ["--longitudinal", "1", "--profile", "sphere"], ["sphere"], ["flat punch"])
+    bad("in-plane: no contact", ["mu", "--wave", "sine", "--beta", "1", "--gamma", "-1", "--longitudinal", "1"],
+        ["-1"], ["gamma"])
+    solver_failure("in-plane: sticking through the period has no unique state",
+                   ["mu", "--wave", "constant", "--beta", "0", "--longitudinal", "0.5"], ["no unique periodic state"])
+
+    def zero_amplitude_is_mu():
+        for wave, beta, gamma in (("sine", "2", "1.5"), ("tri", "0.7", "-0.3"), ("square", "1.25", "0.2"),
+                                  ("sawtooth-right", "3", "2")):
+            for prec in (["--type", "double"], ["--digits", "30"], ["--type", "long-double"]):
+                args = ["--wave", wave, "--beta", beta, "--gamma", gamma] + prec
+                paper = ok_run(["mu"] + args)
+                inplane = ok_run(["mu"] + args + ["--longitudinal", "0", "--phase", "0.3"]).splitlines()
+                if inplane[0] + "\n" != paper or inplane[1] != "mean_lateral: 0" or \
+                        inplane[4] != "backward_slip_fraction: 0":
+                    raise Fail("mu %s --longitudinal 0: %r, mu prints %r" % (" ".join(args), inplane, paper))
+    case("in-plane: --longitudinal 0 prints exactly what mu prints", zero_amplitude_is_mu)
+
+    def digits_against_more_digits():
+        cases = (["--wave", "sine", "--beta", "0", "--gamma", "0.5", "--longitudinal", "1", "--phase", "0.25"],
+                 ["--wave", "tri", "--beta", "1.3", "--gamma", "0.3", "--longitudinal", "0.7", "--phase", "0.1"],
+                 ["--wave", "square", "--beta", "0.5", "--gamma", "0.2", "--longitudinal", "2", "--phase", "0.35",
+                  "--in-plane-wave", "square"],
+                 ["--wave", "constant", "--beta", "314.159", "--longitudinal", "100"])
+        for args in cases:
+            out = sixty_digits_rounded(args)
+            if out["mean_lateral"] != "0" or F(out["backward_slip_fraction"]) > F(out["slip_fraction"]):
+                raise Fail("mu %s --format json: %r" % (" ".join(args), out))
+    case("in-plane: double and 20 digits are the 60-digit value rounded; fractions add up to 1",
+         digits_against_more_digits)
+
+    def ratchet_and_amontons():
+        ratchet = ok_run(sine[:4] + ["0", "--gamma", "0.5", "--longitudinal", "1", "--phase", "0.25",
+                                     "--type", "double"]).splitlines()
+        if abs(float(ratchet[0]) + 0.5364) > 5e-5 or ratchet[5] != "flight_fraction: 0.33333333333333333":
+            raise Fail("the ratchet (model.md: -0.5364, a third of the period in flight): %r" % ratchet)
+        constant = ok_run(["mu", "--wave", "constant", "--beta", "0.5", "--type", "double"]).splitlines()
+        if F(constant[0]) != 1 or constant[3] != "slip_fraction: 1.0000000000000000":
+            raise Fail("a constant normal force without oscillation slides at mu0: %r" % constant)
+    case("in-plane: the ratchet's value and a constant normal force without oscillation", ratchet_and_amontons)
+
+    def sweep_rows():
+        for wave in (["--wave", "sine", "--gamma", "0.5"], ["--wave", "constant"]):
+            rows = ok_run(["sweep"] + wave + ["--beta", "0:2:3", "--longitudinal", "1.5", "--phase", "0.25",
+                                              "--type", "double"]).splitlines()
+            gamma = ["gamma"] if "--gamma" in wave else []
+            header = ",".join(["wave", "beta"] + gamma + ["longitudinal", "phase", "in_plane_wave", "mu_over_mu0"])
+            if rows[0] != header or len(rows) != 4:
+                raise Fail("sweep with --longitudinal: %r" % rows)
+            for row in rows[1:]:
+                f = row.split(",")
+                one = ok_run(["mu"] + wave + ["--beta", f[1], "--longitudinal", "1.5", "--phase", "0.25",
+                                              "--type", "double"]).splitlines()[0]
+                if f[-1] != one or f[-2] != "sine" or f[-3] != "0.25" or f[-4] != "1.5":
+                    raise Fail("sweep row %r, mu prints %s" % (row, one))
+    case("in-plane: sweep rows are mu's values, with the drive's columns", sweep_rows)
+    bad("in-plane: sweep psi", ["sweep", "--wave", "sine", "--beta", "1:2:2", "--quantity", "psi", "--longitudinal", "1"],
+        [], ["psi"])
+    bad("in-plane: sweep constant with gamma", ["sweep", "--wave", "constant", "--beta", "1:2:2", "--gamma", "0.5",
+                                                "--longitudinal", "1"], [], ["--gamma", "constant"])
+
+
 def collect():
     bad_input_tests()
     format_tests()
@@ -2355,6 +2445,7 @@ def collect():
     range_and_fit_detail_tests()
     certify_tests()
     rig_tests()
+    inplane_tests()
 
 
 collect()

@@ -416,6 +416,7 @@ class PointEvaluator {
   Real value(const Point& p) {
     check_(p);
     if (options_.rig) return rig(p);
+    if (options_.inplane && !papers_model(*options_.inplane)) return inplane(p);
     if constexpr (is_runtime_precision_v<Real>)
       return evaluate_point<Real>(waves_, spec_, q_, p, digits_, options_.solver);
     else
@@ -429,12 +430,26 @@ class PointEvaluator {
       throw InputError("rig dynamics with profile " + options_.profile.name +
                        ": the springs of a curved contact share the body, so the MDR row does not decouple "
                        "(the flat punch only)");
+    return decided(rig_value(spec_, p, *options_.rig, precision(), options_.solver));
+  }
+  // In-plane oscillation: the same, from the in-plane solver.
+  Real inplane(const Point& p) const {
+    if (q_ == Quantity::psi)
+      throw InputError("in-plane oscillation gives mu only: Psi (Eq. 12) belongs to the normal oscillation alone");
+    if (options_.profile.kind != ProfileKind::flat)
+      throw InputError("in-plane oscillation with profile " + options_.profile.name + ": the flat punch only");
+    return decided(inplane_value(spec_, p, *options_.inplane, precision(), options_.solver));
+  }
+  // This worker's type and digits as a Precision, and a value decided in mpfr as this type holds it.
+  Precision precision() const {
     Precision precision{NumberType::mpfr, digits_};
     if constexpr (std::is_same_v<Real, double>) precision.type = NumberType::float64;
     if constexpr (std::is_same_v<Real, long double>) precision.type = NumberType::float80;
     if constexpr (std::is_same_v<Real, bin50>) precision.type = NumberType::bin50;
     if constexpr (std::is_same_v<Real, bin100>) precision.type = NumberType::bin100;
-    const mpfr v = rig_value(spec_, p, *options_.rig, precision, options_.solver);
+    return precision;
+  }
+  static Real decided(const mpfr& v) {
     if constexpr (is_runtime_precision_v<Real>) return v;
     else return rounded<Real>(v);
   }

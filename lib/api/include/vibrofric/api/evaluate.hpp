@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/input_value.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/number_type.hpp"
@@ -64,6 +65,9 @@ struct BatchOptions {
   // Rig dynamics (rig.hpp, model.md): μ̄/μ0 of a body of mass m on a system spring instead of the
   // paper's quasi-static model (none: the paper's model, unchanged). Flat punch and μ only.
   std::optional<RigSpec> rig;
+  // In-plane oscillation (inplane.hpp, model.md): the drive's longitudinal oscillation (none, or
+  // the paper's model: the paper's solver, unchanged). Flat punch and μ only.
+  std::optional<InPlaneSpec> inplane;
 };
 
 // Formatted values, in the order of `points`. Throws the error of the first failing point

@@ -1,0 +1,59 @@
+// In-plane and combined oscillation at a requested precision (model.md, "In-plane and combined
+// oscillation"): μ̄/μ0 of the longitudinal stop operator (core/inplane/inplane.hpp), with the mode
+// fractions, from decimal inputs to decimal text. Computed in mpfr at two working precisions; the
+// printed digits are those both agree on. With a zero amplitude the value is the paper's model's,
+// computed by its solver (evaluate.hpp), so that it prints exactly what `mu` prints.
+#pragma once
+#include <string>
+
+#include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/decimal.hpp"
+#include "vibrofric/api/input_value.hpp"
+#include "vibrofric/core/flat/solver.hpp"
+
+namespace vibrofric {
+
+struct Point;
+struct Precision;
+
+// The in-plane drive as typed: a_l = k_x u_x / force unit (≥ 0), the phase P of the in-plane
+// oscillation after the normal one (periods), the in-plane wave p (a catalogue wave), and whether
+// the normal force is constant (n ≡ 1: the point's γ is then not given).
+struct InPlaneSpec {
+  InputValue longitudinal;
+  InputValue phase = InputValue(*Decimal::read("0"));
+  WaveSpec wave = parse_wave("sine");
+  bool constant_normal = false;
+};
+
+// One point's periodic state; each number with the significant digits (at most the request's, and
+// 17) on which the two working precisions agree.
+struct InPlaneReport {
+  std::string mu;  // μ̄/μ0 = ∫s_x/∫n
+  Significant mean_lateral;  // ∫s_y/∫n
+  Significant stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // of the period
+  Significant relative_error;  // estimate: the two precisions apart (2 digits), relative to |μ̄|, or
+                               // to 1 where μ̄ is 0 (|μ̄| ≤ 1: a symmetric drive at β = 0 gives 0)
+  int working_digits = 0;      // the higher of the two precisions
+};
+
+// The drive checked: a finite decimal amplitude ≥ 0, a finite phase, a catalogue in-plane wave.
+void check_inplane(const InPlaneSpec& spec);
+
+// InputError for bad input (β < 0, an amplitude < 0, γ without contact or given with a constant
+// normal force); SolverError where no unique periodic state exists (it sticks through the period)
+// or the precisions do not agree.
+InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
+                               const Precision& precision, const Options& solver = {});
+
+namespace detail {
+// Whether the drive is the paper's model (no in-plane amplitude, the normal force oscillating):
+// then the paper's solver gives the value (evaluate.hpp), exactly as without the drive.
+bool papers_model(const InPlaneSpec& spec);
+// The value evaluate() prints for `precision` with options.inplane (not the paper's model): the
+// higher precision's μ̄, where the two precisions' difference decides the printed digits.
+mpfr inplane_value(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec, const Precision& precision,
+                   const Options& solver, InPlaneReport* report = nullptr);
+}  // namespace detail
+
+}  // namespace vibrofric

@@ -1,0 +1,138 @@
+// In-plane and combined oscillation from decimal text (inplane.hpp): the core's InPlaneSolver in
+// mpfr at two working precisions, printed where they agree.
+#include "vibrofric/api/inplane.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/ladder.hpp"
+#include "vibrofric/api/rig.hpp"
+#include "evaluate_impl.hpp"
+#include "two_precisions.hpp"
+#include "vibrofric/core/inplane/inplane.hpp"
+
+namespace vibrofric {
+
+namespace {
+
+// A typed decimal: InputError quoting it where it is missing, not finite or below `least`.
+void check_decimal(const InputValue& in, const char* name, bool nonnegative) {
+  if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
+  const mpfr v = in.to<mpfr>();
+  using std::isfinite;
+  if (!isfinite(v) || (nonnegative && v < 0))
+    throw InputError(std::string(name) + " = " + detail::visible(in.text()) + ": expected a finite decimal" +
+                     (nonnegative ? " >= 0" : ""));
+}
+
+// "wave W, beta = B, gamma = G, longitudinal = A, phase = P, in-plane wave V: ", as typed.
+std::string inplane_context(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec) {
+  return "wave " + (spec.constant_normal ? std::string("constant") : normal.name) + ", beta = " + p.beta.text() +
+         (spec.constant_normal ? std::string() : ", gamma = " + p.gamma.text()) + ", longitudinal = " +
+         spec.longitudinal.text() + ", phase = " + spec.phase.text() + ", in-plane wave " + spec.wave.name + ": ";
+}
+
+struct Solved {
+  InPlaneResult<mpfr> r;
+  int digits;
+};
+
+Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec, int digits, const Options& opt) {
+  PrecisionScope scope(static_cast<unsigned>(digits));
+  const auto p_wave = make_waveform<mpfr>(spec.wave);
+  std::unique_ptr<Waveform<mpfr>> w;
+  if (!spec.constant_normal) w = make_waveform<mpfr>(normal);
+  const InPlaneDrive<mpfr> drive{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()};
+  try {
+    return {solve_inplane<mpfr>(w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave,
+                                p.beta.to<mpfr>(), drive, opt),
+            digits};
+  } catch (const SolverError& e) {
+    throw SolverError(inplane_context(normal, p, spec) + e.what());
+  }
+}
+
+}  // namespace
+
+void check_inplane(const InPlaneSpec& spec) {
+  check_decimal(spec.longitudinal, "longitudinal", true);
+  check_decimal(spec.phase, "phase", false);
+  if (spec.wave.kind == WaveKind::fourier || spec.wave.kind == WaveKind::samples)
+    throw InputError("in-plane wave " + detail::visible(spec.wave.name) +
+                     ": expected a catalogue wave (sine, triangle, sawtooth-right, sawtooth-left, square, power:p)");
+}
+
+bool detail::papers_model(const InPlaneSpec& spec) {
+  return !spec.constant_normal && spec.longitudinal.to<mpfr>() == 0;
+}
+
+mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
+                           const Precision& precision, const Options& opt, InPlaneReport* report) {
+  check_inplane(spec);
+  check_decimal(p.beta, "beta", true);
+  if (spec.constant_normal && p.gamma.given())
+    throw InputError("gamma = " + detail::visible(p.gamma.text()) +
+                     " with a constant normal force: the normal force is the unit (give no gamma)");
+  if (!spec.constant_normal && !p.gamma.given()) throw InputError("gamma is empty: expected a decimal number");
+  const int digits = output_digits(precision);
+  // Two precisions; the higher raised until their difference decides the printed digits.
+  bool zero = false;
+  const auto delta = [](const InPlaneResult<mpfr>& lower, const InPlaneResult<mpfr>& higher) {
+    using std::abs;
+    return mpfr(2 * abs(mpfr(lower.mu - higher.mu)));
+  };
+  const auto [a, b] = two_precisions<Solved>(
+      digits, [&](int d, const Solved*) { return solve_at(normal, p, spec, d, opt); },
+      [&](const Solved& lower, const Solved& higher) {
+        // |μ̄| ≤ 1 (|s| ≤ n), so both values within 10^(10 − digits) of 0 at the lower precision are
+        // a mean force that vanishes (a symmetric drive at β = 0): 0, which no rounding test decides.
+        PrecisionScope low(static_cast<unsigned>(lower.digits));
+        const mpfr noise = pow(mpfr(10), 10 - lower.digits);
+        using std::abs;
+        zero = abs(lower.r.mu) <= noise && abs(higher.r.mu) <= noise;
+        if (zero) return true;
+        const mpfr d = delta(lower.r, higher.r);
+        return decides(mpfr(higher.r.mu - d), mpfr(higher.r.mu + d), precision, digits);
+      },
+      inplane_context(normal, p, spec), "in-plane oscillation");
+  PrecisionScope scope(static_cast<unsigned>(b.digits));
+  if (report) {
+    const int most = std::min(digits, 17);
+    const mpfr d = delta(a.r, b.r);
+    report->mean_lateral = agreed(a.r.mean_lateral, b.r.mean_lateral, most);
+    report->stick_fraction = agreed(a.r.stick_fraction, b.r.stick_fraction, most);
+    report->slip_fraction = agreed(a.r.slip_fraction, b.r.slip_fraction, most);
+    report->backward_fraction = agreed(a.r.backward_fraction, b.r.backward_fraction, most);
+    report->flight_fraction = agreed(a.r.flight_fraction, b.r.flight_fraction, most);
+    using std::abs;
+    report->relative_error = {mpfr(zero || b.r.mu == 0 ? d : mpfr(d / abs(b.r.mu))), 2};
+    report->working_digits = b.digits;
+  }
+  return zero ? mpfr(0) : b.r.mu;
+}
+
+InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
+                               const Precision& precision, const Options& opt) {
+  if (precision.type == NumberType::mpfr && (precision.digits < min_digits || precision.digits > max_digits))
+    throw InputError("digits = " + std::to_string(precision.digits) + ": expected " + std::to_string(min_digits) +
+                     " to " + std::to_string(max_digits));
+  check_inplane(spec);
+  if (!spec.constant_normal && p.gamma.given()) {
+    detail::ContactCheck check(normal, Quantity::mu);
+    check(p);
+  }
+  InPlaneReport report;
+  const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, &report);
+  // A zero amplitude is the paper's model: its value exactly as `mu` prints it.
+  if (detail::papers_model(spec)) {
+    BatchOptions batch;
+    batch.solver = opt;
+    report.mu = evaluate(normal, Quantity::mu, {p}, precision, batch).front();
+  } else {
+    report.mu = detail::rig_text(v, precision);
+  }
+  return report;
+}
+
+}  // namespace vibrofric

@@ -1,0 +1,62 @@
+"""In-plane oscillation from Python (longitudinal, phase, in_plane_wave, wave 'constant';
+model.md): the tool's digits, the paper's model at zero amplitude, arrays, and the refusals."""
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import vibrofric
+
+TOOL = os.environ.get("VIBROFRIC_TOOL")
+
+
+def tool(*args):
+    return subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()[0]
+
+
+@pytest.mark.usefixtures("tool_path")
+@pytest.mark.parametrize("wave, beta, gamma, kw, flags", [
+    ("sine", "0", "0.5", dict(longitudinal="1", phase="0.25"), ["--longitudinal", "1", "--phase", "0.25"]),
+    ("triangle", "1.3", "0.3", dict(longitudinal="0.7", phase="0.1", in_plane_wave="square"),
+     ["--longitudinal", "0.7", "--phase", "0.1", "--in-plane-wave", "square"]),
+    ("constant", "3", None, dict(longitudinal="2.5", in_plane_wave="triangle"),
+     ["--longitudinal", "2.5", "--in-plane-wave", "triangle"]),
+])
+def test_the_tools_digits(wave, beta, gamma, kw, flags):
+    args = ["mu", "--wave", wave, "--beta", beta] + (["--gamma", gamma] if gamma else []) + flags
+    assert vibrofric.mu(wave, beta, gamma, digits=25, strings=True, **kw) == tool(*args, "--digits", "25")
+    assert vibrofric.mu(wave, beta, gamma, **kw) == float(tool(*args, "--type", "double"))
+
+
+def test_zero_amplitude_is_the_papers_model():
+    for beta, gamma in ((2, 1.5), (0.7, -0.3)):
+        assert vibrofric.mu("sine", beta, gamma, longitudinal=0, phase=0.3) == vibrofric.mu("sine", beta, gamma)
+
+
+def test_arrays_broadcast_like_mu():
+    values = vibrofric.mu("sine", np.array([[0.0], [0.5]]), [0.5, 0.8], longitudinal=1, phase=0.25)
+    assert values.shape == (2, 2)
+    assert values[1, 0] == vibrofric.mu("sine", 0.5, 0.5, longitudinal=1, phase=0.25)
+    assert values[0, 0] < 0  # the ratchet (model.md): the oscillation pushes the body forward
+
+
+@pytest.mark.parametrize("args, kw, words", [
+    (("sine", 1, 0.5), dict(longitudinal=-1), ["longitudinal", "-1"]),
+    (("sine", 1, 0.5), dict(phase=0.25), ["phase", "longitudinal"]),
+    (("sine", 1, 0.5), dict(longitudinal=1, in_plane_wave="sinus"), ["sinus"]),
+    (("sine", 1, 0.5), dict(longitudinal=1, kappa=1, omega=2), ["kappa", "in-plane"]),
+    (("sine", 1, 0.5), dict(longitudinal=1, profile="sphere"), ["flat punch"]),
+    (("constant", 1, 0.5), dict(longitudinal=1), ["gamma", "constant"]),
+    (("sine", -1, 0.5), dict(longitudinal=1), ["beta", "-1"]),
+])
+def test_refusals(args, kw, words):
+    with pytest.raises(ValueError) as e:
+        vibrofric.mu(*args, **kw)
+    for w in words:
+        assert w in str(e.value)
+
+
+def test_sticking_through_the_period_is_a_solver_error():
+    with pytest.raises(vibrofric.SolverError, match="no unique periodic state"):
+        vibrofric.mu("constant", 0, None, longitudinal=0.5)
