@@ -323,6 +323,90 @@ unset multiplot
     return fig, dist
 
 
+INPLANE_AMPLITUDES = ["1", "10", "100"]
+RATCHET_AMPLITUDES = ["0.5", "1", "2"]
+
+
+def fig_inplane(r):
+    """In-plane oscillation (model.md): mu/mu0 against xi = beta/(2 pi a) for a longitudinal sine drive at
+    a constant normal force (`vibrofric sweep --wave constant --longitudinal A`) with the rigid limit
+    (2/pi) arcsin xi; and the ratchet's mean force against the phase P at beta = 0 (sine normal force,
+    gamma = 0.5; `vibrofric mu --longitudinal A --phase P`)."""
+    import math
+    blocks = []
+    for a in INPLANE_AMPLITUDES:
+        hi = "%.17g" % (2 * math.pi * float(a) * 1.5)
+        text = run([r.tool, "sweep", "--wave", "constant", "--beta", "0.001:%s:151" % hi, "--longitudinal", a,
+                    "--type", "double"])
+        rows = csv_rows(text)
+        ib, im = rows[0].index("beta"), rows[0].index("mu_over_mu0")
+        blocks.append(("a = " + a, [(float(x[ib]) / (2 * math.pi * float(a)), x[im]) for x in rows[1:]]))
+    blocks.append(("rigid", [(k / 100, 2 / math.pi * math.asin(min(k / 100, 1.0))) for k in range(0, 151)]))
+    r.write_data("inplane_xi.dat", blocks, "xi = beta/(2 pi a), mu/mu0; constant normal force, sine drive")
+    styles = ["lw 2 lc rgb '#d73027'", "lw 2 lc rgb '#4575b4'", "lw 2 lc rgb '#1a9850'"]
+    plots = ", ".join("'inplane_xi.dat' index %d using 1:2 with lines %s title 'a = %s'" % (i, styles[i], a)
+                      for i, a in enumerate(INPLANE_AMPLITUDES))
+    fig_xi = r.gnuplot("inplane_xi", """
+set title 'Longitudinal oscillation at a constant normal force: μ̄/μ0 against ξ = v0/(2π f u_x)'
+set xlabel 'ξ = β/(2πa)'
+set ylabel 'μ̄/μ0'
+set key bottom right
+set xrange [0:1.5]
+set yrange [0:1.05]
+plot %s, 'inplane_xi.dat' index %d using 1:2 with lines lw 2 dt 2 lc rgb 'black' title 'rigid: (2/π) arcsin ξ'
+""" % (plots, len(INPLANE_AMPLITUDES)))
+    blocks, phases = [], ["%.17g" % (k / 32) for k in range(33)]
+    for a in RATCHET_AMPLITUDES:
+        rows = []
+        for p in phases:
+            out = r.mu("sine", "0", "0.5", ["--longitudinal", a, "--phase", p, "--type", "double"]).splitlines()
+            rows.append((p, out[0]))
+        blocks.append(("a = " + a, rows))
+    r.write_data("inplane_ratchet.dat", blocks, "P (periods), mu/mu0 at beta = 0; sine normal force, gamma = 0.5, sine drive")
+    plots = ", ".join("'inplane_ratchet.dat' index %d using 1:2 with linespoints pt 7 ps 0.6 %s title 'a = %s'" %
+                      (i, styles[i], a) for i, a in enumerate(RATCHET_AMPLITUDES))
+    fig_ratchet = r.gnuplot("inplane_ratchet", """
+set title 'The ratchet: mean force ∫s/∫n at β = 0 against the phase P of the longitudinal oscillation (γ = 0.5)'
+set xlabel 'P (periods)'
+set ylabel '∫s dφ / ∫n dφ at β = 0'
+set key bottom right
+set xrange [0:1]
+plot %s
+""" % plots)
+    return fig_xi, fig_ratchet
+
+
+def inplane_section(w, figs, claims_table, inplane):
+    """In-plane oscillation (model.md, "In-plane and combined oscillation"): the figures and the claims."""
+    w("## In-plane oscillation")
+    w("")
+    w("`vibrofric mu --longitudinal A --phase P --in-plane-wave W` (and `--wave constant`) oscillate the far end of "
+      "the tangential spring along the sliding direction (`core/inplane/inplane.hpp`): the stop operator of the "
+      "drive D = βφ + A p(φ + P) in [−n, n], events on segments where each wave is one monotone branch, exact "
+      "areas, the periodic state as the one-period map's fixed point checked from a second start, the value printed "
+      "where two mpfr precisions agree. Checked by `tests/unit/test_inplane.cpp` (the catching-up scheme within its "
+      "step bound, closed forms, symmetries, the paper's model at A = 0) and by an independent mpmath implementation "
+      "(`tests/reference/inplane_mpmath.py`, 43 cases at 30 digits). The transverse and combined two-dimensional "
+      "drive is not implemented yet.")
+    w("")
+    for key, cap in (("inplane_xi", "Longitudinal oscillation at a constant normal force: μ̄/μ0 against "
+                      "ξ = β/(2πa) = v0/(2πf u_x) at a = 1, 10, 100, and the rigid limit (2/π) arcsin ξ "
+                      "(`vibrofric sweep --wave constant --longitudinal A --type double`)."),
+                     ("inplane_ratchet", "The ratchet: ∫s/∫n at β = 0 against the phase P for a sine normal "
+                      "force (γ = 0.5) and a sine longitudinal drive of amplitude a (`vibrofric mu --longitudinal A "
+                      "--phase P --type double`); below 0 the oscillation pushes the body.")):
+        w("![%s](%s)" % (cap, figs[key]))
+        w("")
+        w("*%s*" % cap)
+        w("")
+    claims_table(inplane)
+    for c in inplane:
+        w("- **%s**: %s" % (c["id"], c["how"]))
+        for m in c["measured"]:
+            w("  - %s: %s" % (m["name"], m["value"]))
+    w("")
+
+
 WEARFLAT_CASES = [("sine", "1.5"), ("sine", "0.5"), ("sine", "-0.5"), ("square", "1.5"), ("square", "-0.5"),
                   ("triangle", "1.5")]
 
@@ -542,6 +626,7 @@ def main():
     figs["ball"], figs["wearflat"] = fig4_ball(r), fig_wearflat(r)
     figs["ulp"], ulp_summary = fig_ulp(r)
     figs["rig"], rig_dist = fig_rig_map(r)
+    figs["inplane_xi"], figs["inplane_ratchet"] = fig_inplane(r)
     cross = crosscheck(r)
     cert = certified(r)
 
@@ -554,7 +639,8 @@ def main():
     w("## Summary")
     w("")
     paper = [c for c in claims if c["source"] == "paper"]
-    ours = [c for c in claims if c["source"] not in ("paper", "Part II (abstract)")]
+    inplane = [c for c in claims if c["key"].startswith("inplane-")]
+    ours = [c for c in claims if c["source"] not in ("paper", "Part II (abstract)") and not c["key"].startswith("inplane-")]
     part2 = [c for c in claims if c["source"] == "Part II (abstract)"]
     counts = {}
     for c in paper:
@@ -763,6 +849,7 @@ def main():
     w("")
     curved_section(w, claims, figs, a.bench_json)
     rig_section(w, r, figs, rig_dist, part2, claims_table)
+    inplane_section(w, figs, claims_table, inplane)
     bench_section(w, a.bench_json, r)
     mutation_section(w, os.path.join(ROOT, "tests", "mutation", "results", "latest.md"))
     w("## Reproduce")

@@ -64,6 +64,13 @@ const std::map<std::string, Expected>& established() {
       {"part2-limits", {Verdict::holds_approximately, "limits kappa -> infinity and Omega -> 0, measured"}},
       // Undamped resonance Omega^2 kappa = 1: mu < mu0 far beyond beta_c (damping restores mu0).
       {"part2-resonance", {Verdict::holds, "measured: mu about 0.32 mu0 up to beta = 10000"}},
+      // In-plane oscillation (model.md): the rigid limit from the closed form (2/pi) arcsin xi and
+      // its catching-up measurements; the ratchet from model.md's catching-up value and the
+      // independent mpmath reference (tests/reference/inplane_mpmath.py, -0.53643705...); the
+      // combined oscillation from a grid of phases (measured with the tool before the claim was written).
+      {"inplane-rigid", {Verdict::holds_approximately, "limit a -> infinity, O(1/a); model.md's 0.334760 at a = 100"}},
+      {"inplane-ratchet", {Verdict::holds_approximately, "model.md: -0.5364; the mpmath reference -0.536437053336"}},
+      {"inplane-combined", {Verdict::holds, "measured: at P near 1/2 (gamma = 1.5) and 3/8 (gamma = 0.5)"}},
   };
   return e;
 }

@@ -147,6 +147,23 @@ void check_evidence(const ClaimCheck& c) {
     // Part I: mu = mu0 at every beta checked (all beyond beta_c = 2 pi).
     EXPECT_EQ(field(c, "quasi-static (Part I)"), "1.00000, 1.00000, 1.00000, 1.00000");
     EXPECT_EQ(field(c, "zeta = 0.02").substr(field(c, "zeta = 0.02").rfind(", ") + 2), "1.00000") << "damping restores mu0";
+  } else if (c.key == "inplane-rigid") {
+    const auto [lo, hi] = range(c, "order of D in 1/a");
+    EXPECT_GE(lo, 0.95);
+    EXPECT_LE(hi, 1.05);
+    // a D at a = 1e6, xi = 1/2: the mpmath reference's a D -> 0.1416 (tests/reference/README.md);
+    // the field has three digits (1.41e-07)
+    EXPECT_NEAR(number(c, "xi = 0.5", "D(1e6)") * 1e6, 0.1416, 1e-3);
+    EXPECT_EQ(field(c, "xi = 1.5, a = 100: mu"), "1.0000000000000000000");
+  } else if (c.key == "inplane-ratchet") {
+    // the independent mpmath reference (tests/reference/README.md): -0.536437053336150826672919274099
+    EXPECT_EQ(field(c, "mu at beta = 0").substr(0, 14), "-0.53643705333");
+    EXPECT_GT(number(c, "free velocity"), 2.0);
+    EXPECT_LT(number(c, "free velocity"), 3.0);
+  } else if (c.key == "inplane-combined") {
+    // the longitudinal drive alone equals the normal one alone where the amplitudes match and nothing
+    // slips backward (gamma = 1.5, a = 1: the stop operator's upper boundary is then Eq. 2's envelope)
+    EXPECT_EQ(field(c, "gamma = 1.5, a = 1", "normal"), field(c, "gamma = 1.5, a = 1", "longitudinal"));
   }
 }
 

@@ -125,6 +125,19 @@ const std::vector<ClaimEntry>& claims_catalogue() {
       {"part2-resonance", "Part II, abstract: resonance", "Part II (abstract)",
        "a new resonant case eliminates the critical sliding velocity (friction is reduced at every velocity)",
        kHighPrecision, "", part2_resonance},
+      // In-plane oscillation (model.md, "In-plane and combined oscillation"), the longitudinal case;
+      // checks in lib/verification/src/claims/inplane.cpp.
+      {"inplane-rigid", "In-plane, rigid limit", "model.md (extension)",
+       "longitudinal oscillation at a constant normal force, rigid contact (a -> infinity at fixed xi = v0/(2 pi f u)): "
+       "mu = (2/pi) arcsin xi below the critical velocity xi = 1 and mu0 above it",
+       kHighPrecision, "", inplane_rigid},
+      {"inplane-ratchet", "In-plane, ratchet", "model.md (extension)",
+       "normal and longitudinal oscillation a quarter period apart propel the body: at beta = 0, n = max(0.5 + sin, 0), "
+       "a = 1, P = 1/4, mu = int s / int n ~ -0.5364",
+       kHighPrecision, "", inplane_ratchet},
+      {"inplane-combined", "Review: combined oscillation", "review (Front. Mech. Eng. 2020)",
+       "normal and longitudinal oscillation together reduce friction more than either alone, at the right phase",
+       kHighPrecision, "", inplane_combined},
   };
   return list;
 }

@@ -297,6 +297,9 @@ ClaimCheck curved_power_flat(int digits);
 ClaimCheck rig_limits(int digits);
 ClaimCheck part2_limits(int digits);
 ClaimCheck part2_resonance(int digits);
+ClaimCheck inplane_rigid(int digits);
+ClaimCheck inplane_ratchet(int digits);
+ClaimCheck inplane_combined(int digits);
 
 // The paper's remaining statements (statements.cpp).
 ClaimCheck eqs7_13(int digits);
