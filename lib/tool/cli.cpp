@@ -178,8 +178,10 @@ const std::vector<CommandSpec>& commands() {
          [](Flags& f, const std::string& t) { f.digits = integer(t, "--digits", min_digits, max_digits); }},
         {"profile", "P", "the indenter (model.md MDR): n and s summed over the half-row (their ratio's mean is mu)", "flat",
          profile_named}},
-       {&kWaveFlags, &kRigFlags},
-       std::string(kWaves) + kRig +
+       {&kWaveFlags, &kRigFlags, &kInPlaneFlags},
+       std::string(kWaves) + kRig + kInPlane +
+           "  trace with --longitudinal prints phi,n,s_x,s_y,mode: the tangential force along and across the\n"
+           "  sliding direction (s_y = 0 for a longitudinal drive) and the mode.\n" +
            "  trace with them prints phi,n,s,lag,lag_rate,mode: the body's lag Y = X - beta phi behind the\n"
            "  drive and Y' (units mu0 k_z A/k_x), the mode (stick, slip, backward, flight), at the phases\n"
            "  and both ends of every span (two rows at one phi where a mode ends: left and right values).\n",

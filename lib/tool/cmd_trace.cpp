@@ -1,5 +1,7 @@
-// trace: n(phi) and s(phi) over one period (Fig. 2), or with --kappa/--omega the rig's lag and mode.
+// trace: n(phi) and s(phi) over one period (Fig. 2), with --kappa/--omega the rig's lag and mode, or
+// with --longitudinal the in-plane force's components and the mode.
 #include <iostream>
+#include <optional>
 
 #include "cli.hpp"
 #include "vibrofric/api/commands.hpp"
@@ -9,16 +11,31 @@ namespace vibrofric::tool {
 // s(φ) and n(φ) over one period (the paper's Fig. 2): N equally spaced phases plus both ends of
 // every stick phase, so that a plot shows the kinks where they are.
 int run_trace(const Flags& f) {
-  const WaveSpec wave = read_wave(f);
+  const std::optional<InPlaneSpec> inplane = inplane_options(f);
+  const WaveSpec wave = normal_wave(f, inplane);
   TraceRequest request;
   request.beta = {need(f, f.beta, "beta"), "--beta"};
-  request.gamma = {need(f, f.gamma, "gamma"), "--gamma"};
+  if (inplane && inplane->constant_normal) {
+    if (f.gamma.given())
+      throw InputError("--gamma " + detail::visible(f.gamma.text()) + " with --wave constant: the normal force is constant (give no --gamma)");
+  } else {
+    request.gamma = {need(f, f.gamma, "gamma"), "--gamma"};
+  }
   request.points_name = "--points";
   request.digits_name = "--digits";
   if (f.digits) request.digits = *f.digits;
   if (f.points) request.points = *f.points;
   request.profile = f.profile;
   const BatchOptions o = batch_options(f);
+  if (inplane) {
+    const auto rows = inplane_trace_rows(wave, request, *inplane, o.solver);
+    std::cout << "phi,n,s_x,s_y,mode\n";
+    const int d = request.digits;
+    for (const auto& r : rows)
+      std::cout << format_significant(r.phi, d) << ',' << format_significant(r.n, d) << ',' << format_significant(r.s_x, d)
+                << ',' << format_significant(r.s_y, d) << ',' << inplane_mode_name(r.mode) << '\n';
+    return 0;
+  }
   if (o.rig) {
     const auto rows = rig_trace_rows(wave, request, *o.rig, o.solver);
     std::cout << "phi,n,s,lag,lag_rate,mode\n";

@@ -1496,8 +1496,8 @@ HELP_FLAGS = {
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat"}),
-    "trace": (["--beta", "--gamma", "--points", "--digits", "--profile"] + WAVE + RIG,
-              {"--points": "1000", "--digits": "17", "--profile": "flat"}),
+    "trace": (["--beta", "--gamma", "--points", "--digits", "--profile"] + WAVE + RIG + INPLANE,
+              {"--points": "1000", "--digits": "17", "--profile": "flat", "--phase": "0", "--in-plane-wave": "sine"}),
     "fit": (["--harmonics", "--output"] + WAVE, {}),
     "verify": (["--digits", "--claim", "--format"], {"--digits": "50"}),
     "version": ([], {}),
@@ -2427,6 +2427,26 @@ def inplane_tests():
                 if f[-1] != one or f[-2] != "sine" or f[-3] != "0.25" or f[-4] != "1.5":
                     raise Fail("sweep row %r, mu prints %s" % (row, one))
     case("in-plane: sweep rows are mu's values, with the drive's columns", sweep_rows)
+    def trace_rows():
+        for wave in (["--wave", "sine", "--gamma", "0.5"], ["--wave", "constant"]):
+            args = wave + ["--beta", "0.5", "--longitudinal", "1.5", "--phase", "0.25"]
+            rows = [line.split(",") for line in ok_run(["trace"] + args + ["--points", "2000"]).splitlines()]
+            if rows[0] != ["phi", "n", "s_x", "s_y", "mode"]:
+                raise Fail("trace --longitudinal header %r" % rows[0])
+            pts = [(float(r[0]), float(r[1]), float(r[2]), float(r[3]), r[4]) for r in rows[1:]]
+            # the model's rules row by row, and the trapezoid of s and n over the rows against mu
+            for phi, n, sx, sy, mode in pts:
+                if sy != 0 or abs(sx) > n + 1e-15 or (mode == "slip" and sx != n) or (mode == "backward" and sx != -n) \
+                        or (mode == "flight" and n != 0) or mode not in ("stick", "slip", "backward", "flight"):
+                    raise Fail("trace %s: row %r breaks the model" % (" ".join(args), (phi, n, sx, sy, mode)))
+            ins = sum((b[0] - a[0]) * (a[2] + b[2]) / 2 for a, b in zip(pts, pts[1:]))
+            inn = sum((b[0] - a[0]) * (a[1] + b[1]) / 2 for a, b in zip(pts, pts[1:]))
+            mu = float(ok_run(["mu"] + args + ["--type", "double"]).splitlines()[0])
+            if abs(ins / inn - mu) > 1e-5:  # the trapezoid's error on 2000 steps: (2 pi)^2 / (12 * 2000^2) ~ 1e-6
+                raise Fail("trace %s: the rows' int s / int n = %r, mu prints %r" % (" ".join(args), ins / inn, mu))
+    case("in-plane: trace rows obey the model and integrate to mu", trace_rows)
+    bad("in-plane: trace constant with gamma", ["trace", "--wave", "constant", "--beta", "1", "--gamma", "0.5",
+                                                "--longitudinal", "1"], [], ["--gamma", "constant"])
     bad("in-plane: sweep psi", ["sweep", "--wave", "sine", "--beta", "1:2:2", "--quantity", "psi", "--longitudinal", "1"],
         [], ["psi"])
     bad("in-plane: sweep constant with gamma", ["sweep", "--wave", "constant", "--beta", "1:2:2", "--gamma", "0.5",

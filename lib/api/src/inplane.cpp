@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/ladder.hpp"
 #include "vibrofric/api/rig.hpp"
@@ -133,6 +134,62 @@ InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InP
     report.mu = detail::rig_text(v, precision);
   }
   return report;
+}
+
+const char* inplane_mode_name(InPlaneMode mode) {
+  static const char* const names[] = {"stick", "slip", "backward", "flight"};
+  return names[static_cast<int>(mode)];
+}
+
+std::vector<InPlaneTraceRow> inplane_trace_rows(const WaveSpec& normal, const TraceRequest& request,
+                                                const InPlaneSpec& spec, const Options& opt) {
+  check_inplane(spec);
+  if (spec.constant_normal && request.gamma.given())
+    throw InputError(request.gamma.name + " " + detail::visible(request.gamma.value.text()) +
+                     " with a constant normal force: the normal force is the unit (give no gamma)");
+  TraceRequest checked = request;  // the ranges and β as for every trace; no γ for n ≡ 1
+  if (spec.constant_normal) checked.gamma.value = InputValue(*Decimal::read("1"));
+  check_trace_request(checked);
+  if (request.profile.kind != ProfileKind::flat)
+    throw InputError("in-plane oscillation with profile " + request.profile.name + ": the flat punch only");
+  const Point p{request.beta.value, spec.constant_normal ? InputValue() : request.gamma.value};
+  if (!spec.constant_normal) {
+    detail::ContactCheck check(normal, Quantity::mu);
+    check(p);
+  }
+  const int digits = request.digits;
+  const auto [a, b] = detail::two_precisions<Solved>(
+      digits, [&](int d, const Solved*) { return solve_at(normal, p, spec, d, opt); },
+      [&](const Solved& lower, const Solved& higher) { return same_significant(lower.r.mu, higher.r.mu, digits); },
+      inplane_context(normal, p, spec), "in-plane oscillation");
+  // The spans' values at the higher precision, from a solver built as solve_at built it.
+  PrecisionScope scope(static_cast<unsigned>(b.digits));
+  const auto p_wave = make_waveform<mpfr>(spec.wave);
+  std::unique_ptr<Waveform<mpfr>> w;
+  if (!spec.constant_normal) w = make_waveform<mpfr>(normal);
+  const InPlaneSolver<mpfr> solver(w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave,
+                                   p.beta.to<mpfr>(), InPlaneDrive<mpfr>{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()},
+                                   opt);
+  std::vector<InPlaneTraceRow> rows;
+  const auto add = [&](const InPlaneSpan<mpfr>& span, const mpfr& phi) {
+    const auto v = solver.at(span, phi);  // n, D, s
+    InPlaneTraceRow row{phi, v[0], v[2], mpfr(0), span.mode};
+    const auto same = [&](const InPlaneTraceRow& r) {  // where one span ends and the next goes on alike
+      return r.mode == row.mode && same_significant(r.phi, row.phi, digits) && same_significant(r.n, row.n, digits) &&
+             same_significant(r.s_x, row.s_x, digits);
+    };
+    if (!rows.empty() && same(rows.back())) return;
+    rows.push_back(std::move(row));
+  };
+  int next = 0;  // the next equally spaced phase next/points
+  for (const auto& span : b.r.spans) {
+    if (!(span.end > span.begin)) continue;
+    add(span, span.begin);
+    for (; next <= request.points && mpfr(next) / request.points < span.end; ++next)
+      if (mpfr(next) / request.points > span.begin) add(span, mpfr(next) / request.points);
+    add(span, span.end);
+  }
+  return rows;
 }
 
 }  // namespace vibrofric

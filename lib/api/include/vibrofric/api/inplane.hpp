@@ -10,6 +10,7 @@
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/input_value.hpp"
 #include "vibrofric/core/flat/solver.hpp"
+#include "vibrofric/core/inplane/inplane.hpp"
 
 namespace vibrofric {
 
@@ -45,6 +46,22 @@ void check_inplane(const InPlaneSpec& spec);
 // or the precisions do not agree.
 InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
                                const Precision& precision, const Options& solver = {});
+
+// One row of the periodic state for `trace`: φ, n, the tangential force's components s_x (along
+// the sliding direction) and s_y (across it: 0 for a longitudinal drive), and the mode.
+const char* inplane_mode_name(InPlaneMode mode);  // "stick", "slip", "backward", "flight"
+struct InPlaneTraceRow {
+  mpfr phi, n, s_x, s_y;  // each to the request's digits: format_significant(x, digits)
+  InPlaneMode mode;
+};
+
+// Rows over one period, φ ascending: `points` + 1 equally spaced phases and both ends of every
+// span of one mode (two rows at one φ where s or n jumps), `digits` significant digits. The state
+// is found at digits + 10 and digits + 22 (raised while their μ̄ differ in the printed digits); the
+// rows are the higher's. The request's gamma is not given for a constant normal force.
+struct TraceRequest;
+std::vector<InPlaneTraceRow> inplane_trace_rows(const WaveSpec& normal, const TraceRequest& request,
+                                                const InPlaneSpec& spec, const Options& solver = {});
 
 namespace detail {
 // Whether the drive is the paper's model (no in-plane amplitude, the normal force oscillating):
