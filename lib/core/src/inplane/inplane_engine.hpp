@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -134,8 +135,16 @@ class InPlaneEngine {
   Real ap(const Seg& g, const Real& phi) const { return a_ == 0 ? Real(0) : Real(a_ * p_.value(g.piece, x(g, phi))); }
   Real adp(const Seg& g, const Real& phi) const { return a_ == 0 ? Real(0) : Real(a_ * p_.slope(g.piece, x(g, phi))); }
   Real D(const Seg& g, const Real& phi) const { return beta_ * phi + ap(g, phi); }
-  Real lambda_f(const Seg& g, const Real& phi) const { return beta_ + adp(g, phi) - dn(g, phi); }
-  Real lambda_b(const Seg& g, const Real& phi) const { return beta_ + adp(g, phi) + dn(g, phi); }
+  // Slip goes on where its rate is not negative: λ_f = D' − n' ≥ 0 forward, λ_b = D' + n' ≤ 0
+  // backward, each to its rounding level (the slope functions' tol below, as the slip searches use).
+  bool slips_forward(const Seg& g, const Real& phi) const {
+    const Fn f = slope(g, 1, -1, beta_);
+    return f.value(f.terms(phi)) >= -f.tol;
+  }
+  bool slips_backward(const Seg& g, const Real& phi) const {
+    const Fn f = slope(g, 1, 1, beta_);
+    return f.value(f.terms(phi)) <= f.tol;
+  }
   // ∫ n over [a, b] of the segment.
   Real n_area(const Seg& g, const Real& a, const Real& b) const {
     if (g.contact_segment == npos) return b - a;
@@ -159,8 +168,30 @@ class InPlaneEngine {
     bool level;
     int sp, sn;
     Real c;
+    // The slip-rate functions' rounding level: below it a rate is 0 (D' = ±n' over a whole piece,
+    // as p = w at a = 1: slipping and sticking at zero rate are one motion), and noise must not end
+    // a slip. 0 for the level functions.
+    Real tol = 0;
+    // Whether p's (n's) branch is a line on the segment: a sum of lines is one monotone term, so the
+    // level functions group them (only two curved terms can cancel: sine with sine, see first()).
+    bool lin_p = false, lin_n = false;
     Terms terms(const Real& phi) const {
       if (level) {
+        Terms t = level_terms(phi);
+        if (lin_p) {
+          t[0] += t[1];
+          t[1] = 0;
+        }
+        if (lin_n) {
+          t[0] += t[2];
+          t[2] = 0;
+        }
+        return t;
+      }
+      return slope_terms(phi);
+    }
+    Terms level_terms(const Real& phi) const {
+      {
         Real r = e->beta_ * phi, q = e->ap(*g, phi), nn = e->n(*g, phi);
         if (sp < 0) {
           r = -r;
@@ -169,7 +200,6 @@ class InPlaneEngine {
         if (sn < 0) nn = -nn;
         return {r, q, nn};
       }
-      return slope_terms(phi);
     }
     Real value(const Terms& t) const {
       Real r = c;
@@ -186,8 +216,28 @@ class InPlaneEngine {
     }
     Real slope_c() const { return sp < 0 ? Real(-e->beta_) : e->beta_; }
   };
-  Fn level(const Seg& g, int sp, const Real& c) const { return Fn{this, &g, true, sp, -1, c}; }
-  Fn slope(const Seg& g, int sp, int sn, const Real& c) const { return Fn{this, &g, false, sp, sn, c}; }
+  Fn level(const Seg& g, int sp, const Real& c) const {
+    Fn f{this, &g, true, sp, -1, c};
+    linear_parts(f);
+    return f;
+  }
+  Fn slope(const Seg& g, int sp, int sn, const Real& c) const {
+    Fn f{this, &g, false, sp, sn, c};
+    linear_parts(f);
+    using std::abs;
+    using std::max;
+    const Terms a = f.terms(g.u), b = f.terms(g.v);
+    f.tol = abs(c);
+    for (std::size_t k = 0; k < a.size(); ++k) f.tol += max(abs(a[k]), abs(b[k]));  // the terms are monotone
+    f.tol *= 16 * std::numeric_limits<Real>::epsilon();
+    return f;
+  }
+
+  void linear_parts(Fn& f) const {
+    f.lin_p = a_ == 0 || p_.linear(f.g->piece);
+    f.lin_n = f.g->contact_segment == npos || !contact_->segments()[f.g->contact_segment].contact ||
+              w_->linear(contact_->segments()[f.g->contact_segment].piece);
+  }
 
   // The first φ in (x0, y0] where f reaches 0 (f ≥ 0; f > 0 if strict), or none. f's terms are
   // monotone on the segment, so each one's range over [x, y] lies between its end values.
@@ -204,7 +254,65 @@ class InPlaneEngine {
       if (d != 0) dir = d;
     }
     if (!mixed) return monotone(f, strict, x0, y0, f.value(tx), f.value(ty));
-    return search(f, strict, x0, y0, tx, ty, 0);
+    if (!f.lin_p && !f.lin_n) {
+      // Two curved terms can cancel (p = w, a = 1: the slip rate is 0 throughout), where enclosures
+      // from their ends never decide. Two sines combine into one: f is monotone between the
+      // critical points of model.md's closed form below.
+      if (const auto cuts = sine_critical_points(f, x0, y0)) {
+        Real a = x0;
+        for (std::size_t k = 0; k <= cuts->size(); ++k) {
+          const Real b = k < cuts->size() ? (*cuts)[k] : y0;
+          if (b > a)
+            if (auto r = monotone(f, strict, a, b, f.value(f.terms(a)), f.value(f.terms(b)))) return r;
+          a = b;
+        }
+        return std::nullopt;
+      }
+    }
+    std::size_t budget = search_budget;
+    return search(f, strict, x0, y0, tx, ty, 0, budget);
+  }
+
+  // For p and w both sines: the phases in (x0, y0) where f' = 0, ascending; none for other waves.
+  // With θ = 2πφ, Δ = 2πP, A = σ_p a cos Δ + σ_n, B = σ_p a sin Δ:
+  //   slope function:  f' ∝ A sin θ + B cos θ            = 0 at θ = atan2(−B, A) + kπ;
+  //   level function:  f' = σ_p β + 2π R cos(θ + δ),  R = hypot(A, B), δ = atan2(B, A).
+  std::optional<std::vector<Real>> sine_critical_points(const Fn& f, const Real& x0, const Real& y0) const {
+    if (!dynamic_cast<const Sine<Real>*>(&p_) || !w_ || !dynamic_cast<const Sine<Real>*>(w_)) return std::nullopt;
+    using std::acos;
+    using std::atan2;
+    using std::cos;
+    using std::floor;
+    using std::hypot;
+    using std::sin;
+    const Real two_pi = 2 * boost::math::constants::pi<Real>();
+    const Real delta = two_pi * phase_;
+    const Real A = f.sp * a_ * cos(delta) + f.sn, B = f.sp * a_ * sin(delta);
+    std::vector<Real> thetas;
+    if (!f.level) {
+      if (A == 0 && B == 0) return std::vector<Real>{};  // f constant
+      const Real t0 = atan2(Real(-B), A);
+      thetas = {t0, Real(t0 + two_pi / 2)};
+    } else {
+      const Real R = hypot(A, B);
+      if (R == 0) return std::vector<Real>{};  // f = c + σ_p βφ: a line
+      const Real q = -f.sp * beta_ / (two_pi * R);
+      if (q < -1 || q > 1) return std::vector<Real>{};  // f' keeps its sign
+      const Real d = atan2(B, A), t = acos(q);
+      thetas = {Real(t - d), Real(-t - d)};
+    }
+    std::vector<Real> cuts;
+    for (const Real& th : thetas) {
+      Real phi = th / two_pi;
+      phi -= floor(phi);
+      for (int k = -1; k <= 1; ++k) {  // θ + kπ for the slope function's period 1/2 as well
+        for (const Real& c : {Real(phi + k), Real(phi + k + Real(f.level ? 0 : 1) / 2)})
+          if (c > x0 && c < y0) cuts.push_back(c);
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    return cuts;
   }
   // The first φ in (x, y] where a monotone f is hit: increasing, from x on if it is hit there, else at
   // its crossing; decreasing, only at x itself, where f must then be strictly past 0 (a decreasing
@@ -212,24 +320,29 @@ class InPlaneEngine {
   std::optional<Real> monotone(const Fn& f, bool strict, const Real& x, const Real& y, const Real& fx,
                                const Real& fy) const {
     if (fy >= fx) {
-      if (hit(fx, strict)) return x;
-      if (!hit(fy, strict)) return std::nullopt;
+      if (hit(fx, strict, f.tol)) return x;
+      if (!hit(fy, strict, f.tol)) return std::nullopt;
       return crossing(f, strict, x, y, fx, fy);
     }
-    if (fx > 0) return x;
+    if (fx > f.tol) return x;
     return std::nullopt;
   }
   const Real& g_u(const Fn& f) const { return f.g->u; }
   const Real& g_v(const Fn& f) const { return f.g->v; }
-  static bool hit(const Real& v, bool strict) { return strict ? v > 0 : v >= 0; }
+  static bool hit(const Real& v, bool strict, const Real& tol) { return strict ? v > tol : v >= -tol; }
+
+  // Evaluations allowed to one search: far more than the depth times a few roots of any wave the
+  // catalogue, samples or a Fourier series give; beyond it the terms cancel and nothing separates
+  // the events.
+  static constexpr std::size_t search_budget = 1 << 16;
 
   std::optional<Real> search(const Fn& f, bool strict, const Real& x, const Real& y, const Terms& tx, const Terms& ty,
-                             int depth) const {
+                             int depth, std::size_t& budget) const {
     using std::max;
     using std::min;
     Real hi = f.c;
     for (std::size_t k = 0; k < tx.size(); ++k) hi += max(tx[k], ty[k]);
-    if (!hit(hi, strict)) return std::nullopt;
+    if (!hit(hi, strict, f.tol)) return std::nullopt;
     const Real fy = f.value(ty);
     // A level function whose slope keeps one sign on [x, y] crosses at most once there.
     if (f.has_slope()) {
@@ -242,16 +355,17 @@ class InPlaneEngine {
       if (lo_s > 0 || hi_s < 0) return monotone(f, strict, x, y, f.value(tx), fy);
     }
     if (y - x <= resolution_) {
-      if (hit(fy, strict)) return y;
+      if (hit(fy, strict, f.tol)) return y;
       return std::nullopt;  // a touch narrower than the working precision
     }
-    if (depth > max_depth_)
-      throw SolverError("in-plane oscillation: event search did not resolve [" + short_str(x) + ", " + short_str(y) + "]");
+    if (depth > max_depth_ || budget-- == 0)
+      throw SolverError("in-plane oscillation: the wave's and the drive's terms cancel on [" + short_str(x) + ", " +
+                        short_str(y) + "]: the events there cannot be separated");
     Real m;
     midpoint(m, x, y);
     const Terms tm = f.terms(m);
-    if (auto r = search(f, strict, x, m, tx, tm, depth + 1)) return r;
-    return search(f, strict, m, y, tm, ty, depth + 1);
+    if (auto r = search(f, strict, x, m, tx, tm, depth + 1, budget)) return r;
+    return search(f, strict, m, y, tm, ty, depth + 1, budget);
   }
 
   // The crossing of a function monotone on [x, y] (not hit at x, hit at y): the bracket's end
@@ -276,7 +390,7 @@ class InPlaneEngine {
     if (iterations >= stats_.max_iterations && !tol(r.first, r.second))
       throw SolverError("in-plane oscillation: event root finder did not converge on [" + short_str(x) + ", " +
                         short_str(y) + "]");
-    if (hit(fn(r.first), strict)) return r.first;
+    if (hit(fn(r.first), strict, f.tol)) return r.first;
     return r.second;  // hit there, or f = 0 exactly at the root (a strict crossing's point)
   }
 
@@ -317,11 +431,11 @@ class InPlaneEngine {
         return InPlaneMode::flight;
       }
       const Real nn = e.n(g, phi);
-      if (s >= nn && e.lambda_f(g, phi) >= 0) {
+      if (s >= nn && e.slips_forward(g, phi)) {
         s = nn;
         return InPlaneMode::forward_slip;
       }
-      if (s <= -nn && e.lambda_b(g, phi) <= 0) {
+      if (s <= -nn && e.slips_backward(g, phi)) {
         s = -nn;
         return InPlaneMode::backward_slip;
       }
@@ -425,7 +539,7 @@ class InPlaneEngine {
             s = is_up ? e.n(g, phi) : Real(-e.n(g, phi));
             mode = is_up ? InPlaneMode::forward_slip : InPlaneMode::backward_slip;
             // slip only where its rate is nonnegative at once; else the touch is a stick that goes on
-            if ((is_up && e.lambda_f(g, phi) < 0) || (!is_up && e.lambda_b(g, phi) > 0)) mode = InPlaneMode::stick;
+            if (is_up ? !e.slips_forward(g, phi) : !e.slips_backward(g, phi)) mode = InPlaneMode::stick;
             break;
           }
         }
