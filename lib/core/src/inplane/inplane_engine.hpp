@@ -17,6 +17,58 @@
 
 namespace vibrofric::detail {
 
+// The segments of the in-plane engines: the Contact's (or [0, 1) for n ≡ 1, contact == nullptr) cut at
+// p's breakpoints shifted by −P (P in [0, 1)).
+template <class Real>
+std::vector<InPlaneSegment<Real>> inplane_segments(const Contact<Real>* contact, const Waveform<Real>& p,
+                                                   const Real& phase) {
+  using Seg = InPlaneSegment<Real>;
+  constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  std::vector<Seg> segs;
+  struct Part {
+    Real u;
+    std::size_t index;
+    Real shift;
+    bool jump;
+  };
+  std::vector<Part> normal, drive;
+  if (contact) {
+    const auto& cs = contact->segments();
+    for (std::size_t k = 0; k < cs.size(); ++k) normal.push_back({cs[k].u, k, Real(0), cs[k].jump});
+  } else {
+    normal.push_back({Real(0), npos, Real(0), false});
+  }
+  // p's argument x = φ + P − shift in [0, 1): shift 0 for φ < 1 − P, 1 beyond.
+  for (std::size_t j = 0; j < p.piece_count(); ++j) {
+    const Real& b = p.piece_begin(j);
+    const Real& e = p.piece_end(j);
+    if (e > phase) {  // on φ ∈ [b − P, e − P) ∩ [0, 1 − P)
+      const bool starts = b >= phase;
+      drive.push_back({starts ? Real(b - phase) : Real(0), j, Real(0), starts && p.jump_at(j)});
+    }
+    if (b < phase) drive.push_back({Real(b + 1 - phase), j, Real(1), p.jump_at(j)});  // ∩ [1 − P, 1)
+  }
+  std::sort(drive.begin(), drive.end(), [](const Part& x, const Part& y) { return x.u < y.u; });
+  std::vector<Real> cuts;
+  for (const auto& q : normal) cuts.push_back(q.u);
+  for (const auto& q : drive) cuts.push_back(q.u);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::size_t i = 0, j = 0;
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    const Real& u = cuts[k];
+    const Real v = k + 1 < cuts.size() ? cuts[k + 1] : Real(1);
+    if (!(v > u)) continue;
+    while (i + 1 < normal.size() && normal[i + 1].u <= u) ++i;
+    while (j + 1 < drive.size() && drive[j + 1].u <= u) ++j;
+    segs.push_back(Seg{u, v, normal[i].index, drive[j].index, drive[j].shift, normal[i].u == u && normal[i].jump,
+                        drive[j].u == u && drive[j].jump});
+  }
+  if (segs.empty() || segs.front().u != 0)
+    throw SolverError("in-plane oscillation: the segments do not start at phase 0");
+  return segs;
+}
+
 template <class Real>
 class InPlaneEngine {
  public:
@@ -36,7 +88,7 @@ class InPlaneEngine {
     resolution_ = ldexp(Real(1), 2 - bits);
     max_depth_ = 4 * bits + 64;
     if (w) contact_.emplace(*w, gamma, opt);
-    build_segments();
+    segs_ = inplane_segments(contact_ ? &*contact_ : nullptr, p_, phase_);
   }
 
   const std::vector<Seg>& segments() const { return segs_; }
@@ -546,51 +598,6 @@ class InPlaneEngine {
       }
     }
   };
-
-  // The segments: the Contact's (or [0, 1) for n ≡ 1) cut at p's breakpoints shifted by −P.
-  void build_segments() {
-    struct Part {
-      Real u;
-      std::size_t index;
-      Real shift;
-      bool jump;
-    };
-    std::vector<Part> normal, drive;
-    if (contact_) {
-      const auto& cs = contact_->segments();
-      for (std::size_t k = 0; k < cs.size(); ++k) normal.push_back({cs[k].u, k, Real(0), cs[k].jump});
-    } else {
-      normal.push_back({Real(0), npos, Real(0), false});
-    }
-    // p's argument x = φ + P − shift in [0, 1): shift 0 for φ < 1 − P, 1 beyond.
-    for (std::size_t j = 0; j < p_.piece_count(); ++j) {
-      const Real& b = p_.piece_begin(j);
-      const Real& e = p_.piece_end(j);
-      if (e > phase_) {  // on φ ∈ [b − P, e − P) ∩ [0, 1 − P)
-        const bool starts = b >= phase_;
-        drive.push_back({starts ? Real(b - phase_) : Real(0), j, Real(0), starts && p_.jump_at(j)});
-      }
-      if (b < phase_) drive.push_back({Real(b + 1 - phase_), j, Real(1), p_.jump_at(j)});  // ∩ [1 − P, 1)
-    }
-    std::sort(drive.begin(), drive.end(), [](const Part& x, const Part& y) { return x.u < y.u; });
-    std::vector<Real> cuts;
-    for (const auto& q : normal) cuts.push_back(q.u);
-    for (const auto& q : drive) cuts.push_back(q.u);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    std::size_t i = 0, j = 0;
-    for (std::size_t k = 0; k < cuts.size(); ++k) {
-      const Real& u = cuts[k];
-      const Real v = k + 1 < cuts.size() ? cuts[k + 1] : Real(1);
-      if (!(v > u)) continue;
-      while (i + 1 < normal.size() && normal[i + 1].u <= u) ++i;
-      while (j + 1 < drive.size() && drive[j + 1].u <= u) ++j;
-      segs_.push_back(Seg{u, v, normal[i].index, drive[j].index, drive[j].shift, normal[i].u == u && normal[i].jump,
-                          drive[j].u == u && drive[j].jump});
-    }
-    if (segs_.empty() || segs_.front().u != 0)
-      throw SolverError("in-plane oscillation: the segments do not start at phase 0");
-  }
 
   const Waveform<Real>* w_;
   const Waveform<Real>& p_;
