@@ -21,8 +21,8 @@
 // from the largest start s = n(0⁻); a second start just below it must reach the same state.
 //
 // This header is the module's contract; the engine is lib/core/src/inplane/inplane_engine.hpp,
-// compiled for double, long double and mpfr (inplane_*.cpp). Not here yet: the transverse and
-// general two-dimensional sweeping process, curved contacts.
+// compiled for double, long double and mpfr (inplane_*.cpp). The transverse and general
+// two-dimensional drive is planar.hpp; not here yet: curved contacts.
 #pragma once
 #include <array>
 #include <cstddef>
