@@ -22,7 +22,7 @@ unsigned to_threads(const py::object& x) {
   return static_cast<unsigned>(*t);
 }
 
-constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False, kappa=None, omega=None, zeta=None, longitudinal=None, phase=None, in_plane_wave=None)
+constexpr const char* mu_doc = R"doc(mu(wave, beta, gamma, *, profile="flat", digits=None, type=None, threads=0, max_iterations=None, escalate=True, strings=False, nan_on_error=False, certify=False, kappa=None, omega=None, zeta=None, longitudinal=None, transverse=None, phase=None, in_plane_wave=None)
 
 The macroscopic coefficient of friction mu/mu0 = int s dphi / int n dphi (Eq. 15; Eqs. 9, 13 of
 the paper) for sliding velocity beta (Eq. 5) and mean indentation gamma = u/A (Eq. 14), in the
@@ -52,9 +52,10 @@ kappa, omega, zeta  rig dynamics (the tool's --kappa, --omega, --zeta; model.md)
           kappa = k_s/k_x > 0, omega = sqrt(k_x/m)/(2 pi f) > 0, zeta = c/(2 sqrt(m k_s)) >= 0
           (default 0). Scalars (decimal strings or floats); flat punch; sine, Fourier and
           piecewise-linear waves.
-longitudinal, phase, in_plane_wave  in-plane oscillation along the sliding direction (the tool's
-          --longitudinal, --phase, --in-plane-wave; model.md): the spring's far end moves as
-          beta phi + a p(phi + P), a = longitudinal >= 0, P = phase in periods (default 0), p a
+longitudinal, transverse, phase, in_plane_wave  in-plane oscillation along and across the sliding
+          direction (the tool's --longitudinal, --transverse, --phase, --in-plane-wave; model.md):
+          the spring's far end moves as (beta phi + a_l p(phi + P), a_t p(phi + P)), a_l =
+          longitudinal >= 0, a_t = transverse >= 0, P = phase in periods (default 0), p a
           catalogue wave (default 'sine'). wave='constant' with gamma=None: a constant normal
           force (a in units of mu0 F_N/k_x). Scalars; beta >= 0 and gamma broadcast. Flat punch.
           A negative value means the oscillation pushes the body forward.
@@ -90,22 +91,24 @@ Flat punch only (Psi does not exist for curved profiles).
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& profile,
          const py::object& digits, const py::object& type, const py::object& threads, const py::object& max_iterations,
          bool escalate, bool strings, bool nan_on_error, bool certify, const py::object& kappa,
-         const py::object& omega, const py::object& zeta, const py::object& longitudinal, const py::object& phase,
-         const py::object& in_plane_wave) {
+         const py::object& omega, const py::object& zeta, const py::object& longitudinal,
+         const py::object& transverse, const py::object& phase, const py::object& in_plane_wave) {
         Evaluation e;
         e.quantity = Quantity::mu;
         const bool constant = py::isinstance<py::str>(wave) && wave.cast<std::string>() == "constant";
-        if (constant || !longitudinal.is_none() || !phase.is_none() || !in_plane_wave.is_none()) {
-          if (longitudinal.is_none() && (!phase.is_none() || !in_plane_wave.is_none()))
+        const bool amplitude = !longitudinal.is_none() || !transverse.is_none();
+        if (constant || amplitude || !phase.is_none() || !in_plane_wave.is_none()) {
+          if (!amplitude && (!phase.is_none() || !in_plane_wave.is_none()))
             throw InputError(std::string(phase.is_none() ? "in_plane_wave" : "phase") +
-                             " without longitudinal: give the in-plane amplitude");
+                             " without longitudinal or transverse: give the in-plane amplitude");
           if (!kappa.is_none() || !omega.is_none())
             throw InputError("kappa/omega with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
-          if (certify) throw InputError("certify: certified values exist for the normal oscillation only, not with longitudinal");
+          if (certify) throw InputError("certify: certified values exist for the normal oscillation only, not with an in-plane drive");
           if (!escalate) throw InputError("escalate=False: in-plane oscillation is always computed in mpfr at two precisions");
           InPlaneSpec s;
           s.constant_normal = constant;
           s.longitudinal = longitudinal.is_none() ? InputValue(*Decimal::read("0")) : scalar_value(longitudinal, "longitudinal");
+          if (!transverse.is_none()) s.transverse = scalar_value(transverse, "transverse");
           if (!phase.is_none()) s.phase = scalar_value(phase, "phase");
           if (!in_plane_wave.is_none()) s.wave = to_wave(in_plane_wave);
           check_inplane(s);
@@ -130,7 +133,8 @@ Flat punch only (Psi does not exist for curved profiles).
         e.profile = to_profile(profile);
         e.profile_text = py_repr(profile);
         if (e.inplane && e.profile.kind != ProfileKind::flat)
-          throw InputError("longitudinal with profile = " + e.profile_text + ": in-plane oscillation is solved for the flat punch only");
+          throw InputError(std::string(transverse.is_none() ? "longitudinal" : "transverse") + " with profile = " +
+                           e.profile_text + ": in-plane oscillation is solved for the flat punch only");
         if (e.rig && e.profile.kind != ProfileKind::flat)
           throw InputError("kappa/omega with profile = " + e.profile_text +
                            ": the springs of a curved contact share the body, so the MDR row does not decouple "
@@ -144,8 +148,8 @@ Flat punch only (Psi does not exist for curved profiles).
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "profile"_a = "flat", "digits"_a = py::none(),
       "type"_a = py::none(), "threads"_a = 0, "max_iterations"_a = py::none(), "escalate"_a = true,
       "strings"_a = false, "nan_on_error"_a = false, "certify"_a = false, "kappa"_a = py::none(),
-      "omega"_a = py::none(), "zeta"_a = py::none(), "longitudinal"_a = py::none(), "phase"_a = py::none(),
-      "in_plane_wave"_a = py::none(), mu_doc);
+      "omega"_a = py::none(), "zeta"_a = py::none(), "longitudinal"_a = py::none(), "transverse"_a = py::none(),
+      "phase"_a = py::none(), "in_plane_wave"_a = py::none(), mu_doc);
 
   m.def(
       "psi",

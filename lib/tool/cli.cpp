@@ -64,12 +64,12 @@ const char* const kRig =
     "  Floquet multiplier (0: below what difference quotients resolve) after the value.\n";
 
 const char* const kInPlane =
-    "in-plane oscillation (model.md): --longitudinal A [--phase P] [--in-plane-wave W] move the\n"
-    "  spring's far end along D = beta phi + A w_p(phi + P) while the normal indentation oscillates\n"
-    "  (--wave constant: a constant normal force, no --gamma; A in units of mu0 F_N/k_x); beta >= 0;\n"
-    "  flat punch, longitudinal only. mu prints mean_lateral (the force across the sliding\n"
-    "  direction, 0 here) and the stick, slip and flight fractions after the value; a negative mu\n"
-    "  means the oscillation pushes the body forward.\n";
+    "in-plane oscillation (model.md): --longitudinal A [--transverse B] [--phase P] [--in-plane-wave W]\n"
+    "  move the spring's far end along D = (beta phi + A w_p(phi + P), B w_p(phi + P)) while the normal\n"
+    "  indentation oscillates (--wave constant: a constant normal force, no --gamma; A, B in units of\n"
+    "  mu0 F_N/k_x); beta >= 0; flat punch. mu prints mean_lateral (the force across the sliding\n"
+    "  direction) and the stick, slip and flight fractions after the value; a negative mu means the\n"
+    "  oscillation pushes the body forward.\n";
 
 const char* const kProfiles =
     "profiles P (model.md MDR): flat (the flat punch), sphere, cone, power:N (N >= 1, sigma = x^N),\n"
@@ -180,8 +180,8 @@ const std::vector<CommandSpec>& commands() {
          profile_named}},
        {&kWaveFlags, &kRigFlags, &kInPlaneFlags},
        std::string(kWaves) + kRig + kInPlane +
-           "  trace with --longitudinal prints phi,n,s_x,s_y,mode: the tangential force along and across the\n"
-           "  sliding direction (s_y = 0 for a longitudinal drive) and the mode.\n" +
+           "  trace with --longitudinal or --transverse prints phi,n,s_x,s_y,mode: the tangential force\n"
+           "  along and across the sliding direction (s_y = 0 for a longitudinal drive) and the mode.\n" +
            "  trace with them prints phi,n,s,lag,lag_rate,mode: the body's lag Y = X - beta phi behind the\n"
            "  drive and Y' (units mu0 k_z A/k_x), the mode (stick, slip, backward, flight), at the phases\n"
            "  and both ends of every span (two rows at one phi where a mode ends: left and right values).\n",

@@ -52,7 +52,7 @@ struct Flags {
   // Rig dynamics (model.md): κ, Ω, ζ
   InputValue kappa, omega, zeta;
   // In-plane oscillation (model.md): a_l, the phase P, the in-plane wave
-  InputValue longitudinal, phase;
+  InputValue longitudinal, transverse, phase;
   std::optional<std::string> in_plane_wave;
   // physical, by flag name: each number input's value, or a swept input's values (FROM:TO:N), read
   // by read_physical; shape and unit as typed.
@@ -128,7 +128,8 @@ const std::string& need(const Flags& f, const std::optional<std::string>& value,
 const InputValue& need(const Flags& f, const InputValue& value, const std::string& name);
 Precision precision_of(const Flags& f);
 BatchOptions batch_options(const Flags& f);
-// The in-plane drive of --longitudinal, --phase, --in-plane-wave and --wave constant (none: the paper's model).
+// The in-plane drive of --longitudinal, --transverse, --phase, --in-plane-wave and --wave constant (none: the
+// paper's model).
 std::optional<InPlaneSpec> inplane_options(const Flags& f);
 // The normal wave of --wave: read_wave's, or for --wave constant (with the in-plane drive) a
 // WaveSpec named "constant" that the in-plane solver does not read.

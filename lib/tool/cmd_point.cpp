@@ -60,19 +60,27 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
     throw InputError("--gamma " + detail::visible(f.gamma.text()) + " with --wave constant: the normal force is constant (give no --gamma)");
   const Point p{need(f, f.beta, "beta"), spec.constant_normal ? InputValue() : need(f, f.gamma, "gamma")};
   const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver);
-  const std::vector<std::pair<std::string, std::string>> fields{
+  // A transverse drive slips in every direction: backward slip is the longitudinal drive's alone.
+  std::vector<std::pair<std::string, std::string>> fields{
       {"mean_lateral", r.mean_lateral.text()},     {"stick_fraction", r.stick_fraction.text()},
       {"slip_fraction", r.slip_fraction.text()},   {"backward_slip_fraction", r.backward_fraction.text()},
       {"flight_fraction", r.flight_fraction.text()}, {"relative_error_estimate", r.relative_error.text()}};
+  if (r.planar) fields.erase(fields.begin() + 3);
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
     return 0;
   }
-  std::vector<std::string> names{"wave", "beta", "gamma", "longitudinal", "phase", "in_plane_wave", "mu_over_mu0"};
-  std::vector<std::string> values{wave.name, p.beta.text(),
-                                  spec.constant_normal ? std::string() : p.gamma.text(), spec.longitudinal.text(),
-                                  spec.phase.text(), spec.wave.name, r.mu};
+  std::vector<std::string> names{"wave",  "beta",          "gamma", "longitudinal", "transverse",
+                                 "phase", "in_plane_wave", "mu_over_mu0"};
+  std::vector<std::string> values{wave.name,
+                                  p.beta.text(),
+                                  spec.constant_normal ? std::string() : p.gamma.text(),
+                                  spec.longitudinal.text(),
+                                  spec.transverse.text(),
+                                  spec.phase.text(),
+                                  spec.wave.name,
+                                  r.mu};
   for (const auto& [name, value] : fields) {
     names.push_back(name);
     values.push_back(value);

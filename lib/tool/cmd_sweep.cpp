@@ -72,7 +72,7 @@ int run_sweep(const Flags& f) {
   names.push_back("beta");
   if (q == Quantity::mu && !constant) names.push_back("gamma");
   if (opt.rig) names.insert(names.end(), {"kappa", "omega", "zeta"});
-  if (inplane) names.insert(names.end(), {"longitudinal", "phase", "in_plane_wave"});
+  if (inplane) names.insert(names.end(), {"longitudinal", "transverse", "phase", "in_plane_wave"});
   names.push_back(q == Quantity::mu ? "mu_over_mu0" : "psi");
   const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   if (certifier)
@@ -106,7 +106,9 @@ int run_sweep(const Flags& f) {
     r.push_back(pt.beta.text());
     if (q == Quantity::mu && !constant) r.push_back(pt.gamma.text());
     if (opt.rig) r.insert(r.end(), {opt.rig->kappa.text(), opt.rig->omega.text(), opt.rig->zeta.text()});
-    if (inplane) r.insert(r.end(), {inplane->longitudinal.text(), inplane->phase.text(), inplane->wave.name});
+    if (inplane)
+      r.insert(r.end(), {inplane->longitudinal.text(), inplane->transverse.text(), inplane->phase.text(),
+                         inplane->wave.name});
     r.push_back(value.text);
     if (certifier)
       for (const auto& field : certificate_fields(certified(*certifier, q, pt, prec, value.text), certifier->encloses()))

@@ -69,20 +69,24 @@ WaveSpec normal_wave(const Flags& f, const std::optional<InPlaneSpec>& inplane) 
 
 std::optional<InPlaneSpec> inplane_options(const Flags& f) {
   const bool constant = f.wave && *f.wave == "constant";
-  if (!constant && !f.longitudinal.given() && !f.phase.given() && !f.in_plane_wave) return std::nullopt;
-  if (!f.longitudinal.given() && (f.phase.given() || f.in_plane_wave))
+  const bool amplitude = f.longitudinal.given() || f.transverse.given();
+  if (!constant && !amplitude && !f.phase.given() && !f.in_plane_wave) return std::nullopt;
+  if (!amplitude && (f.phase.given() || f.in_plane_wave))
     throw InputError(std::string(f.phase.given() ? "--phase" : "--in-plane-wave") +
-                     " without --longitudinal: give the in-plane amplitude");
+                     " without --longitudinal or --transverse: give the in-plane amplitude");
   if (f.kappa.given() || f.omega.given() || f.zeta.given())
     throw InputError("--kappa/--omega with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
-  if (f.certify) throw InputError("--certify: certified values exist for the normal oscillation only, not with --longitudinal");
+  if (f.certify)
+    throw InputError("--certify: certified values exist for the normal oscillation only, not with an in-plane drive");
   if (f.no_escalate) throw InputError("--no-escalate: in-plane oscillation is always computed in mpfr at two precisions");
   if (f.profile.kind != ProfileKind::flat)
-    throw InputError("--longitudinal with --profile " + detail::visible(f.profile_text.value_or("")) +
+    throw InputError(std::string(f.transverse.given() ? "--transverse" : "--longitudinal") + " with --profile " +
+                     detail::visible(f.profile_text.value_or("")) +
                      ": in-plane oscillation is solved for the flat punch only");
   InPlaneSpec s;
   s.constant_normal = constant;
   s.longitudinal = f.longitudinal.given() ? f.longitudinal : InputValue(*Decimal::read("0"));
+  if (f.transverse.given()) s.transverse = f.transverse;
   if (f.phase.given()) s.phase = f.phase;
   if (f.in_plane_wave) s.wave = parse_wave(*f.in_plane_wave);
   check_inplane(s);

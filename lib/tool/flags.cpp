@@ -173,15 +173,18 @@ const std::vector<FlagSpec> kRigFlags{
      }},
 };
 
-// In-plane oscillation (model.md, "In-plane and combined oscillation"): the drive's longitudinal
-// oscillation, its phase and wave.
+// In-plane oscillation (model.md, "In-plane and combined oscillation"): the drive's longitudinal and
+// transverse oscillation, its phase and wave.
 const std::vector<FlagSpec> kInPlaneFlags{
     {"longitudinal", "A", "in-plane oscillation along the sliding direction: a_l = k_x u_x/(mu0 k_z A) >= 0 "
                           "(with --wave constant: k_x u_x/(mu0 F_N))", "none",
      [](Flags& f, const std::string& t) { f.longitudinal = InputValue::read(t, "--longitudinal"); }},
-    {"phase", "P", "lag of the in-plane oscillation behind the normal one, in periods (with --longitudinal)", "0",
+    {"transverse", "A", "in-plane oscillation across the sliding direction: a_t = k_x u_y/(mu0 k_z A) >= 0 "
+                        "(with --wave constant: k_x u_y/(mu0 F_N))", "none",
+     [](Flags& f, const std::string& t) { f.transverse = InputValue::read(t, "--transverse"); }},
+    {"phase", "P", "lag of the in-plane oscillation behind the normal one, in periods (with --longitudinal or --transverse)", "0",
      [](Flags& f, const std::string& t) { f.phase = InputValue::read(t, "--phase"); }},
-    {"in-plane-wave", "W", "the in-plane oscillation's wave: a catalogue wave (with --longitudinal)", "sine",
+    {"in-plane-wave", "W", "the in-plane oscillation's wave: a catalogue wave (with --longitudinal or --transverse)", "sine",
      [](Flags& f, const std::string& t) { f.in_plane_wave = t; }},
 };
 

@@ -1,4 +1,4 @@
-"""In-plane oscillation from Python (longitudinal, phase, in_plane_wave, wave 'constant';
+"""In-plane oscillation from Python (longitudinal, transverse, phase, in_plane_wave, wave 'constant';
 model.md): the tool's digits, the paper's model at zero amplitude, arrays, and the refusals."""
 import os
 import subprocess
@@ -22,6 +22,9 @@ def tool(*args):
      ["--longitudinal", "0.7", "--phase", "0.1", "--in-plane-wave", "square"]),
     ("constant", "3", None, dict(longitudinal="2.5", in_plane_wave="triangle"),
      ["--longitudinal", "2.5", "--in-plane-wave", "triangle"]),
+    ("constant", "0.5", None, dict(longitudinal="0.3", transverse="0.7", phase="0.1"),
+     ["--longitudinal", "0.3", "--transverse", "0.7", "--phase", "0.1"]),
+    ("sine", "2", "1.5", dict(transverse="0.5", phase="0.25"), ["--transverse", "0.5", "--phase", "0.25"]),
 ])
 def test_the_tools_digits(wave, beta, gamma, kw, flags):
     args = ["mu", "--wave", wave, "--beta", beta] + (["--gamma", gamma] if gamma else []) + flags
@@ -60,3 +63,10 @@ def test_refusals(args, kw, words):
 def test_sticking_through_the_period_is_a_solver_error():
     with pytest.raises(vibrofric.SolverError, match="no unique periodic state"):
         vibrofric.mu("constant", 0, None, longitudinal=0.5)
+
+
+def test_transverse_refusals():
+    with pytest.raises(ValueError, match="transverse"):
+        vibrofric.mu("sine", 1, 0.5, transverse=-1)
+    with pytest.raises(ValueError, match="without longitudinal or transverse"):
+        vibrofric.mu("sine", 1, 0.5, phase=0.25)

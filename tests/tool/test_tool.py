@@ -1485,7 +1485,7 @@ WAVE = ["--wave", "--column", "--periods", "--diagnostics"]
 PRECISION = ["--digits", "--type", "--no-escalate"]
 SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
 RIG = ["--kappa", "--omega", "--zeta"]  # psi lists them to refuse them with the reason
-INPLANE = ["--longitudinal", "--phase", "--in-plane-wave"]
+INPLANE = ["--longitudinal", "--transverse", "--phase", "--in-plane-wave"]
 HELP_FLAGS = {
     "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG + INPLANE,
            {"--profile": "flat", "--format": "text", "--digits": "50", "--type": "mpfr", "--area": "auto",
@@ -2417,14 +2417,15 @@ def inplane_tests():
             rows = ok_run(["sweep"] + wave + ["--beta", "0:2:3", "--longitudinal", "1.5", "--phase", "0.25",
                                               "--type", "double"]).splitlines()
             gamma = ["gamma"] if "--gamma" in wave else []
-            header = ",".join(["wave", "beta"] + gamma + ["longitudinal", "phase", "in_plane_wave", "mu_over_mu0"])
+            header = ",".join(["wave", "beta"] + gamma + ["longitudinal", "transverse", "phase", "in_plane_wave",
+                                                          "mu_over_mu0"])
             if rows[0] != header or len(rows) != 4:
                 raise Fail("sweep with --longitudinal: %r" % rows)
             for row in rows[1:]:
                 f = row.split(",")
                 one = ok_run(["mu"] + wave + ["--beta", f[1], "--longitudinal", "1.5", "--phase", "0.25",
                                               "--type", "double"]).splitlines()[0]
-                if f[-1] != one or f[-2] != "sine" or f[-3] != "0.25" or f[-4] != "1.5":
+                if f[-1] != one or f[-2] != "sine" or f[-3] != "0.25" or f[-4] != "0" or f[-5] != "1.5":
                     raise Fail("sweep row %r, mu prints %s" % (row, one))
     case("in-plane: sweep rows are mu's values, with the drive's columns", sweep_rows)
     def trace_rows():
@@ -2451,6 +2452,55 @@ def inplane_tests():
         [], ["psi"])
     bad("in-plane: sweep constant with gamma", ["sweep", "--wave", "constant", "--beta", "1:2:2", "--gamma", "0.5",
                                                 "--longitudinal", "1"], [], ["--gamma", "constant"])
+
+    # The transverse drive (core/inplane/planar.hpp).
+    bad("in-plane: negative transverse amplitude", sine + ["--transverse", "-1"], ["-1"], ["transverse", ">= 0"])
+    bad("in-plane: transverse amplitude nan", sine + ["--transverse", "nan"], ["nan"], ["transverse"])
+    bad("in-plane: transverse with --kappa", sine + ["--transverse", "1", "--kappa", "1", "--omega", "2"], [],
+        ["--kappa", "in-plane"])
+    bad("in-plane: transverse on a curved profile", sine + ["--transverse", "1", "--profile", "sphere"], ["sphere"],
+        ["--transverse", "flat punch"])
+    bad("in-plane: transverse with --certify", sine + ["--transverse", "1", "--certify"], [], ["--certify"])
+
+    def transverse_value():
+        # n = 1, beta = 1, a_t = 1: 0.7414701452 from the catching-up reference extrapolated
+        # (tests/reference/planar_catchup.py, +-8e-9) and its event-driven check (planar_selftest.py, 2e-9).
+        out = ok_run(["mu", "--wave", "constant", "--beta", "1", "--transverse", "1", "--digits", "12"]).splitlines()
+        fields = dict(line.split(": ") for line in out[1:])
+        if abs(F(out[0]) - F("0.7414701452")) > F("5e-10") or fields["mean_lateral"] != "0" or \
+                "backward_slip_fraction" in fields or \
+                abs(sum(F(fields[k]) for k in ("stick_fraction", "slip_fraction", "flight_fraction")) - 1) > F("1e-11"):
+            raise Fail("mu --wave constant --beta 1 --transverse 1: %r" % out)
+    case("in-plane: a transverse drive's value, no lateral mean, no backward slip", transverse_value)
+
+    def transverse_mirror():
+        # p(phi + 1/2) = -p(phi): half a period later the transverse drive is its mirror image
+        args = ["mu", "--wave", "sine", "--gamma", "1.2", "--beta", "0.7", "--transverse", "0.8", "--digits", "12"]
+        a = ok_run(args + ["--phase", "0.1"]).splitlines()
+        b = ok_run(args + ["--phase", "0.6"]).splitlines()
+        la, lb = a[1].split(": ")[1], b[1].split(": ")[1]
+        if a[0] != b[0] or F(la) != -F(lb) or F(la) == 0:
+            raise Fail("mirror of a transverse drive: %r, %r" % (a, b))
+    case("in-plane: half a period's shift mirrors a transverse drive", transverse_mirror)
+
+    def transverse_trace():
+        args = ["--wave", "sine", "--gamma", "0.5", "--beta", "1", "--transverse", "1", "--longitudinal", "0.3"]
+        rows = [line.split(",") for line in ok_run(["trace"] + args + ["--points", "2000", "--digits", "10"]).splitlines()]
+        if rows[0] != ["phi", "n", "s_x", "s_y", "mode"]:
+            raise Fail("trace --transverse header %r" % rows[0])
+        pts = [(float(r[0]), float(r[1]), float(r[2]), float(r[3]), r[4]) for r in rows[1:]]
+        for phi, n, sx, sy, mode in pts:
+            r = (sx * sx + sy * sy) ** 0.5
+            if r > n * (1 + 1e-9) + 1e-12 or (mode == "slip" and abs(r - n) > 1e-9) or \
+                    (mode == "flight" and (n != 0 or r != 0)) or mode not in ("stick", "slip", "flight"):
+                raise Fail("trace %s: row %r breaks the model" % (" ".join(args), (phi, n, sx, sy, mode)))
+        ins = sum((b[0] - a[0]) * (a[2] + b[2]) / 2 for a, b in zip(pts, pts[1:]))
+        iny = sum((b[0] - a[0]) * (a[3] + b[3]) / 2 for a, b in zip(pts, pts[1:]))
+        inn = sum((b[0] - a[0]) * (a[1] + b[1]) / 2 for a, b in zip(pts, pts[1:]))
+        out = ok_run(["mu"] + args + ["--digits", "10"]).splitlines()
+        if abs(ins / inn - float(out[0])) > 1e-5 or abs(iny / inn - float(out[1].split(": ")[1])) > 1e-5:
+            raise Fail("trace %s: the rows' means %r, %r; mu prints %r" % (" ".join(args), ins / inn, iny / inn, out))
+    case("in-plane: trace of a transverse drive obeys the model and integrates to mu", transverse_trace)
 
 
 def collect():

@@ -12,6 +12,7 @@
 #include "evaluate_impl.hpp"
 #include "two_precisions.hpp"
 #include "vibrofric/core/inplane/inplane.hpp"
+#include "vibrofric/core/inplane/planar.hpp"
 
 namespace vibrofric {
 
@@ -27,11 +28,32 @@ void check_decimal(const InputValue& in, const char* name, bool nonnegative) {
                      (nonnegative ? " >= 0" : ""));
 }
 
+// A transverse amplitude: the two-dimensional solver; else the longitudinal stop operator.
+bool planar(const InPlaneSpec& spec) { return spec.transverse.given() && spec.transverse.to<mpfr>() != 0; }
+
 // "wave W, beta = B, gamma = G, longitudinal = A, phase = P, in-plane wave V: ", as typed.
 std::string inplane_context(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec) {
   return "wave " + (spec.constant_normal ? std::string("constant") : normal.name) + ", beta = " + p.beta.text() +
          (spec.constant_normal ? std::string() : ", gamma = " + p.gamma.text()) + ", longitudinal = " +
-         spec.longitudinal.text() + ", phase = " + spec.phase.text() + ", in-plane wave " + spec.wave.name + ": ";
+         spec.longitudinal.text() +
+         (planar(spec) ? ", transverse = " + spec.transverse.text() : std::string()) + ", phase = " + spec.phase.text() + ", in-plane wave " + spec.wave.name + ": ";
+}
+
+// The planar solver's result in the longitudinal one's fields (backward slip is not defined in 2-D).
+InPlaneResult<mpfr> as_inplane(const PlanarResult<mpfr>& q) {
+  InPlaneResult<mpfr> r;
+  r.mu = q.mu;
+  r.mean_lateral = q.mean_lateral;
+  r.retained_area = q.retained_area;
+  r.normal_area = q.normal_area;
+  r.stick_fraction = q.stick_fraction;
+  r.slip_fraction = q.slip_fraction;
+  r.flight_fraction = q.flight_fraction;
+  r.backward_fraction = 0;
+  r.state_s = q.state[0];
+  r.events = q.events;
+  r.periods = q.periods;
+  return r;
 }
 
 struct Solved {
@@ -46,6 +68,11 @@ Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
   if (!spec.constant_normal) w = make_waveform<mpfr>(normal);
   const InPlaneDrive<mpfr> drive{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()};
   try {
+    if (planar(spec))
+      return {as_inplane(solve_planar<mpfr>(
+                  w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave, p.beta.to<mpfr>(),
+                  PlanarDrive<mpfr>{drive.longitudinal, spec.transverse.to<mpfr>(), drive.phase}, opt)),
+              digits};
     return {solve_inplane<mpfr>(w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave,
                                 p.beta.to<mpfr>(), drive, opt),
             digits};
@@ -58,6 +85,7 @@ Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
 
 void check_inplane(const InPlaneSpec& spec) {
   check_decimal(spec.longitudinal, "longitudinal", true);
+  check_decimal(spec.transverse, "transverse", true);
   check_decimal(spec.phase, "phase", false);
   if (spec.wave.kind == WaveKind::fourier || spec.wave.kind == WaveKind::samples)
     throw InputError("in-plane wave " + detail::visible(spec.wave.name) +
@@ -65,7 +93,7 @@ void check_inplane(const InPlaneSpec& spec) {
 }
 
 bool detail::papers_model(const InPlaneSpec& spec) {
-  return !spec.constant_normal && spec.longitudinal.to<mpfr>() == 0;
+  return !spec.constant_normal && spec.longitudinal.to<mpfr>() == 0 && !planar(spec);
 }
 
 mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
@@ -101,14 +129,19 @@ mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlane
   if (report) {
     const int most = std::min(digits, 17);
     const mpfr d = delta(a.r, b.r);
-    report->mean_lateral = agreed(a.r.mean_lateral, b.r.mean_lateral, most);
+    // Both within the lower precision's noise of 0 (a symmetric transverse drive): 0, as for μ̄.
+    const mpfr noise = pow(mpfr(10), 10 - a.digits);
+    using std::abs;
+    report->mean_lateral = abs(a.r.mean_lateral) <= noise && abs(b.r.mean_lateral) <= noise
+                               ? Significant{mpfr(0), 1}
+                               : agreed(a.r.mean_lateral, b.r.mean_lateral, most);
     report->stick_fraction = agreed(a.r.stick_fraction, b.r.stick_fraction, most);
     report->slip_fraction = agreed(a.r.slip_fraction, b.r.slip_fraction, most);
     report->backward_fraction = agreed(a.r.backward_fraction, b.r.backward_fraction, most);
     report->flight_fraction = agreed(a.r.flight_fraction, b.r.flight_fraction, most);
-    using std::abs;
     report->relative_error = {mpfr(zero || b.r.mu == 0 ? d : mpfr(d / abs(b.r.mu))), 2};
     report->working_digits = b.digits;
+    report->planar = planar(spec);
   }
   return zero ? mpfr(0) : b.r.mu;
 }
@@ -141,6 +174,35 @@ const char* inplane_mode_name(InPlaneMode mode) {
   return names[static_cast<int>(mode)];
 }
 
+namespace {
+
+// Rows at both ends of every span and at the equally spaced phases k/points inside it; a row that
+// repeats the last one (a span going on alike in the next) is left out.
+template <class Span, class Row>
+std::vector<InPlaneTraceRow> trace_rows(const std::vector<Span>& spans, int points, int digits, const Row& row_at) {
+  std::vector<InPlaneTraceRow> rows;
+  const auto add = [&](const Span& span, const mpfr& phi) {
+    InPlaneTraceRow row = row_at(span, phi);
+    const auto same = [&](const InPlaneTraceRow& r) {
+      return r.mode == row.mode && same_significant(r.phi, row.phi, digits) && same_significant(r.n, row.n, digits) &&
+             same_significant(r.s_x, row.s_x, digits) && same_significant(r.s_y, row.s_y, digits);
+    };
+    if (!rows.empty() && same(rows.back())) return;
+    rows.push_back(std::move(row));
+  };
+  int next = 0;  // the next equally spaced phase next/points
+  for (const auto& span : spans) {
+    if (!(span.end > span.begin)) continue;
+    add(span, span.begin);
+    for (; next <= points && mpfr(next) / points < span.end; ++next)
+      if (mpfr(next) / points > span.begin) add(span, mpfr(next) / points);
+    add(span, span.end);
+  }
+  return rows;
+}
+
+}  // namespace
+
 std::vector<InPlaneTraceRow> inplane_trace_rows(const WaveSpec& normal, const TraceRequest& request,
                                                 const InPlaneSpec& spec, const Options& opt) {
   check_inplane(spec);
@@ -167,29 +229,24 @@ std::vector<InPlaneTraceRow> inplane_trace_rows(const WaveSpec& normal, const Tr
   const auto p_wave = make_waveform<mpfr>(spec.wave);
   std::unique_ptr<Waveform<mpfr>> w;
   if (!spec.constant_normal) w = make_waveform<mpfr>(normal);
-  const InPlaneSolver<mpfr> solver(w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave,
-                                   p.beta.to<mpfr>(), InPlaneDrive<mpfr>{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()},
-                                   opt);
-  std::vector<InPlaneTraceRow> rows;
-  const auto add = [&](const InPlaneSpan<mpfr>& span, const mpfr& phi) {
-    const auto v = solver.at(span, phi);  // n, D, s
-    InPlaneTraceRow row{phi, v[0], v[2], mpfr(0), span.mode};
-    const auto same = [&](const InPlaneTraceRow& r) {  // where one span ends and the next goes on alike
-      return r.mode == row.mode && same_significant(r.phi, row.phi, digits) && same_significant(r.n, row.n, digits) &&
-             same_significant(r.s_x, row.s_x, digits);
-    };
-    if (!rows.empty() && same(rows.back())) return;
-    rows.push_back(std::move(row));
-  };
-  int next = 0;  // the next equally spaced phase next/points
-  for (const auto& span : b.r.spans) {
-    if (!(span.end > span.begin)) continue;
-    add(span, span.begin);
-    for (; next <= request.points && mpfr(next) / request.points < span.end; ++next)
-      if (mpfr(next) / request.points > span.begin) add(span, mpfr(next) / request.points);
-    add(span, span.end);
+  const mpfr gamma = spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>();
+  if (planar(spec)) {
+    const PlanarSolver<mpfr> solver(
+        w.get(), gamma, *p_wave, p.beta.to<mpfr>(),
+        PlanarDrive<mpfr>{spec.longitudinal.to<mpfr>(), spec.transverse.to<mpfr>(), spec.phase.to<mpfr>()}, opt);
+    const PlanarResult<mpfr> r = solver.solve();
+    static const InPlaneMode modes[] = {InPlaneMode::stick, InPlaneMode::forward_slip, InPlaneMode::flight};
+    return trace_rows(r.spans, request.points, digits, [&](const PlanarSpan<mpfr>& span, const mpfr& phi) {
+      const auto v = solver.at(span, phi);  // n, s_x, s_y
+      return InPlaneTraceRow{phi, v[0], v[1], v[2], modes[static_cast<int>(span.mode)]};
+    });
   }
-  return rows;
+  const InPlaneSolver<mpfr> solver(w.get(), gamma, *p_wave, p.beta.to<mpfr>(),
+                                   InPlaneDrive<mpfr>{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()}, opt);
+  return trace_rows(b.r.spans, request.points, digits, [&](const InPlaneSpan<mpfr>& span, const mpfr& phi) {
+    const auto v = solver.at(span, phi);  // n, D, s
+    return InPlaneTraceRow{phi, v[0], v[2], mpfr(0), span.mode};
+  });
 }
 
 }  // namespace vibrofric

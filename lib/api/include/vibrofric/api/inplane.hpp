@@ -1,6 +1,7 @@
 // In-plane and combined oscillation at a requested precision (model.md, "In-plane and combined
-// oscillation"): μ̄/μ0 of the longitudinal stop operator (core/inplane/inplane.hpp), with the mode
-// fractions, from decimal inputs to decimal text. Computed in mpfr at two working precisions; the
+// oscillation"): μ̄/μ0 of the longitudinal stop operator (core/inplane/inplane.hpp) or, with a
+// transverse amplitude, of the two-dimensional sweeping process (core/inplane/planar.hpp), with the
+// mode fractions, from decimal inputs to decimal text. Computed in mpfr at two working precisions; the
 // printed digits are those both agree on. With a zero amplitude the value is the paper's model's,
 // computed by its solver (evaluate.hpp), so that it prints exactly what `mu` prints.
 #pragma once
@@ -22,6 +23,7 @@ struct Precision;
 // the normal force is constant (n ≡ 1: the point's γ is then not given).
 struct InPlaneSpec {
   InputValue longitudinal;
+  InputValue transverse = InputValue(*Decimal::read("0"));  // a_t, across the sliding direction (≥ 0)
   InputValue phase = InputValue(*Decimal::read("0"));
   WaveSpec wave = parse_wave("sine");
   bool constant_normal = false;
@@ -33,12 +35,13 @@ struct InPlaneReport {
   std::string mu;  // μ̄/μ0 = ∫s_x/∫n
   Significant mean_lateral;  // ∫s_y/∫n
   Significant stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // of the period
+  bool planar = false;         // a transverse drive: slip has a direction, and backward_fraction is not defined
   Significant relative_error;  // estimate: the two precisions apart (2 digits), relative to |μ̄|, or
                                // to 1 where μ̄ is 0 (|μ̄| ≤ 1: a symmetric drive at β = 0 gives 0)
   int working_digits = 0;      // the higher of the two precisions
 };
 
-// The drive checked: a finite decimal amplitude ≥ 0, a finite phase, a catalogue in-plane wave.
+// The drive checked: finite decimal amplitudes ≥ 0, a finite phase, a catalogue in-plane wave.
 void check_inplane(const InPlaneSpec& spec);
 
 // InputError for bad input (β < 0, an amplitude < 0, γ without contact or given with a constant
