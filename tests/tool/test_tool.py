@@ -2484,8 +2484,10 @@ def inplane_tests():
     case("in-plane: half a period's shift mirrors a transverse drive", transverse_mirror)
 
     def transverse_trace():
-        args = ["--wave", "sine", "--gamma", "0.5", "--beta", "1", "--transverse", "1", "--longitudinal", "0.3"]
-        rows = [line.split(",") for line in ok_run(["trace"] + args + ["--points", "2000", "--digits", "10"]).splitlines()]
+        # without flight, and 500 points: each row integrates its span from the start, and under the
+        # sanitizers a case with touch-down at 2000 points ran past the 120 s limit
+        args = ["--wave", "sine", "--gamma", "1.5", "--beta", "1", "--transverse", "1", "--longitudinal", "0.3"]
+        rows = [line.split(",") for line in ok_run(["trace"] + args + ["--points", "500", "--digits", "10"]).splitlines()]
         if rows[0] != ["phi", "n", "s_x", "s_y", "mode"]:
             raise Fail("trace --transverse header %r" % rows[0])
         pts = [(float(r[0]), float(r[1]), float(r[2]), float(r[3]), r[4]) for r in rows[1:]]
@@ -2498,7 +2500,10 @@ def inplane_tests():
         iny = sum((b[0] - a[0]) * (a[3] + b[3]) / 2 for a, b in zip(pts, pts[1:]))
         inn = sum((b[0] - a[0]) * (a[1] + b[1]) / 2 for a, b in zip(pts, pts[1:]))
         out = ok_run(["mu"] + args + ["--digits", "10"]).splitlines()
-        if abs(ins / inn - float(out[0])) > 1e-5 or abs(iny / inn - float(out[1].split(": ")[1])) > 1e-5:
+        # the trapezoid's error on 500 steps between the rows at every event: h^2 max|s''| / 12, with
+        # |s''| <= |D''| + |D'|^2 / n <= 4 pi^2 * 1.3 + (1 + 2 pi * 1.3)^2 / 0.5 (about 200): 7e-5
+        tol = 1e-4
+        if abs(ins / inn - float(out[0])) > tol or abs(iny / inn - float(out[1].split(": ")[1])) > tol:
             raise Fail("trace %s: the rows' means %r, %r; mu prints %r" % (" ".join(args), ins / inn, iny / inn, out))
     case("in-plane: trace of a transverse drive obeys the model and integrates to mu", transverse_trace)
 
