@@ -132,9 +132,9 @@ Flat punch only (Psi does not exist for curved profiles).
         e.type = type;
         e.profile = to_profile(profile);
         e.profile_text = py_repr(profile);
-        if (e.inplane && e.profile.kind != ProfileKind::flat)
-          throw InputError(std::string(transverse.is_none() ? "longitudinal" : "transverse") + " with profile = " +
-                           e.profile_text + ": in-plane oscillation is solved for the flat punch only");
+        if (e.inplane && e.inplane->constant_normal && e.profile.kind != ProfileKind::flat)
+          throw InputError("wave = 'constant' with profile = " + e.profile_text +
+                           ": a curved contact is solved with the normal oscillation (give wave and gamma)");
         if (e.rig && e.profile.kind != ProfileKind::flat)
           throw InputError("kappa/omega with profile = " + e.profile_text +
                            ": the springs of a curved contact share the body, so the MDR row does not decouple "

@@ -59,13 +59,15 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
   if (spec.constant_normal && f.gamma.given())
     throw InputError("--gamma " + detail::visible(f.gamma.text()) + " with --wave constant: the normal force is constant (give no --gamma)");
   const Point p{need(f, f.beta, "beta"), spec.constant_normal ? InputValue() : need(f, f.gamma, "gamma")};
-  const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver);
+  const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver, f.profile);
   // A transverse drive slips in every direction: backward slip is the longitudinal drive's alone.
   std::vector<std::pair<std::string, std::string>> fields{
       {"mean_lateral", r.mean_lateral.text()},     {"stick_fraction", r.stick_fraction.text()},
       {"slip_fraction", r.slip_fraction.text()},   {"backward_slip_fraction", r.backward_fraction.text()},
       {"flight_fraction", r.flight_fraction.text()}, {"relative_error_estimate", r.relative_error.text()}};
   if (r.planar) fields.erase(fields.begin() + 3);
+  // A curved contact's springs each have their own fractions: the row reports none.
+  if (r.curved) fields.erase(fields.begin() + 1, fields.end() - 1);
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';

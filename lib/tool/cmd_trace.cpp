@@ -28,6 +28,9 @@ int run_trace(const Flags& f) {
   request.profile = f.profile;
   const BatchOptions o = batch_options(f);
   if (inplane) {
+    if (f.profile.kind != ProfileKind::flat)
+      throw InputError("trace with --profile " + detail::visible(f.profile_text.value_or("")) +
+                       " and an in-plane oscillation: the rows are the flat punch's only (mu and sweep take the curved row)");
     const auto rows = inplane_trace_rows(wave, request, *inplane, o.solver);
     std::cout << "phi,n,s_x,s_y,mode\n";
     const int d = request.digits;

@@ -79,10 +79,9 @@ std::optional<InPlaneSpec> inplane_options(const Flags& f) {
   if (f.certify)
     throw InputError("--certify: certified values exist for the normal oscillation only, not with an in-plane drive");
   if (f.no_escalate) throw InputError("--no-escalate: in-plane oscillation is always computed in mpfr at two precisions");
-  if (f.profile.kind != ProfileKind::flat)
-    throw InputError(std::string(f.transverse.given() ? "--transverse" : "--longitudinal") + " with --profile " +
-                     detail::visible(f.profile_text.value_or("")) +
-                     ": in-plane oscillation is solved for the flat punch only");
+  if (f.profile.kind != ProfileKind::flat && constant)
+    throw InputError("--wave constant with --profile " + detail::visible(f.profile_text.value_or("")) +
+                     ": a curved contact is solved with the normal oscillation (give --wave and --gamma)");
   InPlaneSpec s;
   s.constant_normal = constant;
   s.longitudinal = f.longitudinal.given() ? f.longitudinal : InputValue(*Decimal::read("0"));

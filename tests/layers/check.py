@@ -13,7 +13,7 @@ core/detail/) and the modules below them:
     flat       waves
     curved     waves, flat
     dynamics   waves, flat
-    inplane    waves, flat
+    inplane    waves, flat, curved (the MDR row of in-plane springs)
     certified  foundation only
 (lib/core/src/instances compiles the solvers once per number type and may include any of them.)
 
@@ -48,7 +48,7 @@ MODULES = {
     "flat": ("waves",),
     "curved": ("waves", "flat"),
     "dynamics": ("waves", "flat"),
-    "inplane": ("waves", "flat"),
+    "inplane": ("waves", "flat", "curved"),
     "certified": (),
 }
 CORE_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]vibrofric/core/([^>"]+)[>"]')

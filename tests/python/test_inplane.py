@@ -25,6 +25,8 @@ def tool(*args):
     ("constant", "0.5", None, dict(longitudinal="0.3", transverse="0.7", phase="0.1"),
      ["--longitudinal", "0.3", "--transverse", "0.7", "--phase", "0.1"]),
     ("sine", "2", "1.5", dict(transverse="0.5", phase="0.25"), ["--transverse", "0.5", "--phase", "0.25"]),
+    ("sine", "0.3", "-0.3", dict(longitudinal="0.5", phase="0.25", profile="sphere"),
+     ["--longitudinal", "0.5", "--phase", "0.25", "--profile", "sphere"]),
 ])
 def test_the_tools_digits(wave, beta, gamma, kw, flags):
     args = ["mu", "--wave", wave, "--beta", beta] + (["--gamma", gamma] if gamma else []) + flags
@@ -35,6 +37,8 @@ def test_the_tools_digits(wave, beta, gamma, kw, flags):
 def test_zero_amplitude_is_the_papers_model():
     for beta, gamma in ((2, 1.5), (0.7, -0.3)):
         assert vibrofric.mu("sine", beta, gamma, longitudinal=0, phase=0.3) == vibrofric.mu("sine", beta, gamma)
+        assert vibrofric.mu("sine", beta, gamma, longitudinal=0, profile="cone") == \
+            vibrofric.mu("sine", beta, gamma, profile="cone")
 
 
 def test_arrays_broadcast_like_mu():
@@ -49,7 +53,7 @@ def test_arrays_broadcast_like_mu():
     (("sine", 1, 0.5), dict(phase=0.25), ["phase", "longitudinal"]),
     (("sine", 1, 0.5), dict(longitudinal=1, in_plane_wave="sinus"), ["sinus"]),
     (("sine", 1, 0.5), dict(longitudinal=1, kappa=1, omega=2), ["kappa", "in-plane"]),
-    (("sine", 1, 0.5), dict(longitudinal=1, profile="sphere"), ["flat punch"]),
+    (("constant", 1, None), dict(longitudinal=1, profile="sphere"), ["constant", "normal oscillation"]),
     (("constant", 1, 0.5), dict(longitudinal=1), ["gamma", "constant"]),
     (("sine", -1, 0.5), dict(longitudinal=1), ["beta", "-1"]),
 ])

@@ -436,9 +436,7 @@ class PointEvaluator {
   Real inplane(const Point& p) const {
     if (q_ == Quantity::psi)
       throw InputError("in-plane oscillation gives mu only: Psi (Eq. 12) belongs to the normal oscillation alone");
-    if (options_.profile.kind != ProfileKind::flat)
-      throw InputError("in-plane oscillation with profile " + options_.profile.name + ": the flat punch only");
-    return decided(inplane_value(spec_, p, *options_.inplane, precision(), options_.solver));
+    return decided(inplane_value(spec_, p, *options_.inplane, precision(), options_.solver, options_.profile));
   }
   // This worker's type and digits as a Precision, and a value decided in mpfr as this type holds it.
   Precision precision() const {

@@ -11,7 +11,9 @@
 #include "vibrofric/api/rig.hpp"
 #include "evaluate_impl.hpp"
 #include "two_precisions.hpp"
+#include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/core/inplane/inplane.hpp"
+#include "vibrofric/core/inplane/inplane_curved.hpp"
 #include "vibrofric/core/inplane/planar.hpp"
 
 namespace vibrofric {
@@ -32,8 +34,9 @@ void check_decimal(const InputValue& in, const char* name, bool nonnegative) {
 bool planar(const InPlaneSpec& spec) { return spec.transverse.given() && spec.transverse.to<mpfr>() != 0; }
 
 // "wave W, beta = B, gamma = G, longitudinal = A, phase = P, in-plane wave V: ", as typed.
-std::string inplane_context(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec) {
-  return "wave " + (spec.constant_normal ? std::string("constant") : normal.name) + ", beta = " + p.beta.text() +
+std::string inplane_context(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
+                            const ProfileSpec& profile = {}) {
+  return (profile.kind == ProfileKind::flat ? std::string() : "profile " + profile.name + ", ") + "wave " + (spec.constant_normal ? std::string("constant") : normal.name) + ", beta = " + p.beta.text() +
          (spec.constant_normal ? std::string() : ", gamma = " + p.gamma.text()) + ", longitudinal = " +
          spec.longitudinal.text() +
          (planar(spec) ? ", transverse = " + spec.transverse.text() : std::string()) + ", phase = " + spec.phase.text() + ", in-plane wave " + spec.wave.name + ": ";
@@ -61,13 +64,37 @@ struct Solved {
   int digits;
 };
 
-Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec, int digits, const Options& opt) {
+// The curved contact's row (inplane_curved.hpp) at this precision: each integral to 10^(3 − digits)
+// of ∫N, so that the two precisions' difference also measures the quadrature's error.
+InPlaneResult<mpfr> curved_at(const Waveform<mpfr>& w, const ProfileSpec& profile, const Point& p,
+                              const Waveform<mpfr>& p_wave, const PlanarDrive<mpfr>& drive, int digits,
+                              const Options& opt) {
+  const auto shape = make_profile<mpfr>(profile);
+  const mpfr beta = p.beta.to<mpfr>();
+  const auto row = solve_inplane_curved<mpfr>(
+      w, *shape, p.gamma.to<mpfr>(),
+      [&](const mpfr& g) { return inplane_spring<mpfr>(w, g, p_wave, beta, drive, opt); },
+      mpfr(pow(mpfr(10), 3 - digits)), opt);
+  InPlaneResult<mpfr> r;
+  r.mu = row.mu;
+  r.mean_lateral = row.mean_lateral;
+  r.retained_area = row.friction_integral;
+  r.normal_area = row.normal_integral;
+  return r;
+}
+
+Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec, int digits, const Options& opt,
+                const ProfileSpec& profile = {}) {
   PrecisionScope scope(static_cast<unsigned>(digits));
   const auto p_wave = make_waveform<mpfr>(spec.wave);
   std::unique_ptr<Waveform<mpfr>> w;
   if (!spec.constant_normal) w = make_waveform<mpfr>(normal);
   const InPlaneDrive<mpfr> drive{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()};
   try {
+    if (profile.kind != ProfileKind::flat)
+      return {curved_at(*w, profile, p, *p_wave,
+                        PlanarDrive<mpfr>{drive.longitudinal, spec.transverse.to<mpfr>(), drive.phase}, digits, opt),
+              digits};
     if (planar(spec))
       return {as_inplane(solve_planar<mpfr>(
                   w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave, p.beta.to<mpfr>(),
@@ -77,7 +104,7 @@ Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
                                 p.beta.to<mpfr>(), drive, opt),
             digits};
   } catch (const SolverError& e) {
-    throw SolverError(inplane_context(normal, p, spec) + e.what());
+    throw SolverError(inplane_context(normal, p, spec, profile) + e.what());
   }
 }
 
@@ -97,13 +124,18 @@ bool detail::papers_model(const InPlaneSpec& spec) {
 }
 
 mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
-                           const Precision& precision, const Options& opt, InPlaneReport* report) {
+                           const Precision& precision, const Options& opt, const ProfileSpec& profile,
+                           InPlaneReport* report) {
   check_inplane(spec);
   check_decimal(p.beta, "beta", true);
   if (spec.constant_normal && p.gamma.given())
     throw InputError("gamma = " + detail::visible(p.gamma.text()) +
                      " with a constant normal force: the normal force is the unit (give no gamma)");
   if (!spec.constant_normal && !p.gamma.given()) throw InputError("gamma is empty: expected a decimal number");
+  if (spec.constant_normal && profile.kind != ProfileKind::flat)
+    throw InputError("profile " + profile.name +
+                     " with a constant normal force: a curved contact is solved with the normal oscillation "
+                     "(the row's springs then share one amplitude)");
   const int digits = output_digits(precision);
   // Two precisions; the higher raised until their difference decides the printed digits.
   bool zero = false;
@@ -112,7 +144,7 @@ mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlane
     return mpfr(2 * abs(mpfr(lower.mu - higher.mu)));
   };
   const auto [a, b] = two_precisions<Solved>(
-      digits, [&](int d, const Solved*) { return solve_at(normal, p, spec, d, opt); },
+      digits, [&](int d, const Solved*) { return solve_at(normal, p, spec, d, opt, profile); },
       [&](const Solved& lower, const Solved& higher) {
         // |μ̄| ≤ 1 (|s| ≤ n), so both values within 10^(10 − digits) of 0 at the lower precision are
         // a mean force that vanishes (a symmetric drive at β = 0): 0, which no rounding test decides.
@@ -124,9 +156,10 @@ mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlane
         const mpfr d = delta(lower.r, higher.r);
         return decides(mpfr(higher.r.mu - d), mpfr(higher.r.mu + d), precision, digits);
       },
-      inplane_context(normal, p, spec), "in-plane oscillation");
+      inplane_context(normal, p, spec, profile), "in-plane oscillation");
   PrecisionScope scope(static_cast<unsigned>(b.digits));
   if (report) {
+    report->curved = profile.kind != ProfileKind::flat;
     const int most = std::min(digits, 17);
     const mpfr d = delta(a.r, b.r);
     // Both within the lower precision's noise of 0 (a symmetric transverse drive): 0, as for μ̄.
@@ -147,7 +180,7 @@ mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlane
 }
 
 InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
-                               const Precision& precision, const Options& opt) {
+                               const Precision& precision, const Options& opt, const ProfileSpec& profile) {
   if (precision.type == NumberType::mpfr && (precision.digits < min_digits || precision.digits > max_digits))
     throw InputError("digits = " + std::to_string(precision.digits) + ": expected " + std::to_string(min_digits) +
                      " to " + std::to_string(max_digits));
@@ -157,11 +190,12 @@ InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InP
     check(p);
   }
   InPlaneReport report;
-  const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, &report);
+  const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, profile, &report);
   // A zero amplitude is the paper's model: its value exactly as `mu` prints it.
   if (detail::papers_model(spec)) {
     BatchOptions batch;
     batch.solver = opt;
+    batch.profile = profile;
     report.mu = evaluate(normal, Quantity::mu, {p}, precision, batch).front();
   } else {
     report.mu = detail::rig_text(v, precision);

@@ -10,6 +10,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/input_value.hpp"
+#include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/core/flat/solver.hpp"
 #include "vibrofric/core/inplane/inplane.hpp"
 
@@ -36,6 +37,7 @@ struct InPlaneReport {
   Significant mean_lateral;  // ∫s_y/∫n
   Significant stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // of the period
   bool planar = false;         // a transverse drive: slip has a direction, and backward_fraction is not defined
+  bool curved = false;         // a curved contact (the MDR row): the fractions are the flat punch's only
   Significant relative_error;  // estimate: the two precisions apart (2 digits), relative to |μ̄|, or
                                // to 1 where μ̄ is 0 (|μ̄| ≤ 1: a symmetric drive at β = 0 gives 0)
   int working_digits = 0;      // the higher of the two precisions
@@ -47,8 +49,11 @@ void check_inplane(const InPlaneSpec& spec);
 // InputError for bad input (β < 0, an amplitude < 0, γ without contact or given with a constant
 // normal force); SolverError where no unique periodic state exists (it sticks through the period)
 // or the precisions do not agree.
+// A curved profile integrates the row of in-plane springs (core/inplane/inplane_curved.hpp), with the
+// normal oscillation only.
 InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
-                               const Precision& precision, const Options& solver = {});
+                               const Precision& precision, const Options& solver = {},
+                               const ProfileSpec& profile = {});
 
 // One row of the periodic state for `trace`: φ, n, the tangential force's components s_x (along
 // the sliding direction) and s_y (across it: 0 for a longitudinal drive), and the mode.
@@ -73,7 +78,7 @@ bool papers_model(const InPlaneSpec& spec);
 // The value evaluate() prints for `precision` with options.inplane (not the paper's model): the
 // higher precision's μ̄, where the two precisions' difference decides the printed digits.
 mpfr inplane_value(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec, const Precision& precision,
-                   const Options& solver, InPlaneReport* report = nullptr);
+                   const Options& solver, const ProfileSpec& profile = {}, InPlaneReport* report = nullptr);
 }  // namespace detail
 
 }  // namespace vibrofric
