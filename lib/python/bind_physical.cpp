@@ -63,6 +63,10 @@ or 'profile:FILE' (heights in m). Numbers as for mu() (floats by their shortest 
 mass kg and k_system N/m (both, flat punch; damping N s/m optional): rig dynamics (model.md), a body
 of mass m on the apparatus' spring; then kappa, omega, zeta and the rig's stick, slip and flight
 fractions and Floquet multiplier follow contact_fraction.
+u_x, u_y (m, zero-to-peak, >= 0), phase (periods) and in_plane_wave (a catalogue wave): in-plane
+oscillation (model.md), a_l = G* u_x/(mu0 E* A) returned as longitudinal and transverse; mu is then
+the in-plane model's, with F_y_mean_N and the flat punch's fractions. wave = 'constant' with F_N: a
+constant normal load (flat punch, no A or u_mean), beta = k_x v0/(mu0 F_N f), a = k_x u/(mu0 F_N).
 
 Returns a dict with exactly the tool's output names, in its order: shape, A_m (given unit),
 E_star_Pa, G_star_Pa, k_z_N_per_m and k_x_N_per_m (flat) or contact_radius_max_m (curved), lambda
@@ -88,9 +92,18 @@ arrays) while the others answer.
          const py::object& u_mean, const py::object& F_N, const py::object& G1, const py::object& G2,
          const py::object& shape, const py::object& radius, const py::object& R, const py::object& half_angle,
          const py::object& flat_radius, const py::object& unit, const py::object& mass, const py::object& k_system,
-         const py::object& damping, const py::object& digits, const py::object& type,
+         const py::object& damping, const py::object& u_x, const py::object& u_y, const py::object& phase,
+         const py::object& in_plane_wave, const py::object& digits, const py::object& type,
          const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
-        const WaveSpec w = to_wave(wave);
+        // 'constant': no normal oscillation, the load F_N (physical_constant); else a wave to read.
+        const bool constant = py::isinstance<py::str>(wave) && wave.cast<std::string>() == "constant";
+        WaveSpec w;
+        if (constant)
+          w.name = "constant";
+        else
+          w = to_wave(wave);
+        if (!in_plane_wave.is_none() && !py::isinstance<py::str>(in_plane_wave))
+          throw py::type_error("in_plane_wave = " + py_repr(in_plane_wave) + ": expected a catalogue wave's name");
         if (!unit.is_none() && !py::isinstance<py::str>(unit))
           throw py::type_error("unit = " + py_repr(unit) + ": expected 'm', 'mm', 'um' or 'nm'");
         const Precision precision = to_precision(optional_int(digits, "digits"), type);
@@ -102,11 +115,14 @@ arrays) while the others answer.
             {"E1", &E1},   {"nu1", &nu1},       {"E2", &E2},   {"nu2", &nu2},   {"G1", &G1},
             {"G2", &G2},   {"v0", &v0},         {"f", &f},     {"A", &A},       {"u_mean", &u_mean},
             {"F_N", &F_N}, {"mu0", &mu0},       {"radius", &radius}, {"R", &R}, {"half_angle", &half_angle},
-            {"flat_radius", &flat_radius}, {"mass", &mass}, {"k_system", &k_system}, {"damping", &damping}};
+            {"flat_radius", &flat_radius}, {"mass", &mass}, {"k_system", &k_system}, {"damping", &damping},
+            {"u_x", &u_x}, {"u_y", &u_y}, {"phase", &phase}};
         auto request_of = [&](const std::map<std::string, py::object>& values) {
           PhysicalRequest request;
           request.shape.text = shape.cast<std::string>();
           if (!unit.is_none()) request.unit.text = unit.cast<std::string>();
+          if (!in_plane_wave.is_none()) request.in_plane_wave.text = in_plane_wave.cast<std::string>();
+          request.constant_normal = constant;
           for (const auto& input : request.inputs()) {
             const auto it = values.find(input.member);
             if (it != values.end() && input.number) input.number->value = scalar_value(it->second, input.member);
@@ -171,6 +187,7 @@ arrays) while the others answer.
       "u_mean"_a = py::none(), "F_N"_a = py::none(), "G1"_a = py::none(), "G2"_a = py::none(), "shape"_a = "flat",
       "radius"_a = py::none(), "R"_a = py::none(), "half_angle"_a = py::none(), "flat_radius"_a = py::none(),
       "unit"_a = py::none(), "mass"_a = py::none(), "k_system"_a = py::none(), "damping"_a = py::none(),
+      "u_x"_a = py::none(), "u_y"_a = py::none(), "phase"_a = py::none(), "in_plane_wave"_a = py::none(),
       "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
       "strings"_a = false, "nan_on_error"_a = false, physical_doc);
 }

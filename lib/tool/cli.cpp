@@ -67,9 +67,10 @@ const char* const kInPlane =
     "in-plane oscillation (model.md): --longitudinal A [--transverse B] [--phase P] [--in-plane-wave W]\n"
     "  move the spring's far end along D = (beta phi + A w_p(phi + P), B w_p(phi + P)) while the normal\n"
     "  indentation oscillates (--wave constant: a constant normal force, no --gamma; A, B in units of\n"
-    "  mu0 F_N/k_x); beta >= 0; flat punch. mu prints mean_lateral (the force across the sliding\n"
-    "  direction) and the stick, slip and flight fractions after the value; a negative mu means the\n"
-    "  oscillation pushes the body forward.\n";
+    "  mu0 F_N/k_x); beta >= 0. mu prints mean_lateral (the force across the sliding direction)\n"
+    "  and the stick, slip and flight fractions after the value; a negative mu means the\n"
+    "  oscillation pushes the body forward. --profile P (mu, sweep; with the normal oscillation):\n"
+    "  the MDR row, each spring driven alike; then no fractions (each spring has its own).\n";
 
 const char* const kProfiles =
     "profiles P (model.md MDR): flat (the flat punch), sphere, cone, power:N (N >= 1, sigma = x^N),\n"
@@ -91,6 +92,10 @@ const char* const kPhysicalAbout =
     "(Hertz on the sphere; inf at the punch's rim, the cone's tip, a profile's kink), beta_c (Eq. 6,\n"
     "of the clipped n; curved: the central spring's), the fraction of the period in contact and, for\n"
     "the flat punch, in stick.\n"
+    "In-plane oscillation (model.md): --u-x and --u-y give a_l = G* u_x/(mu0 E* A), a_t likewise\n"
+    "(printed as longitudinal and transverse); mu is then the in-plane model's, and F_y_mean_N and\n"
+    "its stick, slip and flight fractions (flat punch) are printed. --wave constant (flat punch, no\n"
+    "--A, --u-mean) is a constant normal load --F-N: beta = k_x v0/(mu0 F_N f), a = k_x u/(mu0 F_N).\n"
     "shapes S and their GEOMETRY (metres, degrees):\n"
     "  flat (default) --radius a          flat-ended cylinder: k_z = 2 E* a, k_x = 2 G* a (Eq. 1)\n"
     "  sphere --R R                       MDR (model.md), sigma = x^2/(R A)\n"
@@ -160,6 +165,10 @@ const std::vector<CommandSpec>& commands() {
         {"mass", "KG", "rig dynamics (flat): the body's mass, > 0 (with --k-system)", "", nullptr},
         {"k-system", "N/M", "rig dynamics: the apparatus' stiffness between drive and body, > 0 (with --mass)", "", nullptr},
         {"damping", "NS/M", "rig dynamics: a damper parallel to the apparatus' spring, >= 0", "0", nullptr},
+        {"u-x", "M", "in-plane oscillation along the sliding direction: zero-to-peak amplitude, >= 0", "none", nullptr},
+        {"u-y", "M", "in-plane oscillation across the sliding direction: zero-to-peak amplitude, >= 0", "none", nullptr},
+        {"phase", "P", "lag of the in-plane oscillation behind the normal one, in periods (with --u-x or --u-y)", "0", nullptr},
+        {"in-plane-wave", "W", "the in-plane oscillation's wave: a catalogue wave (with --u-x or --u-y)", "sine", nullptr},
         {"radius", "M", "flat: punch radius (required for flat)", "", nullptr},
         {"R", "M", "sphere, wearflat: radius of curvature", "", nullptr},
         {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", "", nullptr},

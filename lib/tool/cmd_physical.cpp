@@ -26,6 +26,7 @@ PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, Inpu
       input.text->text = it->second;
     }
   }
+  request.constant_normal = f.wave && *f.wave == "constant";
   std::vector<std::string> warnings;
   PhysicalOutputs out = physical_point(wave, request, precision_of(f), batch_options(f), &warnings);
   // Each warning once (a sweep repeats them), on stderr after the output, as the diagnostics.
@@ -52,7 +53,10 @@ std::vector<std::string> values_of(const PhysicalOutputs& r) {
 // `physical` at one point, or over a range of one input (--v0, --A, --f, --F-N or --u-mean as
 // FROM:TO:N or log:FROM:TO:N): one row per value, streamed as it is computed.
 int run_physical(const Flags& f) {
-  const WaveSpec wave = read_wave(f);
+  // --wave constant: no normal oscillation (physical_constant); the wave is not read.
+  WaveSpec constant;
+  constant.name = "constant";
+  const WaveSpec wave = f.wave && *f.wave == "constant" ? constant : read_wave(f);
   std::string swept;
   std::map<std::string, InputValue> values;
   for (const auto& [name, read] : f.physical) values[name] = read.front();

@@ -204,7 +204,7 @@ void text_gamma(Flags& f, const std::string& t) { f.gamma = InputValue::read(t, 
 const std::vector<std::string> kSweptPhysical{"v0", "A", "f", "F-N", "u-mean"};
 
 void read_physical(Flags& f, const std::string& name, const std::string& text) {
-  if (name == "shape" || name == "unit") {
+  if (name == "shape" || name == "unit" || name == "in-plane-wave") {
     f.physical_texts[name] = text;
     return;
   }

@@ -27,7 +27,8 @@ CASES = {
     "sphere_load": dict(BASE, shape="sphere", R=0.01, F_N=0.5),
     "flat_shear_moduli": dict(BASE, G1=80e9, G2=26e9, radius=2e-3, u_mean=-0.4e-6),
 }
-FLAGS = {"u_mean": "u-mean", "F_N": "F-N", "half_angle": "half-angle", "flat_radius": "flat-radius"}
+FLAGS = {"u_mean": "u-mean", "F_N": "F-N", "half_angle": "half-angle", "flat_radius": "flat-radius", "u_x": "u-x",
+         "u_y": "u-y", "in_plane_wave": "in-plane-wave"}
 
 
 def tool_json(wave, inputs, precision):
@@ -291,3 +292,28 @@ def test_peak_load_and_pressure():
     assert s["F_N_peak_N"] == pytest.approx(4 / 3 * float(s["E_star_Pa"]) * 0.01 ** 0.5 * d ** 1.5, rel=1e-14)
     assert s["contact_radius_max_m"] == pytest.approx((0.01 * d) ** 0.5, rel=1e-14)
     assert s["p_max_peak_Pa"] == pytest.approx(1.5 * s["p_mean_peak_Pa"], rel=1e-14)
+
+
+@needs_tool
+@pytest.mark.parametrize("wave, inputs", [
+    ("sine", dict(BASE, radius=1e-3, u_mean=0.3e-6, u_x=1e-6, phase=0.25)),
+    ("sine", dict(BASE, shape="sphere", R=0.01, u_mean=-0.2e-6, u_x=5e-7, phase=0.25)),
+    ("constant", dict(E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, v0=2e-2, f=20000, mu0=0.3, radius=1e-3, F_N=10,
+                      u_x=2e-7, in_plane_wave="triangle")),
+])
+def test_in_plane_equals_tool(wave, inputs):
+    # In-plane oscillation (u_x, phase, in_plane_wave; wave 'constant' with F_N): the tool's outputs.
+    want = tool_json(wave, inputs, ["--digits", "15"])
+    got = vibrofric.physical(wave, digits=15, strings=True, **inputs)
+    assert list(got.items()) == want
+    assert "longitudinal" in got and "F_y_mean_N" in got
+
+
+def test_in_plane_refusals():
+    with pytest.raises(ValueError, match="u_x"):
+        vibrofric.physical("sine", **CASES["flat"], u_x=-1e-6)
+    with pytest.raises(ValueError, match="phase"):
+        vibrofric.physical("sine", **CASES["flat"], phase=0.25)
+    with pytest.raises(ValueError, match="constant"):
+        vibrofric.physical("constant", E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, v0=2e-2, f=20000, mu0=0.3,
+                           radius=1e-3, F_N=10, A=1e-6, u_x=1e-7)

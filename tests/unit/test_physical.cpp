@@ -13,6 +13,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/rig.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/physical.hpp"
@@ -231,6 +232,107 @@ TEST(Physical, RigOutputsInSIUnits) {
   ASSERT_EQ(free.count("zeta"), 1u);
   EXPECT_EQ(free.at("zeta").number.value, 0);
   EXPECT_EQ(free.at("kappa").text(), out.at("kappa").text());
+}
+
+
+// In-plane oscillation from SI inputs: a_l = G* u_x/(mu0 E* A) and, with a constant load, β = k_x v0/(mu0 F_N f),
+// a = k_x u/(mu0 F_N), each computed here from Eq. 1 at 50 digits; the ratio, forces and fractions against
+// evaluate_inplane at those groups.
+TEST(Physical, InPlaneOutputsInSIUnits) {
+  const std::map<std::string, std::string> solids{{"E1", "210e9"}, {"nu1", "0.3"}, {"E2", "70e9"}, {"nu2", "0.33"},
+                                                  {"radius", "1e-3"}, {"mu0", "0.3"}};
+  const Precision precision{NumberType::mpfr, 20};
+  PrecisionScope scope(50);
+  PhysicalInput<mpfr> in;
+  in.E1 = mpfr("210e9"), in.nu1 = mpfr("0.3"), in.E2 = mpfr("70e9"), in.nu2 = mpfr("0.33"), in.radius = mpfr("1e-3");
+  in.v0 = mpfr("2e-3"), in.f = mpfr("20000"), in.A = mpfr("1e-6"), in.u_mean = mpfr("2e-7"), in.mu0 = mpfr("0.3");
+  const Reference groups = reference(in);
+  const auto computed = [](const mpfr& v) { return InputValue::computed(v, format_significant(v, 40)); };
+  const auto close = [](const PhysicalOutput& o, const mpfr& want, int digits) {
+    if (want == 0) return o.number.value == 0;
+    return abs(mpfr(o.number.value / want - 1)) < pow(mpfr(10), 1 - digits);
+  };
+  const auto outputs = [&](const WaveSpec& wave, const PhysicalRequest& r) {
+    std::map<std::string, PhysicalOutput> out;
+    for (const PhysicalOutput& o : physical_point(wave, r, precision)) out.emplace(o.name, o);
+    return out;
+  };
+  {  // normal and longitudinal oscillation, a quarter period apart (the ratchet: F_x < 0)
+    PhysicalRequest r;
+    auto values = solids;
+    values.insert({{"v0", "2e-3"}, {"f", "20000"}, {"A", "1e-6"}, {"u_mean", "2e-7"}, {"u_x", "1e-6"}, {"phase", "0.25"}});
+    set_inputs(r, values);
+    const WaveSpec sine = parse_wave("sine");
+    const auto out = outputs(sine, r);
+    const mpfr a_l = groups.G_star * mpfr("1e-6") / (in.mu0 * groups.E_star * in.A);
+    InPlaneSpec spec;
+    spec.longitudinal = computed(a_l);
+    spec.phase = InputValue::read("0.25", "phase");
+    const InPlaneReport want = evaluate_inplane(sine, Point(computed(groups.beta), computed(groups.gamma)), spec, {NumberType::mpfr, 30});
+    EXPECT_TRUE(close(out.at("longitudinal"), a_l, 20)) << out.at("longitudinal").text();
+    EXPECT_EQ(out.at("transverse").number.value, 0);
+    EXPECT_TRUE(close(out.at("mu_over_mu0"), mpfr(want.mu), 19)) << out.at("mu_over_mu0").text() << " against " << want.mu;
+    EXPECT_LT(out.at("mu_over_mu0").number.value, 0);
+    const mpfr F_N = out.at("F_N_mean_N").number.value;
+    EXPECT_TRUE(close(out.at("F_x_mean_N"), mpfr(mpfr(want.mu) * in.mu0 * F_N), 19)) << out.at("F_x_mean_N").text();
+    EXPECT_EQ(out.at("F_y_mean_N").number.value, 0);
+    EXPECT_TRUE(close(out.at("stick_fraction"), want.stick_fraction.value, want.stick_fraction.digits - 1));
+    EXPECT_TRUE(close(out.at("slip_fraction"), want.slip_fraction.value, want.slip_fraction.digits - 1));
+    EXPECT_TRUE(close(out.at("backward_slip_fraction"), want.backward_fraction.value, want.backward_fraction.digits - 1));
+    EXPECT_TRUE(close(out.at("flight_fraction"), want.flight_fraction.value, want.flight_fraction.digits - 1));
+    EXPECT_EQ(out.count("beta_c"), 0u);  // the paper's β_c is not the in-plane model's
+    // Zero amplitudes are the paper's model: its value and outputs, with the drive's columns.
+    PhysicalRequest zero = r;
+    zero.u_x.value = InputValue::read("0", "u_x");
+    PhysicalRequest none = r;
+    none.u_x.value = InputValue();
+    none.phase.value = InputValue();
+    const auto z = outputs(sine, zero), n = outputs(sine, none);
+    EXPECT_EQ(z.at("mu_over_mu0").text(), n.at("mu_over_mu0").text());
+    EXPECT_EQ(z.at("stick_fraction").text(), n.at("stick_fraction").text());
+    EXPECT_EQ(n.count("longitudinal"), 0u);
+  }
+  {  // a constant normal load with both in-plane drives
+    PhysicalRequest r;
+    auto values = solids;
+    values.insert({{"v0", "2e-2"}, {"f", "20000"}, {"F_N", "10"}, {"u_x", "2e-7"}});
+    set_inputs(r, values);
+    r.constant_normal = true;
+    WaveSpec constant;
+    constant.name = "constant";
+    const auto out = outputs(constant, r);
+    const mpfr unit = in.mu0 * mpfr(10);
+    const mpfr beta = groups.k_x * mpfr("2e-2") / (unit * in.f), a = groups.k_x * mpfr("2e-7") / unit;
+    InPlaneSpec spec;
+    spec.constant_normal = true;
+    spec.longitudinal = computed(a);
+    const InPlaneReport want = evaluate_inplane(constant, Point(computed(beta), InputValue()), spec, {NumberType::mpfr, 30});
+    EXPECT_TRUE(close(out.at("beta"), beta, 20)) << out.at("beta").text();
+    EXPECT_TRUE(close(out.at("longitudinal"), a, 20)) << out.at("longitudinal").text();
+    EXPECT_TRUE(close(out.at("k_x_N_per_m"), groups.k_x, 20));
+    EXPECT_TRUE(close(out.at("mu_over_mu0"), mpfr(want.mu), 19)) << out.at("mu_over_mu0").text() << " against " << want.mu;
+    EXPECT_TRUE(close(out.at("F_x_mean_N"), mpfr(mpfr(want.mu) * unit), 19));
+    EXPECT_TRUE(close(out.at("F_N_mean_N"), mpfr(10), 20));
+    EXPECT_TRUE(close(out.at("stick_fraction"), want.stick_fraction.value, want.stick_fraction.digits - 1));
+    EXPECT_EQ(out.at("flight_fraction").number.value, 0);
+    // Refused: what a constant load does not have, a rig, a bad amplitude or phase.
+    for (const auto& [member, text] : std::vector<std::pair<std::string, std::string>>{
+             {"A", "1e-6"}, {"u_mean", "1e-7"}, {"mass", "0.01"}, {"u_x", "-1e-7"}, {"u_y", "-2e-7"}, {"shape", "sphere"}}) {
+      PhysicalRequest bad = r;
+      set_inputs(bad, {{member, text}});
+      EXPECT_THROW(physical_point(constant, bad, precision), InputError) << member << " " << text;
+    }
+    PhysicalRequest fourier = r;
+    fourier.in_plane_wave.text = "fourier:0,1";
+    EXPECT_THROW(physical_point(constant, fourier, precision), InputError);
+  }
+  {  // no in-plane amplitude: the in-plane controls alone are refused
+    PhysicalRequest r;
+    auto values = solids;
+    values.insert({{"v0", "2e-3"}, {"f", "20000"}, {"A", "1e-6"}, {"u_mean", "2e-7"}, {"phase", "0.25"}});
+    set_inputs(r, values);
+    EXPECT_THROW(physical_point(parse_wave("sine"), r, precision), InputError);
+  }
 }
 
 }  // namespace

@@ -7,11 +7,14 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
 #include "evaluate_impl.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/api/rig.hpp"
 #include "vibrofric/api/suggest.hpp"
 #include "vibrofric/core/curved/curved.hpp"
 #include "vibrofric/core/curved/curved_trace.hpp"
@@ -26,7 +29,8 @@ std::vector<PhysicalRequest::Member> PhysicalRequest::inputs() {
           n("A", A),           n("u_mean", u_mean), n("F_N", F_N),   n("mu0", mu0),
           Member{"shape", nullptr, &shape}, n("radius", radius), n("R", R), n("half_angle", half_angle),
           n("flat_radius", flat_radius), Member{"unit", nullptr, &unit}, n("mass", mass), n("k_system", k_system),
-          n("damping", damping)};
+          n("damping", damping), n("u_x", u_x), n("u_y", u_y), n("phase", phase),
+          Member{"in_plane_wave", nullptr, &in_plane_wave}};
 }
 
 namespace {
@@ -45,6 +49,7 @@ std::string wave_fingerprint(const WaveSpec& w) {
 namespace {
 PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
                             std::vector<std::string>* warnings);
+PhysicalOutputs physical_constant(const PhysicalRequest& r, const Precision& prec, const BatchOptions& base);
 
 // A length unit of a value column, in metres.
 const std::map<std::string, const char*>& length_units() {
@@ -56,6 +61,7 @@ const std::map<std::string, const char*>& length_units() {
 
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
                                const BatchOptions& base, std::vector<std::string>* warnings) {
+  if (r.constant_normal) return physical_constant(r, prec, base);
   if (!r.unit.given()) return physical_at(wave, r, prec, base, warnings);
   // The amplitude from the record (model.md: A is zero-to-peak, the wave normalised to
   // max − min = 2): half the samples' peak-to-peak, in the unit of the value column.
@@ -108,6 +114,133 @@ Evaluated rig_evaluated(const WaveSpec& wave, const Point& point, const RigSpec&
   const mpfr v = detail::rig_value(wave, point, rig, precision, solver, &report);
   report.mu = detail::rig_text(v, precision);
   return {report.mu, v};
+}
+
+// The in-plane drive of physical inputs (model.md, "In-plane and combined oscillation"): each
+// amplitude times `scale` (k_x over the force unit, 1/m), the phase and wave as given; none where
+// no in-plane amplitude is given and the normal force oscillates.
+std::optional<InPlaneSpec> physical_drive(const PhysicalRequest& r, const mpfr& scale, int digits) {
+  if (!r.u_x.given() && !r.u_y.given() && !r.constant_normal) {
+    for (const NamedInput* in : {&r.phase})
+      if (in->given())
+        throw InputError(in->name + " without " + r.u_x.name + " or " + r.u_y.name + ": give the in-plane amplitude");
+    if (r.in_plane_wave.given())
+      throw InputError(r.in_plane_wave.name + " without " + r.u_x.name + " or " + r.u_y.name +
+                       ": give the in-plane amplitude");
+    return std::nullopt;
+  }
+  if (r.mass.given() || r.k_system.given() || r.damping.given())
+    throw InputError(std::string(r.mass.given() ? r.mass.name : r.k_system.given() ? r.k_system.name : r.damping.name) +
+                     " with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
+  InPlaneSpec spec;
+  spec.constant_normal = r.constant_normal;
+  const auto amplitude = [&](const NamedInput& in) {
+    if (!in.given()) return InputValue(*Decimal::read("0"));
+    const mpfr u = in.value.to<mpfr>();
+    using std::isfinite;
+    if (!isfinite(u) || u < 0) throw InputError(in.name + " = " + in.text() + ": expected a length >= 0 in metres");
+    const mpfr a = u * scale;
+    return InputValue::computed(a, format_significant(a, digits + 15));
+  };
+  spec.longitudinal = amplitude(r.u_x);
+  spec.transverse = amplitude(r.u_y);
+  if (r.phase.given()) {
+    using std::isfinite;
+    if (!isfinite(r.phase.value.to<mpfr>()))
+      throw InputError(r.phase.name + " = " + r.phase.text() + ": expected a finite number of periods");
+    spec.phase = r.phase.value;
+  }
+  if (r.in_plane_wave.given()) {
+    spec.wave = parse_wave(*r.in_plane_wave.text);
+    if (spec.wave.kind == WaveKind::fourier || spec.wave.kind == WaveKind::samples)
+      throw InputError(r.in_plane_wave.name + " " + detail::visible(*r.in_plane_wave.text) +
+                       ": expected a catalogue wave (sine, triangle, sawtooth-right, sawtooth-left, square, power:p)");
+  }
+  check_inplane(spec);
+  return spec;
+}
+
+// The in-plane value and report (inplane.hpp), as rig_evaluated gives the rig's.
+Evaluated inplane_evaluated(const WaveSpec& wave, const Point& point, const InPlaneSpec& spec, const Precision& precision,
+                            const Options& solver, const ProfileSpec& profile, InPlaneReport& report) {
+  const mpfr v = detail::inplane_value(wave, point, spec, precision, solver, profile, &report);
+  return {detail::rig_text(v, precision), v};
+}
+
+// The in-plane outputs after mu's: the mean lateral force in newtons and the fractions (the flat
+// punch's; a curved row has none), each to the digits both precisions agree on.
+void inplane_outputs(PhysicalOutputs& rec, const InPlaneReport& report, const mpfr& force_unit, int digits) {
+  const auto number = [&](const char* name, const mpfr& v, int known) { rec.push_back({name, {v, std::min(digits, known)}, {}}); };
+  number("F_y_mean_N", mpfr(report.mean_lateral.value * force_unit), report.mean_lateral.digits);
+  if (report.curved) return;
+  number("stick_fraction", report.stick_fraction.value, report.stick_fraction.digits);
+  number("slip_fraction", report.slip_fraction.value, report.slip_fraction.digits);
+  if (!report.planar) number("backward_slip_fraction", report.backward_fraction.value, report.backward_fraction.digits);
+  number("flight_fraction", report.flight_fraction.value, report.flight_fraction.digits);
+}
+
+// A constant normal load F_N on the flat punch with an in-plane oscillation (model.md: the force
+// unit mu0 F_N, lengths mu0 F_N/k_x).
+PhysicalOutputs physical_constant(const PhysicalRequest& r, const Precision& prec, const BatchOptions& base) {
+  const int digits = output_digits(prec);
+  PrecisionScope scope(static_cast<unsigned>(digits + 20));
+  const auto get = [&](const NamedInput& in) {
+    if (!in.given()) throw InputError("missing " + in.name + " for 'physical' with a constant normal force");
+    return in.value.to<mpfr>();
+  };
+  const auto positive = [&](const NamedInput& in) {
+    const mpfr v = get(in);
+    if (!(v > 0)) throw InputError(in.name + " = " + in.text() + ": expected a value > 0");
+    return v;
+  };
+  const auto poisson = [&](const NamedInput& in) {
+    const mpfr v = get(in);
+    if (!(v > -1 && v <= mpfr("0.5"))) throw InputError(in.name + " = " + in.text() + ": expected -1 < nu <= 0.5");
+    return v;
+  };
+  for (const NamedInput* in : {&r.A, &r.u_mean})
+    if (in->given())
+      throw InputError(in->name + " with a constant normal force: the load is " + r.F_N.name + " (the normal force does not oscillate)");
+  if (r.unit.given()) throw InputError(r.unit.name + " with a constant normal force: there is no normal amplitude to read");
+  if (r.shape.given() && *r.shape.text != "flat")
+    throw InputError(r.shape.name + " " + detail::visible(*r.shape.text) +
+                     " with a constant normal force: a curved contact is solved with the normal oscillation (the flat punch only)");
+  for (const NamedInput* in : {&r.R, &r.half_angle, &r.flat_radius})
+    if (in->given()) throw InputError(in->name + " does not apply to the flat punch");
+  PhysicalInput<mpfr> in{positive(r.E1), poisson(r.nu1), positive(r.E2), poisson(r.nu2), r.G1.value.to<mpfr>(),
+                         r.G2.value.to<mpfr>(), positive(r.radius), positive(r.v0), positive(r.f), mpfr(1), mpfr(0),
+                         positive(r.mu0)};
+  for (const NamedInput* G : {&r.G1, &r.G2})
+    if (G->given() && !(G->value.to<mpfr>() > 0)) throw InputError(G->name + " = " + G->text() + ": expected a value > 0");
+  const mpfr F_N = positive(r.F_N);
+  const auto g = physical_groups(in);  // E*, G*, k_x (A = 1 only fills its β, not used)
+  const mpfr unit = in.mu0 * F_N;      // the force unit
+  const std::optional<InPlaneSpec> spec = physical_drive(r, mpfr(g.k_x / unit), digits);
+  const mpfr beta = g.k_x * in.v0 / (unit * in.f);
+  const Point point{InputValue::computed(beta, format_significant(beta, digits + 15)), InputValue()};
+  Precision fine = prec;
+  if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
+  WaveSpec constant;
+  constant.name = "constant";
+  InPlaneReport report;
+  const Evaluated ratio = inplane_evaluated(constant, point, *spec, fine, base.solver, ProfileSpec{}, report);
+  PhysicalOutputs rec;
+  const auto line = [&](const char* name, const mpfr& v) { rec.push_back({name, {v, digits}, {}}); };
+  rec.push_back({"shape", {}, "flat"});
+  line("E_star_Pa", g.E_star);
+  line("G_star_Pa", g.G_star);
+  line("k_x_N_per_m", g.k_x);
+  line("beta", beta);
+  line("longitudinal", spec->longitudinal.to<mpfr>());
+  line("transverse", spec->transverse.to<mpfr>());
+  line("phase", spec->phase.to<mpfr>());
+  rec.push_back({"mu_over_mu0", fine.type == NumberType::mpfr ? Significant{ratio.value, digits}
+                                                               : detail::type_significant(ratio.value, prec), {}});
+  line("mu", mpfr(ratio.value * in.mu0));
+  line("F_N_mean_N", F_N);
+  line("F_x_mean_N", mpfr(ratio.value * unit));
+  inplane_outputs(rec, report, unit, digits);
+  return rec;
 }
 
 PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
@@ -195,6 +328,10 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     spec.zeta = computed(mpfr(c / (2 * sqrt(mpfr(m * ks)))));
     options.rig = spec;
   }
+  // In-plane oscillation: a_l = k_x u_x/(mu0 k_z A) = G* u_x/(mu0 E* A), for the punch and the row.
+  const std::optional<InPlaneSpec> drive = physical_drive(r, mpfr(g.G_star / (in.mu0 * g.E_star * A)), digits);
+  const bool inplane = drive && !detail::papers_model(*drive);
+  if (drive) options.inplane = *drive;
   mpfr length = 1;
   std::optional<mpfr> lambda;
   if (kind == "sphere") {
@@ -297,8 +434,10 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   Precision fine = prec;
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
   RigReport report;
+  InPlaneReport inplane_report;
   const Evaluated ratio = options.rig ? rig_evaluated(wave, point, *options.rig, fine, options.solver, report)
-                                      : evaluate_one(wave, Quantity::mu, point, fine, options);
+                          : inplane ? inplane_evaluated(wave, point, *drive, fine, options.solver, options.profile, inplane_report)
+                                    : evaluate_one(wave, Quantity::mu, point, fine, options);
   const mpfr mu = ratio.value * in.mu0;
   mpfr edge;
   const mpfr force = load(g.gamma, g.beta, &edge);
@@ -317,7 +456,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     beta_c = c.beta_c();
     for (const auto& seg : c.segments())
       if (seg.contact) contact_fraction += seg.v - seg.u;  // the body touches while the central spring does
-    if (!options.rig) {
+    if (!options.rig && !inplane) {
       // The row's stick share (curved_trace.hpp), to 5 digits beyond those printed.
       mpfr err;
       stick_fraction = curved_stick_integral(*w, *p, g.beta, g.gamma, mpfr(pow(mpfr(10), -digits - 5)), err, options.solver) /
@@ -378,12 +517,19 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   line("beta", g.beta);
   line("gamma", g.gamma);
   if (by_load) line("u_mean_m", mpfr(g.gamma * A));
+  if (drive) {
+    line("longitudinal", drive->longitudinal.to<mpfr>());
+    line("transverse", drive->transverse.to<mpfr>());
+    line("phase", drive->phase.to<mpfr>());
+  }
   // evaluate's text: the type's value (the rig's is computed in mpfr), or mpfr's to `digits`
   rec.push_back({"mu_over_mu0", fine.type == NumberType::mpfr ? Significant{ratio.value, digits}
                                                                : detail::type_significant(ratio.value, prec), {}});
   line("mu", mu);
   line("F_N_mean_N", force);
   line("F_x_mean_N", mpfr(mu * force));
+  // The in-plane model: the lateral force and its own fractions (its β_c is not the paper's).
+  if (inplane) inplane_outputs(rec, inplane_report, mpfr(in.mu0 * force), digits);
   line("F_N_peak_N", peak_force);
   line("p_mean_peak_Pa", peak_mean_pressure);
   if (kind == "sphere")
@@ -391,10 +537,12 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   else
     field("p_max_peak_Pa", "inf");
   using std::isfinite;
-  if (isfinite(beta_c))
-    line("beta_c", beta_c);
-  else
-    field("beta_c", "inf");  // an upward jump of n: stick at every beta
+  if (!inplane) {
+    if (isfinite(beta_c))
+      line("beta_c", beta_c);
+    else
+      field("beta_c", "inf");  // an upward jump of n: stick at every beta
+  }
   line("contact_fraction", contact_fraction);
   if (options.rig) {
     // the rig's periodic state: its own fractions, and the frequency ratios it was computed with
@@ -416,7 +564,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     char floquet[32];
     std::snprintf(floquet, sizeof floquet, "%.6g", report.floquet);
     field("floquet_multiplier", floquet);
-  } else {
+  } else if (!inplane) {
     line("stick_fraction", stick_fraction);
   }
   return rec;

@@ -59,6 +59,14 @@ struct PhysicalRequest {
   // an optional damper (N s/m); then κ = k_s/k_x, Ω = √(k_x/m)/(2πf), ζ = c/(2√(m k_s)) are printed
   // and μ is the rig's.
   NamedInput mass{{}, "mass"}, k_system{{}, "k_system"}, damping{{}, "damping"};
+  // In-plane oscillation (model.md): zero-to-peak amplitudes along and across the sliding direction
+  // (m, >= 0), the lag behind the normal oscillation (periods) and the in-plane wave (catalogue);
+  // then a_l = k_x u_x/(mu0 k_z A) (the MDR row alike: G* u_x/(mu0 E* A)) and mu is the in-plane model's.
+  NamedInput u_x{{}, "u_x"}, u_y{{}, "u_y"}, phase{{}, "phase"};
+  InputText in_plane_wave{{}, "in_plane_wave"};
+  // No normal oscillation (the tool's --wave constant): the normal load F_N is constant, the force
+  // unit mu0 F_N, beta = k_x v0/(mu0 F_N f), a = k_x u/(mu0 F_N); the flat punch only.
+  bool constant_normal = false;
 
   // Every input by its member's name, in this order: a number or a text (shape, unit).
   struct Member {
