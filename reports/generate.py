@@ -325,6 +325,7 @@ unset multiplot
 
 INPLANE_AMPLITUDES = ["1", "10", "100"]
 RATCHET_AMPLITUDES = ["0.5", "1", "2"]
+TRANSVERSE_AMPLITUDES = ["1", "3", "10"]
 
 
 def fig_inplane(r):
@@ -373,7 +374,40 @@ set key bottom right
 set xrange [0:1]
 plot %s
 """ % plots)
-    return fig_xi, fig_ratchet
+    # The transverse drive (planar.hpp): 31 points a curve (about a second each in double).
+    blocks = []
+    for a in TRANSVERSE_AMPLITUDES:
+        hi = "%.17g" % (2 * math.pi * float(a) * 1.5)
+        lo = "%.17g" % (2 * math.pi * float(a) * 0.02)
+        text = run([r.tool, "sweep", "--wave", "constant", "--beta", "%s:%s:31" % (lo, hi), "--transverse", a,
+                    "--type", "double"])
+        rows = csv_rows(text)
+        ib, im = rows[0].index("beta"), rows[0].index("mu_over_mu0")
+        blocks.append(("a = " + a, [(float(x[ib]) / (2 * math.pi * float(a)), x[im]) for x in rows[1:]]))
+    def ellipk(k):
+        # K(k) = pi / (2 AGM(1, sqrt(1 - k^2))): the arithmetic-geometric mean converges quadratically
+        a, b = 1.0, math.sqrt(1 - k * k)
+        while abs(a - b) > 1e-16 * a:
+            a, b = (a + b) / 2, math.sqrt(a * b)
+        return math.pi / (2 * a)
+    rigid = []
+    for k in range(1, 151):
+        xi = k / 100
+        rigid.append((xi, 2 / math.pi * xi / math.sqrt(1 + xi * xi) * ellipk(1 / math.sqrt(1 + xi * xi))))
+    blocks.append(("rigid", rigid))
+    r.write_data("inplane_xi_transverse.dat", blocks, "xi = beta/(2 pi a), mu/mu0; constant normal force, transverse sine drive")
+    plots = ", ".join("'inplane_xi_transverse.dat' index %d using 1:2 with linespoints pt 7 ps 0.5 %s title 'a = %s'" %
+                      (i, styles[i], a) for i, a in enumerate(TRANSVERSE_AMPLITUDES))
+    fig_transverse = r.gnuplot("inplane_xi_transverse", """
+set title 'Transverse oscillation at a constant normal force: μ̄/μ0 against ξ = v0/(2π f u_y)'
+set xlabel 'ξ = β/(2πa)'
+set ylabel 'μ̄/μ0'
+set key bottom right
+set xrange [0:1.5]
+set yrange [0:1.05]
+plot %s, 'inplane_xi_transverse.dat' index %d using 1:2 with lines lw 2 dt 2 lc rgb 'black' title 'rigid: (2/π) ξ/√(1+ξ²) K(1/√(1+ξ²))'
+""" % (plots, len(TRANSVERSE_AMPLITUDES)))
+    return fig_xi, fig_ratchet, fig_transverse
 
 
 def inplane_section(w, figs, claims_table, inplane):
@@ -386,12 +420,20 @@ def inplane_section(w, figs, claims_table, inplane):
       "areas, the periodic state as the one-period map's fixed point checked from a second start, the value printed "
       "where two mpfr precisions agree. Checked by `tests/unit/test_inplane.cpp` (the catching-up scheme within its "
       "step bound, closed forms, symmetries, the paper's model at A = 0) and by an independent mpmath implementation "
-      "(`tests/reference/inplane_mpmath.py`, 43 cases at 30 digits). The transverse and combined two-dimensional "
-      "drive is not implemented yet.")
+      "(`tests/reference/inplane_mpmath.py`, 43 cases at 30 digits). `--transverse A` adds the drive across the "
+      "sliding direction (`core/inplane/planar.hpp`): Moreau's sweeping process in the disc |s| ≤ n, slip's angle "
+      "equation made linear by tan(θ/2) and integrated by Gauss–Legendre collocation with step doubling, checked "
+      "against an independent catching-up reference (`tests/reference/planar_catchup.py`). `--profile P` takes "
+      "either drive to a curved contact, the MDR row of in-plane springs (`core/inplane/inplane_curved.hpp`), "
+      "checked against a direct simulation of the spring row (`tests/reference/row_catchup.py`, 1e-10).")
     w("")
     for key, cap in (("inplane_xi", "Longitudinal oscillation at a constant normal force: μ̄/μ0 against "
                       "ξ = β/(2πa) = v0/(2πf u_x) at a = 1, 10, 100, and the rigid limit (2/π) arcsin ξ "
                       "(`vibrofric sweep --wave constant --longitudinal A --type double`)."),
+                     ("inplane_xi_transverse", "Transverse oscillation at a constant normal force: μ̄/μ0 "
+                      "against ξ = β/(2πa) at a = 1, 3, 10, and the rigid limit (2/π) ξ/√(1+ξ²) K(1/√(1+ξ²)): no "
+                      "critical velocity, and the finite stiffness's excess falls as 1/a² "
+                      "(`vibrofric sweep --wave constant --transverse A --type double`)."),
                      ("inplane_ratchet", "The ratchet: ∫s/∫n at β = 0 against the phase P for a sine normal "
                       "force (γ = 0.5) and a sine longitudinal drive of amplitude a (`vibrofric mu --longitudinal A "
                       "--phase P --type double`); below 0 the oscillation pushes the body.")):
@@ -626,7 +668,7 @@ def main():
     figs["ball"], figs["wearflat"] = fig4_ball(r), fig_wearflat(r)
     figs["ulp"], ulp_summary = fig_ulp(r)
     figs["rig"], rig_dist = fig_rig_map(r)
-    figs["inplane_xi"], figs["inplane_ratchet"] = fig_inplane(r)
+    figs["inplane_xi"], figs["inplane_ratchet"], figs["inplane_xi_transverse"] = fig_inplane(r)
     cross = crosscheck(r)
     cert = certified(r)
 

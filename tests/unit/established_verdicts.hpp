@@ -71,6 +71,9 @@ const std::map<std::string, Expected>& established() {
       {"inplane-rigid", {Verdict::holds_approximately, "limit a -> infinity, O(1/a); model.md's 0.334760 at a = 100"}},
       {"inplane-ratchet", {Verdict::holds_approximately, "model.md: -0.5364; the mpmath reference -0.536437053336"}},
       {"inplane-combined", {Verdict::holds, "measured: at P near 1/2 (gamma = 1.5) and 3/8 (gamma = 0.5)"}},
+      // The transverse rigid limit: model.md's catching-up 0.642638448 at a = 1000 (the limit 0.642637682)
+      // and planar_catchup.py's extrapolated values; O(1/a^2) measured there and in test_planar.cpp.
+      {"inplane-transverse", {Verdict::holds_approximately, "limit a -> infinity, O(1/a^2), no critical velocity"}},
   };
   return e;
 }

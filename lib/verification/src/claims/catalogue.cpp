@@ -138,6 +138,10 @@ const std::vector<ClaimEntry>& claims_catalogue() {
       {"inplane-combined", "Review: combined oscillation", "review (Front. Mech. Eng. 2020)",
        "normal and longitudinal oscillation together reduce friction more than either alone, at the right phase",
        kHighPrecision, "", inplane_combined},
+      {"inplane-transverse", "In-plane, transverse rigid limit", "model.md (extension)",
+       "transverse oscillation at a constant normal force, rigid contact (a -> infinity at fixed xi): "
+       "mu = (2/pi) xi/sqrt(1+xi^2) K(1/sqrt(1+xi^2)), no critical velocity",
+       kHighPrecision, "", inplane_transverse},
   };
   return list;
 }

@@ -300,6 +300,7 @@ ClaimCheck part2_resonance(int digits);
 ClaimCheck inplane_rigid(int digits);
 ClaimCheck inplane_ratchet(int digits);
 ClaimCheck inplane_combined(int digits);
+ClaimCheck inplane_transverse(int digits);
 
 // The paper's remaining statements (statements.cpp).
 ClaimCheck eqs7_13(int digits);

@@ -8,10 +8,15 @@
 //   apart push the body at β = 0 (μ̄ ≈ −0.5364); the free velocity where the mean force vanishes.
 // - Combined oscillation (the review, M. Popov 2020): normal and longitudinal oscillation together
 //   reduce friction more than either alone, at the right phase.
+// - Transverse rigid limit (model.md): n ≡ 1, sine, μ̄ → (2/π) ξ/√(1+ξ²) K(1/√(1+ξ²)), no critical
+//   velocity; decided with the planar solver (core/inplane/planar.hpp).
+#include <boost/math/special_functions/ellint_1.hpp>
+
 #include <cstdio>
 
 #include "check.hpp"
 #include "vibrofric/core/inplane/inplane.hpp"
+#include "vibrofric/core/inplane/planar.hpp"
 
 namespace vibrofric::claims {
 
@@ -48,7 +53,81 @@ Real inplane_mu(const char* normal, const Real& gamma, const char* in_plane, con
   return values[1];
 }
 
+// μ̄ of the transverse drive at n ≡ 1 at 20 and 32 working digits (the planar solver's cost grows
+// with both the digits and a; the verdict rests on distances of 1e-6 and more); SolverError where
+// the two differ beyond 1e-15.
+Real planar_mu(const Real& beta, const Real& a) {
+  Real values[2];
+  for (int k = 0; k < 2; ++k) {
+    PrecisionScope scope(static_cast<unsigned>(20 + 12 * k));
+    const auto p = make_waveform<Real>(parse_wave("sine"));
+    values[k] = solve_planar<Real>(nullptr, Real(0), *p, Real(beta), PlanarDrive<Real>{Real(0), Real(a), Real(0)}).mu;
+  }
+  if (abs(values[0] - values[1]) > Real("1e-15"))
+    throw SolverError("claims: transverse, beta = " + str(beta, 20) + ", a = " + str(a, 20) + ": " + str(values[0], 17) +
+                      " and " + str(values[1], 17) + " at two precisions");
+  return values[1];
+}
+
 }  // namespace
+
+ClaimCheck inplane_transverse(int digits) {
+  Check c(entry("inplane-transverse"), digits);
+  c.unit("absolute |mu - (2/pi) xi/sqrt(1+xi^2) K(1/sqrt(1+xi^2))|, in mu0");
+  c.out().how = "n = 1 (constant normal force), sine transverse drive of amplitude a, beta = 2 pi a xi, xi = 0.25, 0.5, "
+                "0.9 at a = 10, 30, 100; xi = 1 and 1.5 at a = 10; the planar solver at 20 and 32 digits";
+  c.out().criterion = "limit claim: holds approximately if the distance D decreases along a with measured order in 1/a "
+                      "above 1.8 and mu < mu0 at xi >= 1 (no critical velocity); fails otherwise. Deviation: the "
+                      "largest D at a = 100";
+  c.numerical("a limit (a -> infinity); the planar solver has no enclosure");
+  const Real pi = boost::math::constants::pi<Real>();
+  const auto rigid = [&](const Real& xi) {
+    const Real r = sqrt(Real(1 + xi * xi));
+    return Real(2 / pi * xi / r * boost::math::ellint_1(Real(1 / r)));
+  };
+  double order_lo = 1e9, order_hi = -1e9, last = 0;
+  bool decreasing = true, above = true;
+  for (const char* xi_text : {"0.25", "0.5", "0.9"}) {
+    const Real xi = num(xi_text), limit = rigid(xi);
+    std::vector<double> d;
+    std::string row;
+    for (const char* a_text : {"10", "30", "100"}) {
+      const Real a = num(a_text);
+      const Real mu = planar_mu(2 * pi * a * xi, a);
+      above = above && mu > limit;
+      d.push_back(static_cast<double>(abs(mu - limit)));
+      row += (row.empty() ? "" : ", ") + sci(d.back());
+      ++c.out().cases;
+    }
+    for (std::size_t k = 1; k < d.size(); ++k) decreasing = decreasing && d[k] < d[k - 1];
+    const double order = std::log(d[d.size() - 2] / d.back()) / std::log(100.0 / 30.0);
+    order_lo = std::min(order_lo, order);
+    order_hi = std::max(order_hi, order);
+    if (d.back() >= last) {
+      last = d.back();
+      c.out().worst = std::string("xi = ") + xi_text + ", a = 100";
+    }
+    c.measure(std::string("xi = ") + xi_text + ": D(a), a = 10, 30, 100; a^2 D at 100; order in 1/a",
+              row + "; " + fix(d.back() * 1e4, 4) + "; " + fix(order),
+              {{"xi", xi_text}, {"D(100)", sci(d.back())}, {"order", fix(order)}});
+  }
+  bool below = true;
+  for (const char* xi_text : {"1", "1.5"}) {
+    const Real a(10), xi = num(xi_text);
+    const Real mu = planar_mu(2 * pi * a * xi, a);
+    below = below && mu < 1 && rigid(xi) < 1;
+    ++c.out().cases;
+    c.measure(std::string("xi = ") + xi_text + ", a = 10: mu; rigid", str(mu, 12) + "; " + str(rigid(xi), 12));
+  }
+  c.set_deviation(Real(last));
+  c.measure_range("order of D in 1/a (a = 30 -> 100)", fix(order_lo), fix(order_hi));
+  c.out().scope = "mu - rigid = O(1/a^2) (measured order " + fix(order_lo) + "-" + fix(order_hi) + "), " +
+                  (above ? "always above the rigid value" : "of either sign") +
+                  (below ? "; below mu0 at xi = 1 and 1.5: no critical velocity" : "; mu0 reached at xi >= 1");
+  c.out().corrected = "";
+  return c.finish(decreasing && order_lo > 1.8 && below ? Verdict::holds_approximately : Verdict::fails,
+                  c.out().criterion);
+}
 
 ClaimCheck inplane_rigid(int digits) {
   Check c(entry("inplane-rigid"), digits);

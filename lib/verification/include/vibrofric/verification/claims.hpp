@@ -83,7 +83,7 @@ const std::vector<ClaimEntry>& claims_catalogue();
 // One claim by key ("eq6", …, "fig4-scaling", "eqs7-13", "eq6-jumping", "entanglement",
 // "continuity", "uniqueness", "convexity", "eq23-range", "fig2", "beta-c", "scope-wearflat",
 // "scope-numerics", "curved-eq6-sec3", "curved-power-flat", "rig-limits", "part2-limits",
-// "part2-resonance", "inplane-rigid", "inplane-ratchet", "inplane-combined"); throws InputError for
+// "part2-resonance", "inplane-rigid", "inplane-ratchet", "inplane-combined", "inplane-transverse"); throws InputError for
 // an unknown key.
 ClaimCheck check_claim(const std::string& key, int digits);
 
