@@ -68,6 +68,8 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
   if (r.planar) fields.erase(fields.begin() + 3);
   // A curved contact's springs each have their own fractions: the row reports none.
   if (r.curved) fields.erase(fields.begin() + 1, fields.end() - 1);
+  // Combined normal and longitudinal oscillation: the ratchet's free velocity, or none.
+  if (r.free_velocity_searched) fields.emplace_back("free_velocity", r.free_velocity ? r.free_velocity->text() : "none");
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';

@@ -2396,6 +2396,29 @@ def inplane_tests():
             raise Fail("mu --profile sphere --longitudinal 0.5: %r" % out)
     case("in-plane: curved contacts by the MDR row", curved_rows)
 
+    def free_velocity():
+        # The ratchet's free velocity (combined normal and longitudinal oscillation): mu changes sign
+        # across the printed beta (mu at beta -+ 1e-9 by the tool, at 25 digits); none where the drive
+        # does not propel the body at beta = 0; not searched for a transverse or a constant-force drive, nor
+        # where the contact never lifts (the state at beta = 0 may stick through the period there).
+        ratchet = ["mu", "--wave", "sine", "--gamma", "0.5", "--longitudinal", "1", "--phase", "0.25"]
+        fields = dict(line.split(": ") for line in ok_run(ratchet + ["--beta", "0", "--digits", "20"]).splitlines()[1:])
+        beta = F(fields["free_velocity"])
+        below = F(ok_run(ratchet + ["--beta", repr(float(beta - F("1e-9"))), "--digits", "25"]).splitlines()[0])
+        above = F(ok_run(ratchet + ["--beta", repr(float(beta + F("1e-9"))), "--digits", "25"]).splitlines()[0])
+        if not (below < 0 < above) or len(fields["free_velocity"].replace(".", "").lstrip("0")) < 15:
+            raise Fail("free velocity %s: mu %s below, %s above" % (fields["free_velocity"], below, above))
+        none = dict(line.split(": ") for line in ok_run(
+            ["mu", "--wave", "sine", "--gamma", "0.5", "--longitudinal", "1", "--beta", "1", "--digits", "12"]).splitlines()[1:])
+        for args in (["mu", "--wave", "sine", "--gamma", "0.5", "--transverse", "0.5", "--beta", "1", "--digits", "8"],
+                     ["mu", "--wave", "sine", "--gamma", "1.5", "--longitudinal", "1", "--beta", "1", "--digits", "8"],
+                     ["mu", "--wave", "constant", "--longitudinal", "1", "--beta", "1", "--digits", "8"]):
+            if "free_velocity" in ok_run(args):
+                raise Fail("%s prints a free velocity" % " ".join(args))
+        if none["free_velocity"] != "none":
+            raise Fail("mu --phase 0: free velocity %r, expected none" % none["free_velocity"])
+    case("in-plane: the ratchet's free velocity", free_velocity)
+
     steel = ["physical", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33", "--radius", "1e-3",
              "--f", "20000", "--mu0", "0.3"]
 

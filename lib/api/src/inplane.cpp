@@ -2,6 +2,8 @@
 // mpfr at two working precisions, printed where they agree.
 #include "vibrofric/api/inplane.hpp"
 
+#include <boost/math/tools/roots.hpp>
+
 #include <algorithm>
 #include <optional>
 
@@ -108,6 +110,33 @@ Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
   }
 }
 
+// The free velocity at `digits` working digits: μ̄(0) < 0, then β doubled from 1 until μ̄ ≥ 0 (at
+// most 2^40), then TOMS 748 on the last doubling to all but 8 bits; none where μ̄(0) ≥ 0. A root of
+// even multiplicity, or a pair between two doublings, is not seen.
+std::optional<mpfr> free_velocity_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec, int digits,
+                                     const Options& opt) {
+  PrecisionScope scope(static_cast<unsigned>(digits));
+  const auto p_wave = make_waveform<mpfr>(spec.wave);
+  const auto w = make_waveform<mpfr>(normal);
+  const mpfr gamma = p.gamma.to<mpfr>();
+  const InPlaneDrive<mpfr> drive{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()};
+  const auto mu = [&](const mpfr& beta) { return solve_inplane<mpfr>(w.get(), gamma, *p_wave, beta, drive, opt).mu; };
+  if (!(mu(mpfr(0)) < 0)) return std::nullopt;
+  mpfr lo = 0, hi = 1, f_hi = mu(hi);
+  for (int k = 0; f_hi < 0; ++k) {
+    if (k == 40) throw SolverError("the mean force stays negative up to beta = 2^40: no free velocity found");
+    lo = hi;
+    hi *= 2;
+    f_hi = mu(hi);
+  }
+  if (f_hi == 0) return hi;
+  std::uintmax_t iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(
+      mu, lo, hi, mu(lo), f_hi, boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 8), iterations);
+  if (iterations >= 200) throw SolverError("the free velocity did not converge in 200 iterations");
+  return mpfr((bracket.first + bracket.second) / 2);
+}
+
 }  // namespace
 
 void check_inplane(const InPlaneSpec& spec) {
@@ -191,6 +220,31 @@ InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InP
   }
   InPlaneReport report;
   const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, profile, &report);
+  // Combined normal and longitudinal oscillation on the flat punch: the free velocity, at two
+  // precisions, to the digits they agree on.
+  // Only where the contact is lost once a period (γ + min w < 0): each period then starts from s = 0,
+  // and the state at β = 0 is unique (a contact that never lifts may stick through the period there).
+  const auto lifts = [&] {
+    PrecisionScope scope(static_cast<unsigned>(output_digits(precision) + 10));
+    return mpfr(p.gamma.to<mpfr>() + make_waveform<mpfr>(normal)->minimum()) < 0;
+  };
+  if (!spec.constant_normal && !planar(spec) && spec.longitudinal.to<mpfr>() != 0 && profile.kind == ProfileKind::flat &&
+      lifts()) {
+    report.free_velocity_searched = true;
+    const int digits = output_digits(precision);
+    try {
+      const auto a = free_velocity_at(normal, p, spec, digits + 10, opt);
+      const auto b = free_velocity_at(normal, p, spec, digits + 22, opt);
+      if (a.has_value() != b.has_value())
+        throw SolverError("the sign of the mean force at beta = 0 differs between two precisions");
+      if (a) {
+        PrecisionScope scope(static_cast<unsigned>(digits + 22));
+        report.free_velocity = detail::agreed(*a, *b, std::min(digits, 17));
+      }
+    } catch (const SolverError& e) {
+      throw SolverError(inplane_context(normal, p, spec) + "free velocity: " + e.what());
+    }
+  }
   // A zero amplitude is the paper's model: its value exactly as `mu` prints it.
   if (detail::papers_model(spec)) {
     BatchOptions batch;

@@ -5,6 +5,7 @@
 // printed digits are those both agree on. With a zero amplitude the value is the paper's model's,
 // computed by its solver (evaluate.hpp), so that it prints exactly what `mu` prints.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -41,6 +42,12 @@ struct InPlaneReport {
   Significant relative_error;  // estimate: the two precisions apart (2 digits), relative to |μ̄|, or
                                // to 1 where μ̄ is 0 (|μ̄| ≤ 1: a symmetric drive at β = 0 gives 0)
   int working_digits = 0;      // the higher of the two precisions
+  // Combined normal and longitudinal oscillation on the flat punch, the contact lost once a period
+  // (γ + min w < 0, where the state at β = 0 is unique): the ratchet's free velocity, the
+  // β where μ̄(β) first changes sign from μ̄(0) < 0 (free_velocity_searched and none where μ̄(0) ≥ 0:
+  // the oscillation does not propel the body).
+  bool free_velocity_searched = false;
+  std::optional<Significant> free_velocity;
 };
 
 // The drive checked: finite decimal amplitudes ≥ 0, a finite phase, a catalogue in-plane wave.
