@@ -2609,8 +2609,8 @@ def collect():
 collect()
 
 
-# VIBROFRIC_TOOL_SHARD="i/n" runs the cases whose index is i modulo n: ctest runs the two halves
-# side by side (tool.cli, tool.cli.second_half; under the sanitizers all 878 took 265 s alone at
+# VIBROFRIC_TOOL_SHARD="i/n" runs the cases whose index is i modulo n: ctest runs three parts
+# side by side (tool.cli, tool.cli.second_part, tool.cli.third_part; under the sanitizers all 878 took 265 s alone at
 # f2b1727, close to one test's 300 s timeout).
 _SHARD, _SHARDS = (int(x) for x in os.environ.get("VIBROFRIC_TOOL_SHARD", "0/1").split("/"))
 SELECTED = [c for k, c in enumerate(CASES) if k % _SHARDS == _SHARD]
