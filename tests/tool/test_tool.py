@@ -55,9 +55,9 @@ def case(name, fn):
     CASES.append((name, fn))
 
 
-def ok_run(args):
+def ok_run(args, timeout=120):
     """Run a command that must succeed; return its stdout."""
-    rc, out, err = run(args)
+    rc, out, err = run(args, timeout)
     if rc != 0:
         raise Fail("%s: exit %d, stderr %r" % (cmd(args), rc, err.strip()))
     if err:
@@ -671,7 +671,7 @@ def format_tests():
             if rc != 2 or len(flat) < 20:
                 raise Fail("verify --claim none: exit %d, %r: expected the list of claims" % (rc, err))
             for k in flat:
-                if not re.search(r"\s(holds approximately|holds|fails)\s", ok_run(["verify", "--digits", "20", "--claim", k])):
+                if not re.search(r"\s(holds approximately|holds|fails)\s", ok_run(["verify", "--digits", "20", "--claim", k], 400)):
                     raise Fail("vibrofric verify --claim %s printed no verdict" % k)
             return
         out = ok_run(["verify", "--digits", "20"])
