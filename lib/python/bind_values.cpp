@@ -120,11 +120,18 @@ Flat punch only (Psi does not exist for curved profiles).
                              ": rig dynamics needs kappa and omega (zeta is optional)");
           if (certify) throw InputError("certify: certified values exist for the quasi-static model only, not with kappa/omega");
           if (!escalate) throw InputError("escalate=False: rig dynamics is always computed in mpfr at two precisions");
-          e.rig.emplace();
-          e.rig->kappa = scalar_value(kappa, "kappa");
-          e.rig->omega = scalar_value(omega, "omega");
-          if (!zeta.is_none()) e.rig->zeta = scalar_value(zeta, "zeta");
-          check_rig(*e.rig);
+          const auto array = [](const py::object& x) {
+            return !x.is_none() && !py::isinstance<py::str>(x) && py::module_::import("numpy").attr("ndim")(x).cast<int>() > 0;
+          };
+          if (array(kappa) || array(omega) || array(zeta)) {
+            e.rig_arrays = std::array<py::object, 3>{kappa, omega, zeta};
+          } else {
+            e.rig.emplace();
+            e.rig->kappa = scalar_value(kappa, "kappa");
+            e.rig->omega = scalar_value(omega, "omega");
+            if (!zeta.is_none()) e.rig->zeta = scalar_value(zeta, "zeta");
+            check_rig(*e.rig);
+          }
         }
         e.nan_on_error = nan_on_error;
         e.certify = certify;
@@ -135,7 +142,7 @@ Flat punch only (Psi does not exist for curved profiles).
         if (e.inplane && e.inplane->constant_normal && e.profile.kind != ProfileKind::flat)
           throw InputError("wave = 'constant' with profile = " + e.profile_text +
                            ": a curved contact is solved with the normal oscillation (give wave and gamma)");
-        if (e.rig && e.profile.kind != ProfileKind::flat)
+        if ((e.rig || e.rig_arrays) && e.profile.kind != ProfileKind::flat)
           throw InputError("kappa/omega with profile = " + e.profile_text +
                            ": the springs of a curved contact share the body, so the MDR row does not decouple "
                            "(rig dynamics: the flat punch only)");

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <exception>
 #include <limits>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -251,6 +252,63 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
   return py::make_tuple(lo.attr("reshape")(shape), hi.attr("reshape")(shape));
 }
 
+// The result at the broadcast of beta, gamma, kappa, omega and zeta (rig dynamics with one of the
+// rig's parameters an array): the points grouped by their rig, one evaluate_stream per group.
+py::object rig_broadcast(const WaveSpec& wave, const Precision& precision, BatchOptions options, const py::object& beta,
+                         const py::object& gamma, const Evaluation& e) {
+  const py::module_ np = py::module_::import("numpy");
+  const auto& [kappa, omega, zeta] = *e.rig_arrays;
+  const py::tuple arrays = np.attr("broadcast_arrays")(beta, gamma, kappa, omega, zeta.is_none() ? py::object(py::int_(0)) : zeta);
+  const py::tuple shape = py::array(arrays[0]).attr("shape");
+  std::vector<std::size_t> dims;
+  std::size_t n = 1;
+  for (const auto& d : shape) {
+    dims.push_back(d.cast<std::size_t>());
+    n *= dims.back();
+  }
+  const char* names[] = {"beta", "gamma", "kappa", "omega", "zeta"};
+  std::vector<Column> columns;
+  for (int k = 0; k < 5; ++k) columns.emplace_back(np.attr("ravel")(arrays[k]).cast<py::array>(), names[k]);
+  std::map<std::array<std::string, 3>, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < n; ++i) groups[{columns[2].text(i), columns[3].text(i), columns[4].text(i)}].push_back(i);
+  std::vector<std::pair<RigSpec, const std::vector<std::size_t>*>> rigs;
+  for (const auto& [texts, members] : groups) {
+    RigSpec spec;
+    try {
+      spec.kappa = InputValue::read(texts[0], "kappa");
+      spec.omega = InputValue::read(texts[1], "omega");
+      spec.zeta = InputValue::read(texts[2], "zeta");
+      check_rig(spec);
+    } catch (...) {
+      rethrow_at_index(dims, members.front(), std::current_exception());
+    }
+    rigs.emplace_back(std::move(spec), &members);
+  }
+  options.deliver_errors = true;
+  const Converter convert(result_form(precision, e.strings), precision);
+  Output out(convert, n, dims, e.nan_on_error);
+  {
+    py::gil_scoped_release release;
+    for (const auto& [spec, members] : rigs) {
+      options.rig = spec;
+      const auto& m = *members;
+      evaluate_stream(
+          wave, e.quantity, m.size(),
+          [&](std::size_t j) {
+            return Point{InputValue::read(columns[0].text(m[j]), "beta"), InputValue::read(columns[1].text(m[j]), "gamma")};
+          },
+          precision, options, [&](std::size_t j, const StreamValue& value) { out.put(m[j], value); });
+    }
+    out.flush();
+  }
+  const py::array& flat = out.array();
+  if (dims.empty()) {
+    if (convert.form() == Form::float64) return py::float_(static_cast<const double*>(flat.data())[0]);
+    return flat[py::int_(0)];
+  }
+  return flat.attr("reshape")(shape);
+}
+
 }  // namespace
 
 py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta, const py::object& gamma,
@@ -279,6 +337,7 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
   const bool with_gamma = e.quantity == Quantity::mu && !constant;
   if (constant && !gamma.is_none())
     throw InputError("gamma = " + py_repr(gamma) + " with wave 'constant': the normal force is constant (give gamma=None)");
+  if (e.rig_arrays) return rig_broadcast(wave, precision, options, beta, gamma, e);
   const py::array b = np.attr("asarray")(beta);
   const py::array g = np.attr("asarray")(with_gamma ? gamma : py::object(py::float_(0.0)));
   const py::tuple shape = np.attr("broadcast")(b, g).attr("shape");  // ValueError if they do not broadcast

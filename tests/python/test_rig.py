@@ -108,3 +108,22 @@ def test_trace_is_the_tools():
 def test_trace_needs_both_rig_keywords():
     with pytest.raises(ValueError, match="missing omega"):
         vibrofric.trace("sine", 0.5, 0.3, kappa=1)
+
+
+def test_rig_parameters_broadcast_like_beta_and_gamma():
+    # Each element is the scalar call's value (the tool's rig at that kappa, omega, zeta), with numpy's
+    # broadcasting over all five arguments; a bad element names its index.
+    omega = np.array([0.118, 1.0])
+    got = vibrofric.mu("sine", 0.5, 0.2, kappa=0.18, omega=omega)
+    assert got.shape == (2,)
+    assert list(got) == [vibrofric.mu("sine", 0.5, 0.2, kappa=0.18, omega=o) for o in omega]
+    beta = np.array([[0.5], [1.0]])
+    grid = vibrofric.mu("sine", beta, 0.2, kappa=[0.18, 0.5], omega=1.0, zeta=[0.1, 0.0], strings=True, digits=15)
+    assert grid.shape == (2, 2)
+    for i, b in enumerate((0.5, 1.0)):
+        for j, (k, z) in enumerate(((0.18, 0.1), (0.5, 0.0))):
+            assert grid[i, j] == vibrofric.mu("sine", b, 0.2, kappa=k, omega=1.0, zeta=z, strings=True, digits=15)
+    with pytest.raises(ValueError, match=r"at index \(1,\): omega = -1"):
+        vibrofric.mu("sine", 0.5, 0.2, kappa=0.18, omega=np.array([0.118, -1.0]))
+    with pytest.raises(ValueError, match="broadcast"):
+        vibrofric.mu("sine", [0.5, 1.0, 2.0], 0.2, kappa=[0.18, 0.5], omega=1.0)
