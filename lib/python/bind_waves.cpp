@@ -8,6 +8,7 @@
 
 #include "common.hpp"
 #include "vibrofric/api/fit.hpp"
+#include "vibrofric/api/limits.hpp"
 
 namespace vibrofric::python {
 
@@ -154,11 +155,17 @@ profile:FILE of lines 'r f'.
 
   m.def(
       "wave",
-      [](const py::object& text, const py::object& column, const py::object& periods) {
+      [](const py::object& text, const py::object& column, const py::object& periods, const py::object& skip_rows) {
         if (!py::isinstance<py::str>(text))
           throw py::type_error("wave = " + py_repr(text) + ": expected a name such as 'sine' or 'samples:FILE'");
         WaveReadOptions options;
         options.periods = record_periods(periods);
+        if (const auto k = optional_int(skip_rows, "skip_rows")) {
+          if (*k < 0 || static_cast<std::size_t>(*k) > max_table_lines)
+            throw InputError("skip_rows = " + std::to_string(*k) + ": expected an integer from 0 to " +
+                             std::to_string(max_table_lines));
+          options.skip_rows = static_cast<int>(*k);
+        }
         if (!column.is_none()) {
           if (py::isinstance<py::str>(column))
             options.column = column.cast<std::string>();
@@ -167,14 +174,16 @@ profile:FILE of lines 'r f'.
         }
         return PyWave{parse_wave(text.cast<std::string>(), options), nullptr, ""};
       },
-      "text"_a, py::kw_only(), "column"_a = py::none(), "periods"_a = py::none(),
-      R"doc(wave(text, *, column=None, periods=None) -> Wave
+      "text"_a, py::kw_only(), "column"_a = py::none(), "periods"_a = py::none(), "skip_rows"_a = py::none(),
+      R"doc(wave(text, *, column=None, periods=None, skip_rows=None) -> Wave
 
 A wave by name, as the tool's --wave: 'sine', 'triangle', 'sawtooth-right', 'sawtooth-left',
 'square', 'power:P', 'fourier:FILE' or 'samples:FILE'. column (the tool's --column): the value
 column of a samples file with a header, by its name or 1-based index (a column named 'time' or 't'
 still gives the time stamps); the name becomes 'samples:FILE#COLUMN'. periods (the tool's
---periods): the periods a samples record holds, as in samples(). The file is read once, here.
+--periods): the periods a samples record holds, as in samples(). skip_rows (the tool's
+--skip-rows, pandas' skiprows): the lines of a preamble before the header. A missing file raises
+FileNotFoundError. The file is read once, here.
 )doc");
 }
 

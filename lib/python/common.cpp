@@ -106,6 +106,8 @@ void bind_errors(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const MissingFileError& e) {
+      PyErr_SetString(PyExc_FileNotFoundError, e.what());
     } catch (const InputError& e) {  // DomainError too
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const SolverError& e) {  // PrecisionError too

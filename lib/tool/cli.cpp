@@ -48,16 +48,20 @@ const char* const kWaves =
     "  square (sqr), power:P (P >= 1), fourier:FILE, samples:FILE\n"
     "  fourier FILE: lines 'k a_k b_k' for w = sum a_k cos(2 pi k phi) + b_k sin(2 pi k phi)\n"
     "  samples FILE: one period of values y_j at phi = j/N (one column, or one line), linear\n"
-    "  between; or columns under a header, one named 'time', 't' or 'timestamp' (any case, a unit\n"
-    "  allowed: 'time [s]', 'time_s', 't/s') giving the time stamps (the last line repeats the\n"
-    "  first value one period later); --column picks the value column. Fields: ',' / ';' where a\n"
-    "  line has them, else tabs, else spaces; '#' starts a comment (README,\n"
+    "  between; or columns under a header, one named 'time', 't', 'timestamp', 'Zeit', 'temps',\n"
+    "  'tiempo' or 'tempo' (any case, a unit allowed: 'time [s]', 'time_s', 't/s') or with a unit\n"
+    "  of time ('Messzeit [s]') giving the time stamps (the last line repeats the first value one\n"
+    "  period later); --column picks the value column. Fields: ',' / ';' where a line has them\n"
+    "  (between ';' a decimal comma is a point), else tabs, else spaces; '#' starts a comment;\n"
+    "  UTF-8 or Windows-1252; --skip-rows N skips a preamble (README,\n"
     "  \"File formats\"). User waves are normalised to zero mean and max - min = 2\n"
     "  (--diagnostics shows how).\n";
 
 const char* const kRig =
-    "rig dynamics (model.md): --kappa K --omega W [--zeta Z] replace the paper's quasi-static spring by\n"
-    "  a body of mass m on a system spring k_s (damper c): K = k_s/k_x, W = sqrt(k_x/m)/(2 pi f),\n"
+    "tangential (in-plane) rig dynamics (model.md): --kappa K --omega W [--zeta Z] replace the\n"
+    "  paper's quasi-static spring by a body of mass m on a system spring k_s (damper c), moving along\n"
+    "  the sliding direction; the normal indentation follows the wave as prescribed (no normal\n"
+    "  dynamics): K = k_s/k_x, W = sqrt(k_x/m)/(2 pi f),\n"
     "  Z = c/(2 sqrt(m k_s)); flat punch; sine, Fourier and piecewise-linear waves. mu prints the\n"
     "  stick, slip and flight fractions (they add to 1; backward_slip_fraction is the part of the\n"
     "  slip that goes backward), the body's amplitude, the largest backward slip and the largest\n"
@@ -162,7 +166,7 @@ const std::vector<CommandSpec>& commands() {
         {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", "", nullptr},
         {"mu0", "MU", "local coefficient of friction, > 0 (required)", "", nullptr},
         {"shape", "S", "flat | sphere | cone | wearflat | profile:FILE", "flat", nullptr},
-        {"mass", "KG", "rig dynamics (flat): the body's mass, > 0 (with --k-system)", "", nullptr},
+        {"mass", "KG", "tangential (in-plane) rig dynamics (flat): the body's mass, > 0 (with --k-system)", "", nullptr},
         {"k-system", "N/M", "rig dynamics: the apparatus' stiffness between drive and body, > 0 (with --mass)", "", nullptr},
         {"damping", "NS/M", "rig dynamics: a damper parallel to the apparatus' spring, >= 0", "0", nullptr},
         {"u-x", "M", "in-plane oscillation along the sliding direction: zero-to-peak amplitude, >= 0", "none", nullptr},

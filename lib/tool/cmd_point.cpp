@@ -116,6 +116,9 @@ int run_point(const Flags& f, Quantity q) {
     std::cout << value << '\n';
     if (cert)
       std::cout << (cert->exact.empty() ? "enclosure: [" + cert->lower_text + ", " + cert->upper_text + "]" : "exact: " + cert->exact)
+                << (cert->cite.empty() ? std::string()
+                                       : "\ncite: " + cert->cite + " (the exact value to " + std::to_string(cert->cite_digits) +
+                                             " digits, correctly rounded: the whole enclosure rounds to it)")
                 << "\nproven: " << value << " is the exact value rounded " << rounding_name(precision)
                 << (cert->nearest.size() > 1 ? " (a tie: it lies midway between " + cert->nearest[0] + " and " + cert->nearest[1] + ")" : "")
                 << '\n';

@@ -127,6 +127,7 @@ WaveSpec read_wave(const Flags& f) {
   WaveReadOptions options = f.read;
   options.column_name = "--column";
   options.periods_name = "--periods";
+  options.skip_rows_name = "--skip-rows";
   WaveSpec wave = parse_wave(need(f, f.wave, "wave"), options);
   const unsigned k = wave.periods_averaged;
   if (wave.period_from_stamps)  // a period the file did not state: always said
@@ -168,7 +169,7 @@ Certificate certified(const Certifier& certifier, Quantity q, const Point& p, co
 
 // CSV and JSON fields of a certificate: the exact value, or an enclosure's ends.
 std::vector<std::pair<std::string, std::string>> certificate_fields(const Certificate& c, bool enclosure) {
-  if (enclosure) return {{"lower", c.lower_text}, {"upper", c.upper_text}, {"correctly_rounded", "proven"}};
+  if (enclosure) return {{"lower", c.lower_text}, {"upper", c.upper_text}, {"cite", c.cite}, {"correctly_rounded", "proven"}};
   return {{"exact", c.exact}, {"correctly_rounded", "proven"}};
 }
 

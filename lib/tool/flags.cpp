@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/suggest.hpp"
 
 namespace vibrofric::tool {
@@ -103,6 +104,10 @@ const std::vector<FlagSpec> kWaveFlags{
     {"periods", "K", "samples FILE: the periods the record holds, averaged sample by sample (1: one, unchecked)",
      "one; a record that looks like several is refused",
      [](Flags& f, const std::string& t) { f.read.periods = integer(t, "--periods", 1, max_record_periods); }},
+    {"skip-rows", "N", "samples or fourier FILE: the lines of a preamble to skip before its header (pandas' skiprows)", "0",
+     [](Flags& f, const std::string& t) {
+       f.read.skip_rows = integer(t, "--skip-rows", 0, static_cast<long>(max_table_lines));
+     }},
     {"diagnostics", "", "print on stderr the normalisation of a user wave: raw mean, min, max, scale, period, end point", "",
      [](Flags& f, const std::string& t) { f.diagnostics = switch_value(t, "diagnostics"); }},
 };

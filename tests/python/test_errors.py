@@ -50,7 +50,11 @@ def test_gamma_without_contact():
 def test_unknown_wave_profile_and_type():
     raises_value_error(vibrofric.mu, "sinus", 1.0, 0.5, names=("sinus",))
     raises_value_error(vibrofric.mu, "power:0.5", 1.0, 0.5, names=("0.5",))
-    raises_value_error(vibrofric.mu, "samples:/nonexistent/y.txt", 1.0, 0.5, names=("/nonexistent/y.txt",))
+    # A missing file is FileNotFoundError (an OSError), with the same one-line message.
+    with pytest.raises(FileNotFoundError, match="/nonexistent/y.txt.*no such file"):
+        vibrofric.mu("samples:/nonexistent/y.txt", 1.0, 0.5)
+    with pytest.raises(FileNotFoundError, match="/nonexistent/p.txt"):
+        vibrofric.mu("sine", 1.0, 0.5, profile="profile:/nonexistent/p.txt")
     raises_value_error(vibrofric.mu, "sine", 1.0, 0.5, profile="ball", names=("ball",))
     raises_value_error(vibrofric.mu, "sine", 1.0, 0.5, type="float", names=("type", "float"))
     with pytest.raises(TypeError):

@@ -131,7 +131,8 @@ def test_bad_inputs():
     raises(vibrofric.fit, vibrofric.wave("sine"), 1, names=("sine", "samples"))
     raises(vibrofric.fit, vibrofric.samples(y), 1, t=[0, 1], names=("t",))
     raises(vibrofric.samples(y).fourier_text, names=("fit",))
-    raises(vibrofric.wave, "samples:/nonexistent.csv", column="x", names=("/nonexistent.csv",))
+    with pytest.raises(FileNotFoundError, match="/nonexistent.csv"):
+        vibrofric.wave("samples:/nonexistent.csv", column="x")
     raises(vibrofric.samples(y).normalisation, digits=0, names=("digits",))
     with pytest.raises(TypeError):
         vibrofric.fit(y, 2.5)

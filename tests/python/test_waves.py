@@ -207,3 +207,20 @@ def test_several_periods_refused_or_averaged(tmp_path):
         vibrofric.samples(y, periods=3)
     with pytest.raises(ValueError, match="periods = 0"):
         vibrofric.samples(y, periods=0)
+
+
+def test_lab_file_as_written(tmp_path):
+    # A German lab PC's export: a preamble, ';' and decimal commas, "Zeit [s]", µm in Windows-1252.
+    # skip_rows skips the preamble; the wave is that of the same samples written plainly.
+    rows = "".join("%s;%s\n" % (t, y) for t, y in (("0", "0,75"), ("0,0000125", "1,5"), ("0,000025", "0,75"), ("0,0000375", "0")))
+    path = tmp_path / "lab.csv"
+    path.write_bytes(("Messung: Probe 3\nDatum: 05.12.2026\n\nZeit [s];Weg [\u00b5m]\n" + rows).encode("cp1252"))
+    plain = vibrofric.samples([0.75, 1.5, 0.75, 0])
+    with pytest.raises(ValueError, match="skip them with skip_rows 3"):
+        vibrofric.wave("samples:%s" % path)
+    w = vibrofric.wave("samples:%s" % path, skip_rows=3)
+    assert vibrofric.mu(w, 0.3, 0.2, strings=True) == vibrofric.mu(plain, 0.3, 0.2, strings=True)
+    with pytest.raises(ValueError, match="skip_rows = -1"):
+        vibrofric.wave("samples:%s" % path, skip_rows=-1)
+    with pytest.raises(FileNotFoundError):
+        vibrofric.wave("samples:%s" % (tmp_path / "missing.csv"), skip_rows=3)

@@ -220,13 +220,18 @@ TEST(BadInput, DecimalGrammar) {
       const std::string m = e.what();
       EXPECT_NE(m.find("the value"), std::string::npos) << m;
       if (!text.empty() && text.find('\0') == std::string::npos) {
-        // As typed, with every byte outside printable ASCII escaped ('1\xC2\xA0', '2\t').
+        // As typed: a character as written ('\xd9\xa1', Arabic-Indic one, is well-formed UTF-8 and
+        // visible), every other byte outside printable ASCII escaped ('\xFF', '2\t').
         std::string shown;
-        for (const char ch : text) {
-          const auto u = static_cast<unsigned char>(ch);
-          char b[8];
-          std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
-          shown += u >= 0x20 && u < 0x7F ? std::string(1, ch) : std::string(b);
+        if (text == "\xd9\xa1") {
+          shown = text;
+        } else {
+          for (const char ch : text) {
+            const auto u = static_cast<unsigned char>(ch);
+            char b[8];
+            std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
+            shown += u >= 0x20 && u < 0x7F ? std::string(1, ch) : std::string(b);
+          }
         }
         EXPECT_NE(m.find(shown), std::string::npos) << m;
       }
@@ -339,14 +344,16 @@ TEST(BadInput, QuotedFieldsMayHoldTheSeparator) {
   EXPECT_EQ(w.time_column, "time [s]");
   EXPECT_EQ(w.value_column, "disp, \"raw\"");
   EXPECT_EQ(texts(w.samples), (std::vector<std::string>{"0", "1", "0", "-1"}));
-  // ';' separates where it stands: decimal commas are then fields that are not numbers, named as
-  // typed (the first line, holding no number, is read as the header).
-  const ScratchFile semicolons("0,5;1,5\n2,5;0,25\n");
+  // ';' separates where it stands, and between ';' a decimal comma is a decimal point (a European
+  // lab PC's export); a field with two commas is no number.
+  const ScratchFile semicolons("t;y\n0;0,5\n0,25;1,5\n0,5;-1,25e-1\n1;0,5\n");
+  EXPECT_EQ(texts(parse_wave("samples:" + semicolons.path()).samples), (std::vector<std::string>{"0.5", "1.5", "-1.25e-1"}));
+  const ScratchFile two_commas("t;y\n0;0,5\n0,25;1,5,0\n1;0,5\n");
   try {
-    parse_wave("samples:" + semicolons.path());
-    ADD_FAILURE() << "decimal commas read as numbers";
+    parse_wave("samples:" + two_commas.path());
+    ADD_FAILURE() << "1,5,0 read as a number";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(":2 sample = '2,5'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(":3 sample = '1,5,0'"), std::string::npos) << e.what();
   }
   // An empty field between separators is still an error, a trailing separator is not.
   const ScratchFile empty("1;;2\n");

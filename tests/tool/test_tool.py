@@ -185,13 +185,13 @@ def write(name, text):
 def bad_input_tests():
     mu = ["mu", "--wave", "sine"]
     # Decimal commas (a European spreadsheet's export): said so, with the number as it should read.
+    # Between ';' a decimal comma is read as written (a lab PC's export, unambiguous); elsewhere refused.
     for k, (name, text, value, fixed) in enumerate((
             ("one column", "0,15420\n0,5\n-0,3\n-0,35\n", "0,15420", "0.15420"),
-            ("';' fields", "time;disp\n0,0;0,15420\n0,25;3,9093\n0,5;-1,2\n0,75;-2,1\n1,0;0,15420\n", "0,0", "0.0"),
-            ("';' fields, no header", "0,15420;3,9093\n0,5;1,2\n-0,3;0,4\n", "0,5", "0.5"))):
+            ("',' fields", "time,disp\n0,0,0,15420\n", "0,15420", "0.15420"))):
         bad("decimal commas, %s" % name,
             ["mu", "--wave", "samples:" + write("decimal-comma-%d.csv" % k, text), "--beta", "1", "--gamma", "0.5"],
-            values=[value], words=["decimal comma", fixed])
+            values=[value] if k == 0 else [], words=["decimal comma", fixed] if k == 0 else ["columns"])
     bad("--beta with a decimal comma", mu + ["--beta", "0,5", "--gamma", "0.5"], values=["0,5"],
         words=["--beta", "decimal comma", "0.5"])
     # Two whole numbers a line split by spaces are two columns, not decimal commas.
@@ -455,6 +455,10 @@ def bad_input_tests():
     bad("physical missing --radius", physical_args(**{"--radius": None}), ["--radius"],
         ["missing"])
     bad("physical unknown flag --gamma", physical_args() + ["--gamma", "0.5"], ["--gamma"])
+    # "Did you mean" knows the field's words for a flag.
+    for typed, meant in (("--freq", "--f"), ("--frequency", "--f"), ("--velocity", "--v0"), ("--amplitude", "--A"),
+                         ("--load", "--F-N")):
+        bad("physical unknown flag %s" % typed, physical_args() + [typed, "1"], [typed], ["did you mean '%s'?" % meant])
 
 
 STEEL = [("--wave", "sine"), ("--E1", "210e9"), ("--nu1", "0.3"), ("--E2", "210e9"),
@@ -820,6 +824,45 @@ def format_tests():
                 raise Fail("DAQ file (%s stamps) --diagnostics: %r" % (name, err))
     case("samples with uniform time stamps and no end point (a DAQ's file): period N dt, said on stderr",
          daq_without_end_point)
+
+    def lab_files_as_written():
+        # A German lab PC's export: ';' fields, decimal commas, "Zeit [s]", µm in UTF-8 or
+        # Windows-1252, a preamble. Each gives the value of the same samples written plainly (20
+        # per period of 20 kHz, as 0.75 + 0.75 sin), and its names print as characters.
+        import math
+        rows = [(j * 2.5e-6, 0.75 + 0.75 * math.sin(2 * math.pi * j / 20)) for j in range(20)]
+        de = "".join(("%.7f;%.4f\n" % r).replace(".", ",") for r in rows)
+        plain = "".join("%.4f\n" % r[1] for r in rows)
+        base = ["--beta", "0.3", "--gamma", "0.2", "--type", "double"]
+        ref = ok_run(["mu", "--wave", "samples:" + write("lab-plain.txt", plain)] + base)
+        utf8 = write("lab-de.csv", "Zeit [s];Weg [\u00b5m]\n" + de)
+        latin = os.path.join(TMP, "lab-1252.csv")
+        with open(latin, "w", encoding="cp1252") as f:
+            f.write("Zeit [s];Weg [\u00b5m]\n" + de)
+        pre = write("lab-preamble.csv", "Messung: Probe 3\nDatum: 05.12.2026\n\nZeit [s];Weg [\u00b5m]\n" + de)
+        for args in (["--wave", "samples:" + utf8], ["--wave", "samples:" + latin, "--column", "Weg [\u00b5m]"],
+                     ["--wave", "samples:" + pre, "--skip-rows", "3"]):
+            rc, out, err = run(["mu"] + args + base)
+            if rc != 0 or out != ref or "period is N dt = 0.0000500000" not in err:
+                raise Fail("%s: exit %d, %r, stderr %r: expected %r and the 20 kHz period" % (cmd(args), rc, out, err, ref))
+        rc, out, err = run(["mu", "--wave", "samples:" + pre] + base)
+        if rc != 2 or out or "skip them with --skip-rows 3" not in err or "'Messung:'" not in err:
+            raise Fail("a preamble: exit %d, stderr %r: expected the lines to skip" % (rc, err))
+        rc, out, err = run(["mu", "--wave", "samples:" + latin, "--column", "Weg"] + base)
+        if rc != 2 or "'Weg [\u00b5m]'" not in err or "\\x" in err:
+            raise Fail("a Windows-1252 header: stderr %r: expected 'Weg [\u00b5m]' as written" % err)
+        # The time column is recognised by its German name, so a wrong --f is caught; --unit um
+        # takes the µm header in either encoding.
+        phys = ["physical", "--v0", "0.002", "--F-N", "10", "--mu0", "0.3", "--E1", "210e9", "--E2", "70e9", "--nu1", "0.3",
+                "--nu2", "0.33", "--shape", "sphere", "--R", "0.005", "--unit", "um", "--digits", "8"]
+        rc, out, err = run(phys + ["--wave", "samples:" + utf8, "--f", "2000"])
+        if rc != 2 or "'Zeit [s]'" not in err or "20000" not in err:
+            raise Fail("--f 2000 against a 20 kHz record: exit %d, stderr %r" % (rc, err))
+        for path in (utf8, latin):
+            rc, out, err = run(phys + ["--wave", "samples:" + path, "--f", "20000"])
+            if rc != 0 or "A_m = 7.5000000e-07" not in out:
+                raise Fail("physical --unit um with %s: exit %d, %r, stderr %r" % (path, rc, out[:200], err))
+    case("lab files as written: ';' and decimal commas, Zeit [s], cp1252 µm, a preamble (--skip-rows)", lab_files_as_written)
 
     def profile_layouts():
         # A measured profile is read in the grammar of a wave file: every layout of the same three
@@ -1481,7 +1524,7 @@ def failure_tests():
 
 # Every flag of every command, as the README documents them; --help must list each one, with its
 # default where it has one (CLI11 prints 'PLACEHOLDER=default').
-WAVE = ["--wave", "--column", "--periods", "--diagnostics"]
+WAVE = ["--wave", "--column", "--periods", "--skip-rows", "--diagnostics"]
 PRECISION = ["--digits", "--type", "--no-escalate"]
 SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"]
 RIG = ["--kappa", "--omega", "--zeta"]  # psi lists them to refuse them with the reason
@@ -1618,7 +1661,7 @@ def cli_tests():
         for change, words in (({"--E1": "210"}, ["--E1 = 210", "1e5 to 1.2e12 Pa"]),
                               ({"--A": "2", "--u-mean": "1"}, ["--A = 2", "1e-10 to 1e-3"]),
                               ({"--mu0": "30"}, ["--mu0 = 30", "above 2"]),
-                              (dict(sphere, **{"--R": "1e-6"}), ["contact radius", "--R = 1e-6", "parabola"])):
+                              (dict(sphere, **{"--R": "4e-6"}), ["contact radius", "0.61 times --R = 4e-6 m", "parabola"])):
             args = physical_args(**change)
             rc, out, err = run(args)
             if rc != 0 or "mu = " not in out or err.count("\n") != 1 or not err.startswith("vibrofric: warning: ") or \
@@ -1627,6 +1670,15 @@ def cli_tests():
         rc, out, err = run(physical_args(**{"--E1": "210", "--v0": "1e-4:3e-4:3"}))
         if rc != 0 or err.count("warning") != 1:
             raise Fail("physical sweep with --E1 210: exit %d, stderr %r: expected one warning" % (rc, err))
+    # A contact as wide as the sphere is outside the theory: refused, naming the inputs to check
+    # (those out of range where there are, else every one that sets the contact's size).
+    sphere = {"--radius": None, "--shape": "sphere", "--R": "0.005"}
+    bad("physical: a ball's contact wider than the ball (GPa written as Pa)",
+        physical_args(**dict(sphere, **{"--E1": "210", "--u-mean": None, "--F-N": "10"})),
+        values=["--R = 0.005"], words=["times --R", "outside Hertz's theory", "check the units of --E1 (Pa)"])
+    bad("physical: a ball's contact wider than the ball (R in mm written as m)",
+        physical_args(**dict(sphere, **{"--R": "1e-6"})), values=["--R = 1e-6"],
+        words=["1.2 times", "check the units of --E1 (Pa), --E2 (Pa), --R (m)"])
     case("physical: implausible inputs warn on stderr (GPa as Pa, um as m, mu0 > 2, a not small against R)",
          physical_plausibility)
 
@@ -2108,9 +2160,14 @@ def certify_tests():
             for extra, digits in ((["--type", "double"], None), (["--digits", "25"], 25)):
                 args = ["mu", "--wave", wave, "--beta", b, "--gamma", g, "--certify"] + extra
                 lines = ok_run(args).splitlines()
-                m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 3 else None
-                if not m or not lines[2].startswith("proven: "):
+                m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 4 else None
+                c = re.fullmatch(r"cite: (\S+) \(the exact value to (\d+) digits, correctly rounded: .*\)", lines[2]) if m else None
+                if not c or not lines[3].startswith("proven: "):
                     raise Fail("%s: %r" % (cmd(args), lines))
+                # What to cite: the 60-digit value correctly rounded, to at least the printed digits.
+                expect_digits(c.group(1), want, int(c.group(2)), cmd(args) + " (cite)")
+                if int(c.group(2)) < (17 if digits is None else digits):
+                    raise Fail("%s: cite %s has fewer digits than the value" % (cmd(args), c.group(1)))
                 lo, hi = F(m.group(1)), F(m.group(2))
                 if not lo <= want <= hi or hi - lo > abs(want) * Fraction(1, 10 ** 15):
                     raise Fail("%s: [%s, %s] does not hold the 60-digit %s tightly" % (cmd(args), lo, hi, dec(want, 30)))
@@ -2121,8 +2178,8 @@ def certify_tests():
         # Psi of a Fourier series (at a gamma without jumping), to 30 digits.
         want = F(ok_run(["psi", "--wave", three, "--beta", "2", "--digits", "60"]).strip())
         lines = ok_run(["psi", "--wave", three, "--beta", "2", "--digits", "30", "--certify"]).splitlines()
-        m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 3 else None
-        if not m or not F(m.group(1)) <= want <= F(m.group(2)) or not lines[2].startswith("proven: "):
+        m = re.fullmatch(r"enclosure: \[(\S+), (\S+)\]", lines[1]) if len(lines) == 4 else None
+        if not m or not F(m.group(1)) <= want <= F(m.group(2)) or not lines[3].startswith("proven: "):
             raise Fail("psi --wave %s --certify: %r against %s" % (three, lines, dec(want, 40)))
         expect_digits(lines[0], want, 30, "psi --wave %s --digits 30 --certify" % three)
         # beta >= beta_c = 2 pi: exactly 1 (Eq. 6), an enclosure of zero width.
@@ -2132,11 +2189,11 @@ def certify_tests():
             raise Fail("sine at beta 6.3 > 2 pi: %r" % out)
         # sweep: the header names the enclosure's fields, row by row.
         rows = ok_run(["sweep", "--wave", "power:3", "--beta", "0.5:13:3", "--gamma", "0.2", "--certify", "--type", "double"]).splitlines()
-        if rows[0] != "wave,beta,gamma,mu_over_mu0,lower,upper,correctly_rounded" or len(rows) != 4:
+        if rows[0] != "wave,beta,gamma,mu_over_mu0,lower,upper,cite,correctly_rounded" or len(rows) != 4:
             raise Fail("sweep --wave power:3 --certify: %r" % rows)
         for row in rows[1:]:
             f = row.split(",")
-            if not F(f[4]) <= F(f[5]) or float(f[4]) != float(f[3]) or f[6] != "proven":
+            if not F(f[4]) <= F(f[6]) <= F(f[5]) or float(f[4]) != float(f[3]) or f[7] != "proven":
                 raise Fail("sweep --wave power:3 --certify: row %r" % row)
         # power:2 at gamma = -3/4: beta_c = 8 (1/4)^(1/2) = 4 exactly; beta = 4 gives 1 exactly (Eq. 6).
         out = json.loads(ok_run(["mu", "--wave", "power:2", "--beta", "4", "--gamma", "-0.75", "--certify", "--format", "json"]))

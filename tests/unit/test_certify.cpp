@@ -260,6 +260,13 @@ TEST(Certify, EnclosureTextsAreTheEndsRoundedOutward) {
         EXPECT_GE(hi, c.upper) << at;
         EXPECT_GT(Rational(lo + last_place(c.lower_text)), c.lower) << at;
         EXPECT_LT(Rational(hi - last_place(c.upper_text)), c.upper) << at;
+        // What to cite: within half its last place of both exact ends (so of the value between),
+        // with at least the printed value's digits and at most the enclosure texts' three more.
+        const Rational cite = exact_decimal(c.cite, "cite"), half = Rational(last_place(c.cite) / 2);
+        EXPECT_LE(Rational(abs(Rational(c.lower - cite))), half) << at << " cite " << c.cite;
+        EXPECT_LE(Rational(abs(Rational(c.upper - cite))), half) << at << " cite " << c.cite;
+        EXPECT_GE(c.cite_digits, output_digits(precision)) << at << " cite " << c.cite;
+        EXPECT_LE(c.cite_digits, output_digits(precision) + 3) << at << " cite " << c.cite;
         ++checked;
       }
   }

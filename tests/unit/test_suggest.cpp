@@ -47,4 +47,20 @@ TEST(Suggest, FlagsCommandsAndNothingNear) {
   EXPECT_EQ(did_you_mean(std::string(100, 's'), kWaves), "");
 }
 
+// The field's words for a quantity, which no spelling distance finds (--freq is 3 edits from --f
+// and 2 from --area), in the tool's flags and in Python's keywords alike; only names the caller knows.
+TEST(Suggest, SynonymsOfTheFieldsQuantities) {
+  const std::vector<std::string> flags{"--f", "--v0", "--A", "--F-N", "--mu0", "--R", "--area", "--skip-rows"};
+  EXPECT_EQ(did_you_mean("--freq", flags), "did you mean '--f'?");
+  EXPECT_EQ(did_you_mean("--Frequency", flags), "did you mean '--f'?");
+  EXPECT_EQ(did_you_mean("--velocity", flags), "did you mean '--v0'?");
+  EXPECT_EQ(did_you_mean("--amplitude", flags), "did you mean '--A'?");
+  EXPECT_EQ(did_you_mean("--normal_load", flags), "did you mean '--F-N'?");
+  EXPECT_EQ(did_you_mean("--skiprows", flags), "did you mean '--skip-rows'?");
+  const std::vector<std::string> keywords{"f", "v0", "A", "F_N", "mu0"};
+  EXPECT_EQ(did_you_mean("frequency", keywords), "did you mean 'f'?");
+  EXPECT_EQ(did_you_mean("load", keywords), "did you mean 'F_N'?");
+  EXPECT_EQ(did_you_mean("--frequency", {"--beta", "--gamma"}), "");  // mu has no frequency
+}
+
 }  // namespace

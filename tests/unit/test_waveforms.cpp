@@ -375,6 +375,61 @@ TEST(Waveforms, ColumnSelection) {
 }
 
 // The normalisation reported (model.md, "Waveform catalogue"), against hand computation.
+// Files as a lab PC writes them (README, "File formats"): ';' fields with decimal commas, a time
+// column named in German or by its unit, a header in UTF-8 or Windows-1252, a preamble skipped by
+// skip_rows. Each is the same wave as the file written with points, in English, without preamble.
+TEST(Waveforms, LabFilesAsWritten) {
+  const std::string rows = "0;0,75\n0,0000125;1,5\n0,000025;0,75\n0,0000375;0\n";
+  const WaveSpec plain = parse_wave("samples:" + temp_file("lab_plain.csv", "time [s],disp [um]\n0,0.75\n0.0000125,1.5\n"
+                                                                             "0.000025,0.75\n0.0000375,0\n"));
+  ASSERT_TRUE(plain.period_from_stamps);
+  const auto same = [&](const WaveSpec& w, const std::string& what) {
+    EXPECT_EQ(texts(w.samples), texts(plain.samples)) << what;
+    ASSERT_TRUE(w.period_from_stamps) << what << ": the time column was not recognised";
+    EXPECT_EQ(w.period_from_stamps->text(), plain.period_from_stamps->text()) << what;
+  };
+  same(parse_wave("samples:" + temp_file("lab_de.csv", "Zeit [s];Weg [\xC2\xB5m]\n" + rows)), "UTF-8");
+  const WaveSpec latin = parse_wave("samples:" + temp_file("lab_1252.csv", "Zeit [s];Weg [\xB5m]\n" + rows));
+  same(latin, "Windows-1252");
+  EXPECT_EQ(latin.value_column, "Weg [\xC2\xB5m]");  // read as the character µ, kept as UTF-8
+  EXPECT_EQ(column_unit(latin.value_column), "\xC2\xB5m");
+  EXPECT_EQ(detail::visible(latin.value_column), "Weg [\xC2\xB5m]");  // printed as written
+  // Time columns by name in five languages or by a unit of time; other units are values.
+  for (const char* name : {"Zeit", "temps (s)", "tiempo [ms]", "tempo", "Messzeit [s]", "dt/ms", "Zeit in \xC2\xB5s", "T"})
+    same(parse_wave("samples:" + temp_file("lab_name.csv", std::string(name) + ";y\n" + rows)), name);
+  for (const char* name : {"v [m/s]", "m/s", "Weg [\xC2\xB5m]", "Kraft (N)", "speed_s", "Strom in A"}) {
+    SCOPED_TRACE(name);
+    try {
+      parse_wave("samples:" + temp_file("lab_value.csv", std::string(name) + ";y\n" + rows));
+      ADD_FAILURE() << "a time column named " << name;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected one column of values, or a header naming one column 'time'"),
+                std::string::npos) << e.what();
+    }
+  }
+  // A preamble: named with the lines to skip, then skipped; line numbers stay the file's.
+  const std::string preamble = temp_file("lab_preamble.csv", "Messung: Probe 3\nDatum: 05.12.2026\n\nZeit [s];Weg [\xC2\xB5m]\n" + rows);
+  try {
+    parse_wave("samples:" + preamble);
+    ADD_FAILURE() << "a preamble read as samples";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":1 sample = 'Messung:'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("skip them with skip_rows 3"), std::string::npos) << e.what();
+  }
+  WaveReadOptions skip;
+  skip.skip_rows = 3;
+  same(parse_wave("samples:" + preamble, skip), "skip_rows 3");
+  skip.skip_rows = 1;  // too few: "Datum: 05.12.2026" is then the header, "Zeit [s];…" a row
+  EXPECT_THROW(parse_wave("samples:" + preamble, skip), InputError);
+  EXPECT_THROW(parse_wave("sine", skip), InputError);
+  skip.skip_rows = -1;
+  EXPECT_THROW(parse_wave("samples:" + preamble, skip), InputError);
+  // ',' between fields and decimal commas stay ambiguous: refused as before.
+  EXPECT_THROW(parse_wave("samples:" + temp_file("lab_commas.csv", "0,75\n1,5\n0,75\n0\n")), InputError);
+  // A missing file is its own error (Python's FileNotFoundError).
+  EXPECT_THROW(parse_wave("samples:/nonexistent/lab.csv"), MissingFileError);
+}
+
 TEST(Waveforms, DescribeNormalisation) {
   using Pairs = std::vector<std::pair<std::string, std::string>>;
   // 2, 5, 8, 5 at φ = j/4: mean 5, min 2, max 8, scale (8 − 2)/2 = 3.

@@ -6,6 +6,7 @@
 
 #include "vibrofric/api/decimal_value.hpp"
 #include "tables.hpp"
+#include "text.hpp"
 #include "vibrofric/api/limits.hpp"
 #include "vibrofric/api/suggest.hpp"
 
@@ -24,6 +25,7 @@
 namespace vibrofric {
 
 static bool is_decimal(const std::string& t);
+bool decimal_comma(const std::string& text);
 
 namespace {
 
@@ -76,11 +78,36 @@ std::vector<std::string> fields_at_separator(const std::string& line, char* deli
   return {};
 }
 
-// The name of a time column, as rigs export it: "time", "t", "timestamp", with a unit in brackets
-// ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("time in ms").
+// The name of a time column, as rigs export it: "time", "t", "timestamp" or the word in German,
+// French, Spanish, Italian and Portuguese (Zeit, temps, tiempo, tempo), with a unit in brackets
+// ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("Zeit in ms"); or any
+// name with a unit of time in brackets, after '/' or after "in" ("Messzeit [s]", "dt/ms").
 bool is_time_name(const std::string& name) {
-  static const std::regex re(R"((t|time|timestamp)(\s*[\[(].*[\])]|\s*[_/]\s*\w+|\s+in\s+\w+)?)", std::regex::icase);
-  return std::regex_match(name, re);
+  static const std::regex word(R"((t|time|timestamp|zeit|temps|tiempo|tempo)(\s*[\[(].*[\])]|\s*[_/]\s*\S+|\s+in\s+\S+)?)",
+                               std::regex::icase);
+  static const std::string units = "(s|sec|ms|us|ns|\xC2\xB5s|\xCE\xBCs)";
+  static const std::regex unit(".*?(\\[\\s*" + units + "\\s*\\]|\\(\\s*" + units + "\\s*\\)|\\s+in\\s+" + units + ")\\s*");
+  // "name/s" is a quantity per unit, as pandas and ISO 80000 write it; "m/s" is a velocity.
+  static const std::regex per(R"(\s*([^\s/]+)\s*/\s*)" + units + "\\s*");
+  static const std::regex length("(k|m|c|u|n|\xC2\xB5|\xCE\xBC)?m");
+  std::smatch m;
+  if (std::regex_match(name, m, per) && !std::regex_match(m[1].str(), length)) return true;
+  return std::regex_match(name, word) || std::regex_match(name, unit);
+}
+
+// The lines before a samples file's last run of numeric rows, where that run follows a line that
+// is not numeric: a preamble (and header) that skip_rows would skip, as the file's line count.
+std::optional<int> preamble_lines(const detail::Rows& rows, bool arrays) {
+  if (arrays) return std::nullopt;
+  const auto numeric = [](const std::vector<std::string>& fields) {
+    return std::all_of(fields.begin(), fields.end(), [](const std::string& f) { return is_decimal(f); });
+  };
+  std::size_t k = rows.size();
+  while (k > 0 && numeric(rows[k - 1].second)) --k;
+  if (k == 0 || k == rows.size() || rows.size() - k < 2) return std::nullopt;
+  const auto& above = rows[k - 1].second;
+  const bool header = std::none_of(above.begin(), above.end(), [](const std::string& f) { return is_decimal(f); });
+  return header ? rows[k - 1].first - 1 : rows[k].first - 1;
 }
 
 // The value of a decimal at 60 significant digits: decimals of up to 60 digits compare exactly.
@@ -246,16 +273,20 @@ detail::RowSource detail::array_source(const std::string& label, int header_line
   return {label, label, true, header_lines};
 }
 
-detail::Table detail::read_table_file(const std::string& path, const std::string& wave) {
+detail::Table detail::read_table_file(const std::string& path, const std::string& wave, int skip_rows) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError("file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)) + " is a directory: expected a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read file " + quoted(visible(path)) + " for wave " + quoted(visible(wave)));
-  return read_table(in, file_source(path, wave));
+  if (!in) {
+    const std::string what = "cannot read file " + quoted(visible(path)) + " for wave " + quoted(visible(wave));
+    if (!std::filesystem::exists(path, ec)) throw MissingFileError(what + ": no such file");
+    throw InputError(what);
+  }
+  return read_table(in, file_source(path, wave), skip_rows);
 }
 
-detail::Table detail::read_table(std::istream& in, const RowSource& source) {
+detail::Table detail::read_table(std::istream& in, const RowSource& source, int skip_rows) {
   Table t;
   std::string line;
   int number = 0;
@@ -265,8 +296,10 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
     if (static_cast<std::size_t>(number) > max_table_lines)
       throw InputError("file " + quoted(visible(source.name)) + " has more than " + std::to_string(max_table_lines) +
                        " lines: expected fewer");
+    if (number <= skip_rows) continue;
     if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    line = as_utf8(line);
     if (line.find('\0') != std::string::npos)
       throw InputError("file " + quoted(visible(source.name)) + " line " + std::to_string(number) +
                        " holds a NUL byte: expected text");
@@ -278,10 +311,13 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
     if (fields = fields_at_separator(line, &delim); delim) {
       // An empty field is an error, except after a trailing separator.
       if (!fields.empty() && fields.back().empty()) fields.pop_back();
-      for (const auto& f : fields)
+      for (auto& f : fields) {
         if (f.empty())
           throw InputError(source.where(number) + ": empty field before " + quoted(std::string(1, delim)) +
                            ": expected a value between separators");
+        // Between ';' a decimal comma is unambiguous (a European lab PC's export): read as a point.
+        if (delim == ';' && !is_decimal(f) && decimal_comma(f)) f[f.find(',')] = '.';
+      }
     } else if (line.find('\t') != std::string::npos) {
       // Tab-separated (a rig's export): fields between runs of tabs, so that a header name may
       // hold spaces ('time [s]<TAB>displacement [um]'); spaces around them trimmed.
@@ -312,21 +348,6 @@ detail::Table detail::read_table(std::istream& in, const RowSource& source) {
   return t;
 }
 
-
-std::string detail::visible(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    const auto u = static_cast<unsigned char>(ch);
-    if (u >= 0x20 && u < 0x7F) {
-      out += ch;
-    } else {
-      char b[8];
-      std::snprintf(b, sizeof b, u == '\r' ? "\\r" : u == '\t' ? "\\t" : "\\x%02X", u);
-      out += b;
-    }
-  }
-  return out;
-}
 
 int detail::distinct_digits(const WaveSpec& spec) {
   int distinct = 1;
@@ -437,7 +458,17 @@ WaveSpec detail::samples_from_table(const Table& table, const RowSource& source,
   for (const auto& [line, tok] : rows) {
     values.emplace_back();
     values.back().reserve(tok.size());
-    for (const auto& t : tok) values.back().push_back(checked_decimal(t, source.where(line) + " sample"));
+    for (const auto& t : tok) {
+      try {
+        values.back().push_back(checked_decimal(t, source.where(line) + " sample"));
+      } catch (const InputError& e) {
+        const auto skip = preamble_lines(rows, source.arrays);
+        if (!skip || line > *skip) throw;
+        throw InputError(std::string(e.what()) + "; lines 1 to " + std::to_string(*skip) +
+                         " look like a preamble before the header and the numbers: skip them with " +
+                         options.skip_rows_name + " " + std::to_string(*skip));
+      }
+    }
   }
   std::size_t columns = rows.empty() ? 0 : rows[0].second.size();
   if (!chosen && rows.size() == 1 && table.header.empty()) {
@@ -650,6 +681,12 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
       throw InputError("column " + quoted(visible(options.column)) + " given for wave " + quoted(visible(text)) +
                        ": a column applies to samples:FILE waves only, expected no column");
   }
+  if (options.skip_rows < 0 || static_cast<std::size_t>(options.skip_rows) > max_table_lines)
+    throw InputError(options.skip_rows_name + " = " + std::to_string(options.skip_rows) + ": expected an integer from 0 to " +
+                     std::to_string(max_table_lines));
+  if (options.skip_rows != 0 && text.rfind("samples:", 0) != 0 && text.rfind("fourier:", 0) != 0)
+    throw InputError(options.skip_rows_name + " " + std::to_string(options.skip_rows) + " given for wave " + quoted(visible(text)) +
+                     ": rows are skipped in samples:FILE and fourier:FILE waves only");
   if (options.periods != 0 && text.rfind("samples:", 0) != 0)
     throw InputError(options.periods_name + " " + std::to_string(options.periods) + " given for wave " + quoted(visible(text)) +
                      ": the periods of a record apply to samples:FILE waves only");
@@ -670,11 +707,12 @@ WaveSpec parse_wave(const std::string& text, const WaveReadOptions& options) {
   }
   if (colon != std::string::npos && head == "fourier") {
     if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected fourier:FILE");
-    return detail::fourier_from_table(detail::read_table_file(arg, text), detail::file_source(arg, text));
+    return detail::fourier_from_table(detail::read_table_file(arg, text, options.skip_rows), detail::file_source(arg, text));
   }
   if (colon != std::string::npos && head == "samples") {
     if (arg.empty()) throw InputError("wave " + quoted(visible(text)) + ": expected samples:FILE");
-    return detail::samples_from_table(detail::read_table_file(arg, text), detail::file_source(arg, text), options);
+    return detail::samples_from_table(detail::read_table_file(arg, text, options.skip_rows), detail::file_source(arg, text),
+                                      options);
   }
   const std::string hint = did_you_mean(text, {"sine", "triangle", "sawtooth-right", "sawtooth-left", "square", "power:P",
                                                 "fourier:FILE", "samples:FILE"});

@@ -251,6 +251,12 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     const int digits = output_digits(precision) + 3;
     c.lower_text = directed(v->lower(), digits, MPFR_RNDD);
     c.upper_text = directed(v->upper(), digits, MPFR_RNDU);
+    // Rounding to nearest is monotone: where both ends round to one decimal, so does every point between.
+    for (int d = digits; d >= 1 && c.cite.empty(); --d)
+      if (same_significant(v->lower(), v->upper(), d)) {
+        c.cite = format_significant(v->lower(), d);
+        c.cite_digits = d;
+      }
   }
   for (const std::string& t : c.nearest) c.correctly_rounded = c.correctly_rounded || t == printed;
   return c;

@@ -479,27 +479,40 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     peak_radius = length * X;
   }
   const mpfr peak_mean_pressure = peak_force / (boost::math::constants::pi<mpfr>() * peak_radius * peak_radius);
-  if (warnings) {
-    // Plausible ranges, wide enough for every engineering solid and rig: moduli from soft rubber
-    // (1e5 Pa) to diamond (1.2e12 Pa); an amplitude from 0.1 nm to 1 mm; mu0 up to 2.
-    const auto outside = [&](const Input& in, const mpfr& v, const char* lo, const char* hi, const std::string& what) {
-      if (in.given() && (v < mpfr(lo) || v > mpfr(hi)))
-        warnings->push_back(in.name + " = " + in.text() + " is outside " + lo + " to " + hi + " " + what);
-    };
-    outside(r.E1, in.E1, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
-    outside(r.E2, in.E2, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
-    outside(r.A, A, "1e-10", "1e-3", "m, the amplitudes of a vibrated contact (um written as m?)");
-    if (in.mu0 > 2) warnings->push_back(r.mu0.name + " = " + r.mu0.text() + " is above 2, no coefficient of friction of solids");
-    // Hertz and the MDR take the sphere as the parabola r²/2R: at a = 0.3 R its height is 2.3 % off.
-    const Input* radius_of_curvature = kind == "sphere" || kind == "wearflat" ? &r.R : nullptr;
-    if (radius_of_curvature) {
-      const mpfr a = length * edge, ratio = a / get(*radius_of_curvature);
-      if (ratio > mpfr("0.3"))
-        warnings->push_back("the contact radius " + format_significant(a, 3) + " m is " + format_significant(ratio, 2) + " of " +
-                            radius_of_curvature->name + " = " + radius_of_curvature->text() +
-                            ": Hertz and the MDR take the sphere as a parabola, which needs it small against R");
+  // Plausible ranges, wide enough for every engineering solid and rig: moduli from soft rubber
+  // (1e5 Pa) to diamond (1.2e12 Pa); an amplitude from 0.1 nm to 1 mm; mu0 up to 2.
+  std::vector<std::string> implausible, suspects;
+  const auto outside = [&](const Input& in, const mpfr& v, const char* lo, const char* hi, const std::string& what) {
+    if (in.given() && (v < mpfr(lo) || v > mpfr(hi))) {
+      implausible.push_back(in.name + " = " + in.text() + " is outside " + lo + " to " + hi + " " + what);
+      suspects.push_back(in.name);
     }
+  };
+  outside(r.E1, in.E1, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
+  outside(r.E2, in.E2, "1e5", "1.2e12", "Pa, the moduli of solids (GPa written as Pa?)");
+  outside(r.A, A, "1e-10", "1e-3", "m, the amplitudes of a vibrated contact (um written as m?)");
+  if (in.mu0 > 2) implausible.push_back(r.mu0.name + " = " + r.mu0.text() + " is above 2, no coefficient of friction of solids");
+  // Hertz and the MDR take the sphere as the parabola r²/2R: at a = 0.3 R its height is 2.3 % off;
+  // a contact as wide as the sphere is outside the theory, an input in the wrong unit.
+  const Input* radius_of_curvature = kind == "sphere" || kind == "wearflat" ? &r.R : nullptr;
+  if (radius_of_curvature) {
+    const mpfr a = length * edge, ratio = a / get(*radius_of_curvature);
+    const std::string said = "the contact radius " + format_significant(a, 3) + " m is " + format_significant(ratio, 2) +
+                             " times " + radius_of_curvature->name + " = " + radius_of_curvature->text() + " m";
+    if (ratio >= 1) {
+      // Every input that sets the contact's size, or those already out of range.
+      std::string check;
+      for (const auto& [i, unit] : {std::pair<const Input*, const char*>{&r.E1, "Pa"}, {&r.E2, "Pa"},
+                                    {radius_of_curvature, "m"}, {&r.F_N, "N"}, {&r.u_mean, "m"}, {&r.A, "m"}})
+        if (i->given() && (suspects.empty() || std::count(suspects.begin(), suspects.end(), i->name)))
+          check += (check.empty() ? "" : ", ") + i->name + " (" + unit + ")";
+      throw InputError(said + ": a contact as wide as the sphere is outside Hertz's theory and the MDR; check the units of " +
+                       check);
+    }
+    if (ratio > mpfr("0.3"))
+      implausible.push_back(said + ": Hertz and the MDR take the sphere as a parabola, which needs the contact small against it");
   }
+  if (warnings) warnings->insert(warnings->end(), implausible.begin(), implausible.end());
   PhysicalOutputs rec;
   auto field = [&](const char* name, const std::string& word) { rec.push_back({name, {}, word}); };
   auto number = [&](const char* name, const mpfr& v, int known) { rec.push_back({name, {v, known}, {}}); };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cerrno>
 #include <fstream>
 #include <sys/stat.h>
 
@@ -79,7 +80,11 @@ ProfileSpec parse_profile_file(const std::string& path, const std::string& text)
   if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
     throw InputError("profile file " + as_typed(path) + " is a directory: expected a file of 'r f' lines");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read profile file " + as_typed(path));
+  if (!in) {
+    if (stat(path.c_str(), &st) != 0 && errno == ENOENT)
+      throw MissingFileError("cannot read profile file " + as_typed(path) + ": no such file");
+    throw InputError("cannot read profile file " + as_typed(path));
+  }
   // Lines 'r f' in the grammar of a wave file (read_table): comments, separators, quoting, a
   // header line of names (ignored here), a byte-order mark and CR line ends alike.
   const detail::Rows rows = detail::read_table(in, detail::file_source(path, text)).rows;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <utility>
 
 namespace vibrofric {
 namespace {
@@ -29,11 +30,39 @@ std::size_t distance(const std::string& a, const std::string& b) {
 
 std::size_t allowed(std::size_t length) { return length <= 4 ? 1 : length <= 8 ? 2 : 3; }
 
+// A name as a key: lower case, no leading dashes, '_' as '-' (the tool's --F-N is Python's F_N).
+std::string key(const std::string& name) {
+  std::string k = lower(name.substr(std::min(name.find_first_not_of('-'), name.size())));
+  std::replace(k.begin(), k.end(), '_', '-');
+  return k;
+}
+
+// Words a user of the field writes for a quantity, by the key of its name: what no spelling
+// distance finds (--freq is not a typo of --f).
+const char* synonym(const std::string& k) {
+  static const std::pair<const char*, const char*> table[] = {
+      {"freq", "f"},          {"frequency", "f"},        {"hz", "f"},
+      {"velocity", "v0"},     {"speed", "v0"},           {"v", "v0"},             {"sliding-velocity", "v0"},
+      {"sliding-speed", "v0"}, {"v-0", "v0"},             {"amplitude", "a"},      {"amp", "a"},
+      {"load", "f-n"},        {"normal-load", "f-n"},    {"force", "f-n"},        {"normal-force", "f-n"},
+      {"fn", "f-n"},          {"cof", "mu0"},            {"friction", "mu0"},     {"mu-0", "mu0"},
+      {"sphere-radius", "r"}, {"ball-radius", "r"},      {"radius-of-curvature", "r"},
+      {"precision", "digits"}, {"dps", "digits"},         {"skiprows", "skip-rows"}, {"skip", "skip-rows"},
+      {"skip-lines", "skip-rows"}, {"stiffness", "k-system"}, {"system-stiffness", "k-system"}, {"weight", "mass"},
+      {"waveform", "wave"},   {"signal", "wave"}};
+  for (const auto& [word, name] : table)
+    if (k == word) return name;
+  return nullptr;
+}
+
 }  // namespace
 
 std::string did_you_mean(const std::string& typed, const std::vector<std::string>& known) {
   // Names far longer than any known one are not typos (and would make the table large).
   if (typed.empty() || typed.size() > 64) return "";
+  if (const char* meant = synonym(key(typed)))
+    for (const std::string& name : known)
+      if (key(name) == meant) return "did you mean '" + name + "'?";
   std::vector<std::string> best;
   std::size_t best_d = static_cast<std::size_t>(-1);
   for (const std::string& name : known) {

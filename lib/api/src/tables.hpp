@@ -40,9 +40,12 @@ struct Table {
 // between the ';' (else one with ',' between the ','; libcsv, RFC 4180: a quoted field may hold
 // the separator), so a header may hold spaces ('time [s], value'); a line with tabs has them
 // between runs of tabs, any other line between runs of whitespace. A first line without any
-// number is the header.
-Table read_table(std::istream& in, const RowSource& source);
-Table read_table_file(const std::string& path, const std::string& wave);
+// number is the header. Between ';' a number may be written with a decimal comma ('0,5'). A line
+// that is not UTF-8 is read as Windows-1252. The first skip_rows lines (a preamble) are not read;
+// line numbers stay the file's.
+Table read_table(std::istream& in, const RowSource& source, int skip_rows = 0);
+// MissingFileError where the path does not exist.
+Table read_table_file(const std::string& path, const std::string& wave, int skip_rows = 0);
 
 // The rows of a samples:FILE, or of a fourier:FILE ('k a_k b_k'), checked: the WaveSpec that
 // parse_wave returns for that file.

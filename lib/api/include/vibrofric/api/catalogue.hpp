@@ -61,6 +61,9 @@ struct WaveReadOptions {
   std::string column_name = "column";  // what the caller calls the choice, for messages ("--column")
   int periods = 0;
   std::string periods_name = "periods";  // ("--periods")
+  // The lines of a file's preamble ("Messung: …", "Datum: …") before its header (pandas' skiprows).
+  int skip_rows = 0;
+  std::string skip_rows_name = "skip_rows";  // ("--skip-rows")
 };
 
 // Accepts sine, harmonic, triangle|tri, sawtooth-right|str, sawtooth-left|stl, square|sqr,
@@ -108,7 +111,8 @@ Real parse_real(const std::string& text, const std::string& what) {
 
 
 namespace detail {
-// Text for messages with every byte outside printable ASCII escaped ('sine\r', '\xC2\xA0').
+// Text for messages: characters as written ('Weg [µm]'), every byte of a control, an invisible
+// or space-like character ('sine\r', '\xC2\xA0') and of ill-formed UTF-8 escaped (src/text.cpp).
 std::string visible(const std::string& s);
 // A samples wave's inputs to make_samples_from, shared with describe_normalisation: the largest
 // count of significant digits of a sample, y_j at the current mpfr precision, and with a time

@@ -25,6 +25,12 @@ struct Certificate {
   // others (`lower_text`, `upper_text`: decimals rounded outward, three digits past the precision's).
   exact::Rational lower, upper;
   std::string exact, lower_text, upper_text;
+  // For an enclosure: the longest decimal both its ends round to (to nearest; up to three digits
+  // past the value's, as lower_text), so the exact value correctly rounded to that many digits,
+  // every digit proven: what to cite (a double's shortest text may lie outside the enclosure, as
+  // the double itself may); with its digit count.
+  std::string cite;
+  int cite_digits = 0;
   mpfr_prec_t bits = 0;  // the enclosure's precision that decided the rounding (0: exact)
   // The texts of the correctly rounded value at the precision (two where the exact value is a
   // tie between them), and whether the printed text is one of them.

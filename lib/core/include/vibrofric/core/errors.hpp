@@ -20,6 +20,12 @@ class DomainError : public InputError {
   using InputError::InputError;
 };
 
+// A file named in the input does not exist (Python: FileNotFoundError).
+class MissingFileError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 class SolverError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
