@@ -203,8 +203,11 @@ Flat punch only (Psi does not exist for curved profiles).
                  {"mu_over_mu0", r.mu}, {"stick_fraction", r.stick_fraction.text()}, {"slip_fraction", r.slip_fraction.text()},
                  {"backward_slip_fraction", r.backward_fraction.text()}, {"flight_fraction", r.flight_fraction.text()},
                  {"amplitude", r.amplitude.text()}, {"largest_backward_slip", r.largest_backward_slip.text()},
-                 {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()}})
+                 {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()},
+                 {"quasi_static_mu_over_mu0", r.quasi_static_mu}})
           d[py::str(name)] = convert(value);
+        if (!r.resonance_note.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, r.resonance_note.c_str(), 1) != 0)
+          throw py::error_already_set();
         return d;
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "kappa"_a, "omega"_a, "zeta"_a = py::none(), "digits"_a = py::none(),
@@ -216,7 +219,9 @@ zeta = c/(2 sqrt(m k_s)). Returns the tool's fields, in its order: mu_over_mu0 (
 stick_fraction, slip_fraction, flight_fraction (they add to 1), backward_slip_fraction (the part of
 slip_fraction slipping backward), amplitude (half the peak-to-peak of X - beta phi) and
 largest_backward_slip (both in units of mu0 k_z A/k_x), floquet_multiplier (0: below what
-difference quotients resolve) and relative_error_estimate (the two precisions apart). Values as
+difference quotients resolve), relative_error_estimate (the two precisions apart) and
+quasi_static_mu_over_mu0 (the paper's value at the same point; where the two differ by more than
+10 %, a RuntimeWarning names the rig's nearest resonance). Values as
 mu(): float for type None/'double', or decimal strings with strings=True; the fractions carry
 the digits the two precisions agree on. ValueError for bad input, vibrofric.SolverError where no
 periodic state is found.

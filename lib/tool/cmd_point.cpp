@@ -37,7 +37,9 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
       {"stick_fraction", r.stick_fraction.text()}, {"slip_fraction", r.slip_fraction.text()},
       {"backward_slip_fraction", r.backward_fraction.text()}, {"flight_fraction", r.flight_fraction.text()},
       {"amplitude", r.amplitude.text()}, {"largest_backward_slip", r.largest_backward_slip.text()},
-      {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()}};
+      {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()},
+      {"quasi_static_mu_over_mu0", r.quasi_static_mu}};
+  if (!r.resonance_note.empty()) pending_diagnostics += "vibrofric: warning: " + r.resonance_note + "\n";
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';

@@ -65,6 +65,17 @@ def ok_run(args, timeout=120):
     return out
 
 
+def rig_ok_run(args, timeout=120):
+    """ok_run for a rig: stderr may hold the warning that names the rig's nearest resonance (its
+    value more than 10 % from the quasi-static one), and nothing else."""
+    rc, out, err = run(args, timeout)
+    if rc != 0:
+        raise Fail("%s: exit %d, stderr %r" % (cmd(args), rc, err.strip()))
+    if any(not line.startswith("vibrofric: warning: the rig's mu_over_mu0 ") for line in err.splitlines()):
+        raise Fail("%s: unexpected stderr %r" % (cmd(args), err.strip()))
+    return out
+
+
 def one_line(args):
     out = ok_run(args)
     if not out.endswith("\n") or out.count("\n") != 1 or not out.strip():
@@ -2212,13 +2223,13 @@ def certify_tests():
 def sixty_digits_rounded(args):
     """mu ARGS (rig or in-plane) in double and at 20 digits is its 60-digit value rounded, the JSON
     record's value is the 20-digit one and its mode fractions add up to 1; the record."""
-    ref = F(ok_run(["mu"] + args + ["--digits", "60"]).splitlines()[0])
-    dbl = ok_run(["mu"] + args + ["--type", "double"]).splitlines()
+    ref = F(rig_ok_run(["mu"] + args + ["--digits", "60"]).splitlines()[0])
+    dbl = rig_ok_run(["mu"] + args + ["--type", "double"]).splitlines()
     if float(dbl[0]) != float(ref):
         raise Fail("mu %s --type double: %s, the 60-digit value rounds to %r" % (" ".join(args), dbl[0], float(ref)))
-    d20 = ok_run(["mu"] + args + ["--digits", "20"]).splitlines()[0]
+    d20 = rig_ok_run(["mu"] + args + ["--digits", "20"]).splitlines()[0]
     expect_digits(d20, ref, 20, "mu %s --digits 20" % " ".join(args))
-    out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+    out = json.loads(rig_ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
     total = F(out["stick_fraction"]) + F(out["slip_fraction"]) + F(out["flight_fraction"])
     if abs(total - 1) > F("1e-15") or out["mu_over_mu0"] != d20:
         raise Fail("mu %s --format json: %r" % (" ".join(args), out))
@@ -2257,14 +2268,34 @@ def rig_tests():
                 raise Fail("mu %s --format json: %r" % (" ".join(args), out))
     case("rig: double and 20 digits are the 60-digit value rounded; fractions add up to 1", digits_against_more_digits)
 
+    def quasi_static_beside_the_rig():
+        # quasi_static_mu_over_mu0 is mu's value without the rig; a stiff light rig (kappa 1e4,
+        # omega 100) is within 1e-4 of it and says nothing; near a resonance the warning names the
+        # oscillator and its ratio, computed here (0.18 and 1: omega sqrt(1 + kappa) = 1.0863).
+        point = ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "0.2", "--type", "double"]
+        quasi = ok_run(point).strip()
+        out = json.loads(ok_run(point + ["--kappa", "10000", "--omega", "100", "--format", "json"]))  # no stderr
+        if out["quasi_static_mu_over_mu0"] != quasi or abs(float(out["mu_over_mu0"]) / float(quasi) - 1) > 1e-4:
+            raise Fail("a stiff light rig: %r, quasi-static %s" % (out, quasi))
+        rc, text, err = run(point + ["--kappa", "0.18", "--omega", "1"])
+        lines = dict(line.split(": ", 1) for line in text.splitlines()[1:])
+        ratio = "%.3g" % (1 * math.sqrt(1.18))
+        if rc != 0 or lines.get("quasi_static_mu_over_mu0") != quasi or err.count("\n") != 1 or \
+                "stick oscillator, omega sqrt(1 + kappa) = %s, near 1" % ratio not in err:
+            raise Fail("a rig near resonance: exit %d, %r, stderr %r" % (rc, text, err))
+        rc, text, err = run(point + ["--kappa", "0.18", "--omega", "2.3"])  # omega sqrt(kappa) = 0.976
+        if rc != 0 or "slip oscillator, omega sqrt(kappa) = %.3g, near 1" % (2.3 * math.sqrt(0.18)) not in err:
+            raise Fail("a rig near the slip resonance: exit %d, stderr %r" % (rc, err))
+    case("rig: the quasi-static value beside it, and a warning naming the nearest resonance", quasi_static_beside_the_rig)
+
     def sweep_rows():
-        rows = ok_run(["sweep", "--wave", "tri", "--beta", "1:2:2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10",
+        rows = rig_ok_run(["sweep", "--wave", "tri", "--beta", "1:2:2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10",
                        "--zeta", "0.1", "--type", "double"]).splitlines()
         if rows[0] != "wave,beta,gamma,kappa,omega,zeta,mu_over_mu0" or len(rows) != 3:
             raise Fail("sweep with --kappa: %r" % rows)
         for row in rows[1:]:
             f = row.split(",")
-            one = ok_run(["mu", "--wave", "tri", "--beta", f[1], "--gamma", "-0.4", "--kappa", "3", "--omega", "10",
+            one = rig_ok_run(["mu", "--wave", "tri", "--beta", f[1], "--gamma", "-0.4", "--kappa", "3", "--omega", "10",
                           "--zeta", "0.1", "--type", "double"]).splitlines()[0]
             if f[3:6] != ["3", "10", "0.1"] or f[6] != one:
                 raise Fail("sweep row %r against mu %s" % (row, one))
@@ -2275,11 +2306,11 @@ def rig_tests():
         # mu's stick and flight fractions (the spans' ends are rows) and, by the trapezoid rule on
         # 20000 steps, mu itself (the rule errs by O(1e-8) here: s and n are smooth between rows).
         args = ["--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "1", "--omega", "2", "--zeta", "0.1"]
-        lines = ok_run(["trace"] + args + ["--points", "20000", "--digits", "20"]).splitlines()
+        lines = rig_ok_run(["trace"] + args + ["--points", "20000", "--digits", "20"]).splitlines()
         if lines[0] != "phi,n,s,lag,lag_rate,mode":
             raise Fail("trace with --kappa: header %r" % lines[0])
         rows = [l.split(",") for l in lines[1:]]
-        out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+        out = json.loads(rig_ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
         phi = [F(r[0]) for r in rows]
         n = [F(r[1]) for r in rows]
         s = [F(r[2]) for r in rows]
@@ -2305,11 +2336,11 @@ def rig_tests():
         # The largest backward slip is X_c's whole fall over that phase, read off trace's rows (a
         # review found the instant part left out: 0.196 of 0.531).
         args = ["--wave", "square", "--beta", "2", "--gamma", "1.05", "--kappa", "0.6", "--omega", "1", "--zeta", "0.05"]
-        rows = [l.split(",") for l in ok_run(["trace"] + args + ["--digits", "20"]).splitlines()[1:]]
+        rows = [l.split(",") for l in rig_ok_run(["trace"] + args + ["--digits", "20"]).splitlines()[1:]]
         xc = [F(r[3]) + 2 * F(r[0]) - F(r[2]) for r in rows]
         back = [i for i, r in enumerate(rows) if r[5] == "backward"]
         fall = xc[back[0] - 1] - xc[back[-1]]
-        out = json.loads(ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+        out = json.loads(rig_ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
         if rows[back[0] - 1][0] != rows[back[0]][0] or abs(fall - F(out["largest_backward_slip"])) > F("1e-15"):
             raise Fail("square rig: X_c falls %s over the backward phase, largest_backward_slip %s" % (
                 fall, out["largest_backward_slip"]))
@@ -2318,7 +2349,7 @@ def rig_tests():
     def no_stick_sliver_at_zero():
         # Forward slip runs across the period's end (X' = 54 > n'): no stick span of a few ulp at
         # phi = 0 (a review found one of 2.3e-36 at the default digits).
-        rows = ok_run(["trace", "--wave", "sine", "--beta", "100", "--gamma", "0.5", "--kappa", "1", "--omega", "1",
+        rows = rig_ok_run(["trace", "--wave", "sine", "--beta", "100", "--gamma", "0.5", "--kappa", "1", "--omega", "1",
                        "--points", "4"]).splitlines()[1:]
         if rows[0].split(",")[5] != "slip" or F(rows[1].split(",")[0]) < F("1e-3"):
             raise Fail("trace, sine beta = 100 at the resonance: %r" % rows[:3])
@@ -2332,26 +2363,26 @@ def rig_tests():
                     "--radius", "1e-3", "--v0", "1e-3", "--f", "20000", "--A", "2e-6", "--u-mean", "1e-6", "--mu0", "0.3"]
 
     def physical_rig():
-        out = json.loads(ok_run(rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "5", "--format", "json"]))
+        out = json.loads(rig_ok_run(rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "5", "--format", "json"]))
         import math
         k_x = float(out["k_x_N_per_m"])
         for name, want in (("kappa", 1e7 / k_x), ("omega", math.sqrt(k_x / 0.01) / (2 * math.pi * 20000)),
                            ("zeta", 5 / (2 * math.sqrt(0.01 * 1e7)))):
             if abs(float(out[name]) / want - 1) > 1e-14:
                 raise Fail("physical --mass: %s = %s, expected %r" % (name, out[name], want))
-        one = ok_run(["mu", "--wave", "sine", "--beta", out["beta"], "--gamma", out["gamma"], "--kappa", out["kappa"],
+        one = rig_ok_run(["mu", "--wave", "sine", "--beta", out["beta"], "--gamma", out["gamma"], "--kappa", out["kappa"],
                       "--omega", out["omega"], "--zeta", out["zeta"], "--digits", "20"]).splitlines()[0]
         if abs(F(one) / F(out["mu_over_mu0"]) - 1) > F("1e-15"):
             raise Fail("physical --mass: mu_over_mu0 %s against mu with its kappa, omega, zeta: %s" % (out["mu_over_mu0"], one))
         # the body's amplitude in metres: mu's (units mu0 k_z A/k_x) times that unit
-        rig = json.loads(ok_run(["mu", "--wave", "sine", "--beta", out["beta"], "--gamma", out["gamma"], "--kappa", out["kappa"],
+        rig = json.loads(rig_ok_run(["mu", "--wave", "sine", "--beta", out["beta"], "--gamma", out["gamma"], "--kappa", out["kappa"],
                                  "--omega", out["omega"], "--zeta", out["zeta"], "--digits", "20", "--format", "json"]))
         unit = F("0.3") * F(out["k_z_N_per_m"]) * F("2e-6") / F(out["k_x_N_per_m"])
         if abs(F(out["body_amplitude_m"]) / (F(rig["amplitude"]) * unit) - 1) > F("1e-14") or \
                 out["largest_backward_slip_m"] != "0" or rig["largest_backward_slip"] != "0":
             raise Fail("physical --mass: body_amplitude_m %s, largest_backward_slip_m %s; mu's amplitude %s x %s m" % (
                 out["body_amplitude_m"], out["largest_backward_slip_m"], rig["amplitude"], unit))
-        plain = json.loads(ok_run(rig_physical + ["--format", "json"]))
+        plain = json.loads(rig_ok_run(rig_physical + ["--format", "json"]))
         if "kappa" in plain or plain["mu_over_mu0"] == out["mu_over_mu0"]:
             raise Fail("physical without --mass: %r" % plain)
     case("rig: physical --mass --k-system gives kappa, omega, zeta and mu's value", physical_rig)
@@ -2362,9 +2393,9 @@ def rig_tests():
         # same command at 40 digits, rounded here to 53 and 64 bits (a first typed version printed
         # mpfr's value to 17 digits instead: the same double, but not its digits).
         rig = rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "5", "--format", "json"]
-        wide = F(json.loads(ok_run(rig + ["--digits", "40"]))["mu_over_mu0"])
+        wide = F(json.loads(rig_ok_run(rig + ["--digits", "40"]))["mu_over_mu0"])
         for kind, bits, digits in (("double", 53, 17), ("long-double", 64, 21)):
-            got = json.loads(ok_run(rig + ["--type", kind]))["mu_over_mu0"]
+            got = json.loads(rig_ok_run(rig + ["--type", kind]))["mu_over_mu0"]
             ulp = Fraction(2) ** (math.floor(math.log2(wide)) + 1 - bits)
             nearest = round(wide / ulp) * ulp
             with decimal.localcontext() as c:
@@ -2384,7 +2415,7 @@ def rig_tests():
         mpmath.mp.dps = 40
         args = ["trace", "--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "1", "--omega", "2",
                 "--zeta", "0.1", "--digits", "20"]
-        rows = [l.split(",") for l in ok_run(args).splitlines()[1:]]
+        rows = [l.split(",") for l in rig_ok_run(args).splitlines()[1:]]
         starts = [i for i in range(1, len(rows)) if rows[i][5] != rows[i - 1][5]]
         a = mpmath.asin(mpmath.mpf("0.3")) / (2 * mpmath.pi)
         flights = [mpmath.mpf(rows[i][0]) for i in starts if rows[i][5] == "flight"]

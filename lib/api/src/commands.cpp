@@ -577,6 +577,8 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     char floquet[32];
     std::snprintf(floquet, sizeof floquet, "%.6g", report.floquet);
     field("floquet_multiplier", floquet);
+    line("quasi_static_mu_over_mu0", mpfr(report.quasi_static_mu));
+    if (warnings && !report.resonance_note.empty()) warnings->push_back(report.resonance_note);
   } else if (!inplane) {
     line("stick_fraction", stick_fraction);
   }

@@ -48,6 +48,42 @@ unsigned resonance(const RigSpec& rig) {
   return static_cast<unsigned>(k);
 }
 
+// Where the rig's μ̄/μ0 differs from the quasi-static one by more than 10 %, the resonance
+// nearest to a whole multiple k of the drive: the stick oscillator Ω√(1+κ) or the slip
+// oscillator Ω√κ, the one with the smaller |r − k|/k; else "".
+std::string resonance_note(const RigSpec& rig, const mpfr& mu, const mpfr& quasi_static) {
+  using std::abs;
+  const mpfr change = abs(mpfr(mu - quasi_static)), scale = abs(quasi_static);
+  if (!(change > scale / 10)) return "";
+  const mpfr kappa = rig.kappa.to<mpfr>(), omega = rig.omega.to<mpfr>();
+  struct Oscillator {
+    const char* name;
+    const char* formula;
+    mpfr ratio;
+  };
+  const Oscillator oscillators[] = {{"stick", "omega sqrt(1 + kappa)", mpfr(omega * sqrt(mpfr(1 + kappa)))},
+                                    {"slip", "omega sqrt(kappa)", mpfr(omega * sqrt(kappa))}};
+  const Oscillator* nearest = nullptr;
+  long harmonic = 1;
+  mpfr distance;
+  for (const auto& o : oscillators) {
+    const long k = std::max(1L, std::lround(o.ratio.convert_to<double>()));
+    const mpfr d = abs(mpfr(o.ratio - k)) / k;
+    if (!nearest || d < distance) {
+      nearest = &o;
+      harmonic = k;
+      distance = d;
+    }
+  }
+  const std::string percent = format_significant(mpfr(100 * change / (scale > 0 ? scale : mpfr(1))), 2);
+  const std::string which = harmonic == 1 ? "the drive's frequency"
+                                          : "the drive's harmonic " + std::to_string(harmonic);
+  return "the rig's mu_over_mu0 " + format_significant(mu, 6) + " is " + percent + " % away from the quasi-static " +
+         format_significant(quasi_static, 6) + "; nearest resonance: the " + nearest->name + " oscillator, " +
+         nearest->formula + " = " + format_significant(nearest->ratio, 3) + ", near " + std::to_string(harmonic) + " (" +
+         which + ")";
+}
+
 // "wave W, beta = B, gamma = G, kappa = K, omega = O, zeta = Z: ", as typed (computed values by their labels).
 std::string rig_context(const WaveSpec& wave, const Point& p, const RigSpec& rig) {
   return "wave " + wave.name + ", beta = " + p.beta.text() + ", gamma = " + p.gamma.text() + ", kappa = " +
@@ -138,6 +174,8 @@ mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const P
     report->relative_error = {mpfr(b.r.mu == 0 ? d : mpfr(d / abs(b.r.mu))), 2};
     report->floquet = a.r.floquet;
     report->working_digits = b.digits;
+    report->quasi_static_mu = evaluate(wave, Quantity::mu, {p}, precision).front();
+    report->resonance_note = resonance_note(rig, b.r.mu, mpfr(report->quasi_static_mu));
   }
   return b.r.mu;
 }

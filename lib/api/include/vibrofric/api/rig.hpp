@@ -37,6 +37,12 @@ struct RigReport {
   Significant relative_error;         // estimate: the two precisions apart (2 digits)
   double floquet = 0;                 // largest modulus of the one-period map's multipliers
   int working_digits = 0;             // the higher of the two precisions
+  // The paper's quasi-static μ̄/μ0 at the same point (evaluate()'s text), and, where the rig's
+  // value differs from it by more than 10 %, a sentence naming the rig's nearest resonance: the
+  // stick oscillator Ω√(1+κ) (body on both springs) or the slip oscillator Ω√κ (on k_s alone)
+  // nearest a whole multiple of the drive's frequency. Empty otherwise.
+  std::string quasi_static_mu;
+  std::string resonance_note;
 };
 
 // κ, Ω, ζ checked (finite decimals, κ > 0, Ω > 0, ζ ≥ 0): InputError quoting the text otherwise.
