@@ -47,7 +47,7 @@ py::dict physical_dict(const WaveSpec& wave, const PhysicalRequest& request, con
 }  // namespace
 
 void bind_physical(py::module_& m) {
-  static constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
+  static constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, u_x=None, u_y=None, phase=None, in_plane_wave=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
 
 The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
 (mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given

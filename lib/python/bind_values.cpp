@@ -206,7 +206,7 @@ Flat punch only (Psi does not exist for curved profiles).
                  {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()},
                  {"quasi_static_mu_over_mu0", r.quasi_static_mu}})
           d[py::str(name)] = convert(value);
-        if (!r.resonance_note.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, r.resonance_note.c_str(), 1) != 0)
+        if (!r.resonance_note.empty() && PyErr_WarnEx(PyExc_UserWarning, r.resonance_note.c_str(), 1) != 0)
           throw py::error_already_set();
         return d;
       },
@@ -221,7 +221,7 @@ slip_fraction slipping backward), amplitude (half the peak-to-peak of X - beta p
 largest_backward_slip (both in units of mu0 k_z A/k_x), floquet_multiplier (0: below what
 difference quotients resolve), relative_error_estimate (the two precisions apart) and
 quasi_static_mu_over_mu0 (the paper's value at the same point; where the two differ by more than
-10 %, a RuntimeWarning names the rig's nearest resonance). Values as
+10 %, a UserWarning names the rig's nearest resonance). Values as
 mu(): float for type None/'double', or decimal strings with strings=True; the fractions carry
 the digits the two precisions agree on. ValueError for bad input, vibrofric.SolverError where no
 periodic state is found.

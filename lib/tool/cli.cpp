@@ -178,7 +178,7 @@ const std::vector<CommandSpec>& commands() {
         {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", "", nullptr},
         {"flat-radius", "M", "wearflat: radius of the wear flat", "", nullptr},
         {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)", format_of_point}},
-       {&kWaveFlags, &kPrecisionFlags, &kSolverFlags},
+       {&kWaveFlags, &kPhysicalPrecisionFlags, &kSolverFlags},
        std::string(kPhysicalAbout) + kWaves,
        run_physical},
       {"trace", "trace --wave W --beta B --gamma G: CSV phi,n,s over one period (Fig. 2)",
@@ -283,7 +283,7 @@ std::optional<int> run_command(int argc, char** argv) {
   };
   for (const auto& f : spec->flags) add(f, "Options");
   for (const auto* g : spec->groups)
-    for (const auto& f : *g) add(f, g == &kWaveFlags ? "Wave" : g == &kPrecisionFlags ? "Precision" : "Solver controls");
+    for (const auto& f : *g) add(f, g == &kWaveFlags ? "Wave" : g == &kPrecisionFlags || g == &kPhysicalPrecisionFlags ? "Precision" : "Solver controls");
   if (!spec->footer.empty()) sub->footer(spec->footer);
   for (int i = 2; i < argc; ++i) {
     const std::string tok = argv[i];

@@ -111,6 +111,7 @@ void read_physical(Flags& f, const std::string& name, const std::string& text);
 extern const std::vector<std::string> kSweptPhysical;
 extern const std::vector<FlagSpec> kWaveFlags;
 extern const std::vector<FlagSpec> kPrecisionFlags;
+extern const std::vector<FlagSpec> kPhysicalPrecisionFlags;
 extern const std::vector<FlagSpec> kSolverFlags;
 extern const std::vector<FlagSpec> kRigFlags;
 extern const std::vector<FlagSpec> kInPlaneFlags;

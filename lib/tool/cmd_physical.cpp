@@ -1,5 +1,9 @@
 // physical: from physical inputs in SI units (Eqs. 1, 5, 14), one point or a sweep of one input.
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <map>
 #include <set>
@@ -28,7 +32,10 @@ PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, Inpu
   }
   request.constant_normal = f.wave && *f.wave == "constant";
   std::vector<std::string> warnings;
-  PhysicalOutputs out = physical_point(wave, request, precision_of(f), batch_options(f), &warnings);
+  // A guaranteed double unless --digits or --type says otherwise.
+  Precision precision = precision_of(f);
+  if (!f.type && !f.digits) precision.type = NumberType::float64;
+  PhysicalOutputs out = physical_point(wave, request, precision, batch_options(f), &warnings);
   // Each warning once (a sweep repeats them), on stderr after the output, as the diagnostics.
   static std::set<std::string> said;
   for (const auto& w : warnings)
@@ -88,6 +95,20 @@ int run_physical(const Flags& f) {
     return physical_record(f, values, wave);
   };
   const PhysicalOutputs first = at(0), last = at(range.size() - 1);
+  // A progress line on a terminal, as sweep's: at most ten redraws a second.
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  auto next_draw = start;
+  const auto progress = [&](std::size_t done) {
+    const auto now = clock::now();
+    if (!isatty(2) || (done < range.size() && now < next_draw)) return;
+    next_draw = now + std::chrono::milliseconds(100);
+    const double seconds = std::chrono::duration<double>(now - start).count();
+    std::fprintf(stderr, "\rphysical: %zu/%zu (%.1f %%), %.0f s left   %s", done, range.size(),
+                 100.0 * static_cast<double>(done) / static_cast<double>(range.size()),
+                 seconds * static_cast<double>(range.size() - done) / static_cast<double>(done),
+                 done == range.size() ? "\n" : "");
+  };
   for (std::size_t i = 0; i < range.size(); ++i) {
     const PhysicalOutputs rec = i == 0 ? first : i + 1 == range.size() ? last : at(i);
     std::vector<std::string> names = names_of(rec), values = values_of(rec);
@@ -100,6 +121,7 @@ int run_physical(const Flags& f) {
       std::cout << (i ? ",\n " : "[\n ") << json_record(names, values).dump();
     }
     std::cout.flush();
+    progress(i + 1);
   }
   if (format == Format::json) std::cout << "\n]\n";
   return 0;

@@ -126,6 +126,14 @@ const std::vector<FlagSpec> kPrecisionFlags{
                         "exceeds the type's epsilon (=true/false/yes/no/1/0; default off: recompute with mpfr)", "",
      [](Flags& f, const std::string& t) { f.no_escalate = switch_value(t, "no-escalate"); }},
 };
+// physical's: a guaranteed double by default (the correctly rounded double, as mu --type double),
+// mpfr where --digits asks for it.
+const std::vector<FlagSpec> kPhysicalPrecisionFlags = [] {
+  std::vector<FlagSpec> flags = kPrecisionFlags;
+  flags[0].fallback = "none: a guaranteed double";
+  flags[1].fallback = "double (mpfr with --digits)";
+  return flags;
+}();
 const std::vector<FlagSpec> kSolverFlags{
     {"area", "M", "auto | exact | quadrature: areas from antiderivatives or tanh-sinh, every event a breakpoint",
      "auto", [](Flags& f, const std::string& t) {

@@ -131,9 +131,9 @@ def test_rig_parameters_broadcast_like_beta_and_gamma():
 
 def test_quasi_static_value_and_resonance_warning():
     # The paper's value at the same point beside the rig's; near the stick resonance
-    # (omega sqrt(1 + kappa) = 1.086) a RuntimeWarning names it; a stiff light rig warns nothing.
+    # (omega sqrt(1 + kappa) = 1.086) a UserWarning names it; a stiff light rig warns nothing.
     quasi = vibrofric.mu("sine", 0.5, 0.2, strings=True)
-    with pytest.warns(RuntimeWarning, match=r"stick oscillator, omega sqrt\(1 \+ kappa\) = 1.09, near 1"):
+    with pytest.warns(UserWarning, match=r"stick oscillator, omega sqrt\(1 \+ kappa\) = 1.09, near 1"):
         r = vibrofric.rig("sine", 0.5, 0.2, kappa=0.18, omega=1.0, strings=True)
     assert r["quasi_static_mu_over_mu0"] == quasi
     import warnings

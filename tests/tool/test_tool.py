@@ -1215,8 +1215,11 @@ def physical_tests():
                  v0="0.0001", f="100", A="0.000001", umean="0.0000005", mu0="0.5")
 
     def steel_fn():
-        a = physical_args()
+        a = physical_args(**{"--digits": "50"})
         got = parse(ok_run(a))
+        # Without --digits or --type: the guaranteed double, the output of --type double.
+        if ok_run(physical_args()) != ok_run(physical_args(**{"--type": "double"})):
+            raise Fail("physical without --digits: not the --type double output")
         exact, mu0 = groups(**steel)
         check_groups(a, got, exact, 50, peak=(steel["A"], steel["radius"], 1))
         if not (0 < F(got["mu_over_mu0"]) < 1):
@@ -1333,7 +1336,7 @@ def physical_tests():
 
     # 3. non-jumping (gamma 2) and above beta_c: mu = mu0 exactly
     def fast_fn():
-        a = physical_args(**{"--v0": "0.01", "--u-mean": "0.000002"})
+        a = physical_args(**{"--v0": "0.01", "--u-mean": "0.000002", "--digits": "50"})
         got = parse(ok_run(a))
         ex = dict(steel, v0="0.01", umean="0.000002")
         exact, mu0 = groups(**ex)
@@ -1550,7 +1553,8 @@ HELP_FLAGS = {
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format",
                   "--u-x", "--u-y", "--phase", "--in-plane-wave"]
-                 + WAVE + PRECISION + SOLVER, {"--shape": "flat", "--phase": "0", "--in-plane-wave": "sine"}),
+                 + WAVE + PRECISION + SOLVER, {"--shape": "flat", "--phase": "0", "--in-plane-wave": "sine",
+                                                   "--type": "double (mpfr with --digits)"}),
     "trace": (["--beta", "--gamma", "--points", "--digits", "--profile"] + WAVE + RIG + INPLANE,
               {"--points": "1000", "--digits": "17", "--profile": "flat", "--phase": "0", "--in-plane-wave": "sine"}),
     "fit": (["--harmonics", "--output"] + WAVE, {}),
