@@ -374,6 +374,21 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     }
     return kind == "flat" ? mpfr(g.k_z * A * normal) : mpfr(2 * g.E_star * A * length * normal);
   };
+  // Every input the load depends on, for the caches of γ (by load) and of the load (by γ).
+  std::string key = std::to_string(static_cast<int>(prec.type)) + " " + std::to_string(digits) + " " +
+                    std::to_string(static_cast<int>(options.solver.area)) + " " +
+                    std::to_string(options.solver.max_root_iterations) + " " +
+                    std::to_string(options.solver.max_quadrature_levels) + " " +
+                    format_significant(mpfr(options.solver.quadrature_tolerance), 17) + "\n" + wave_fingerprint(wave) +
+                    "\nprofile " + options.profile.name + " " +
+                    (options.profile.height_unit.given() ? options.profile.height_unit.text() : std::string("1"));
+  for (std::size_t i = 0; i < options.profile.r.size(); ++i)
+    key += "\n" + options.profile.r[i].text() + " " + options.profile.f[i].text();
+  for (const Input* in : {&r.E1, &r.nu1, &r.E2, &r.nu2, &r.G1, &r.G2, &r.A, &r.F_N})
+    key += "\n" + (in->given() ? in->text() : std::string("-"));
+  key += "\n" + (r.shape.given() ? *r.shape.text : std::string("-"));
+  for (const Input* in : {&r.radius, &r.R, &r.half_angle, &r.flat_radius})
+    key += "\n" + (in->given() ? in->text() : std::string("-"));
   if (by_load) {
     const mpfr F_N = positive(r.F_N);
     // ⟨F_N⟩ = 2 E* A L ∫N dx does not depend on β (N_w does not), so γ depends on neither v0 nor
@@ -389,20 +404,6 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
       free_of_beta = false;
       return load(gam, g.beta, nullptr);
     };
-    std::string key = std::to_string(static_cast<int>(prec.type)) + " " + std::to_string(digits) + " " +
-                      std::to_string(static_cast<int>(options.solver.area)) + " " +
-                      std::to_string(options.solver.max_root_iterations) + " " +
-                      std::to_string(options.solver.max_quadrature_levels) + " " +
-                      format_significant(mpfr(options.solver.quadrature_tolerance), 17) + "\n" + wave_fingerprint(wave) +
-                      "\nprofile " + options.profile.name + " " +
-                      (options.profile.height_unit.given() ? options.profile.height_unit.text() : std::string("1"));
-    for (std::size_t i = 0; i < options.profile.r.size(); ++i)
-      key += "\n" + options.profile.r[i].text() + " " + options.profile.f[i].text();
-    for (const Input* in : {&r.E1, &r.nu1, &r.E2, &r.nu2, &r.G1, &r.G2, &r.A, &r.F_N})
-      key += "\n" + (in->given() ? in->text() : std::string("-"));
-    key += "\n" + (r.shape.given() ? *r.shape.text : std::string("-"));
-    for (const Input* in : {&r.radius, &r.R, &r.half_angle, &r.flat_radius})
-      key += "\n" + (in->given() ? in->text() : std::string("-"));
     static thread_local std::map<std::string, mpfr> solved;  // γ of the load, by every input it depends on
     if (const auto it = solved.find(key); it != solved.end()) {
       g.gamma = it->second;
@@ -439,8 +440,29 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
                           : inplane ? inplane_evaluated(wave, point, *drive, fine, options.solver, options.profile, inplane_report)
                                     : evaluate_one(wave, Quantity::mu, point, fine, options);
   const mpfr mu = ratio.value * in.mu0;
-  mpfr edge;
-  const mpfr force = load(g.gamma, g.beta, &edge);
+  // ⟨F_N⟩ and the contact radius do not depend on β (N_w does not): as for γ above, they are
+  // integrated at β_c of the central spring, where nothing sticks, so that a sweep of v0, f or
+  // mu0 at one γ integrates the row's normal force once (per thread), each row as its single
+  // point. With an upward jump of n (β_c = ∞) the row's β.
+  mpfr edge, force;
+  {
+    const mpfr bc = make_contact(*w, g.gamma, options.solver).beta_c();
+    using std::isfinite;
+    if (kind != "flat" && isfinite(bc) && bc > 0) {
+      static thread_local std::map<std::string, std::pair<mpfr, mpfr>> loads;
+      const std::string at = key + "\ngamma " + format_significant(g.gamma, digits + 40);
+      if (const auto it = loads.find(at); it != loads.end()) {
+        force = it->second.first;
+        edge = it->second.second;
+      } else {
+        force = load(g.gamma, bc, &edge);
+        if (loads.size() >= 64) loads.clear();
+        loads.emplace(at, std::make_pair(force, edge));
+      }
+    } else {
+      force = load(g.gamma, g.beta, &edge);
+    }
+  }
   // β_c (Eq. 6, of the clipped n; a curved contact's is its central spring's) and, for the punch,
   // the fractions of the period in contact and in stick.
   mpfr beta_c, contact_fraction, stick_fraction;
