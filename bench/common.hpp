@@ -107,5 +107,6 @@ void register_accuracy();
 void register_curved();
 void register_certify();
 void register_rig();
+void register_inplane();
 
 }  // namespace vibrofric::bench

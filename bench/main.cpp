@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   register_curved();
   register_certify();
   register_rig();
+  register_inplane();
 
   benchmark::Initialize(&rest_argc, rest.data());
   if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 2;
