@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/commands.hpp"
 #include "vibrofric/api/rig.hpp"
 
@@ -43,10 +44,20 @@ py::tuple rig_trace_arrays(const std::vector<RigTraceRow>& rows, int digits, boo
                         column_of(rows, &RigTraceRow::lag_rate, digits, strings), modes);
 }
 
+py::tuple inplane_trace_arrays(const std::vector<InPlaneTraceRow>& rows, int digits, bool strings) {
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  py::array modes = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
+  for (py::ssize_t i = 0; i < n; ++i) modes[py::int_(i)] = py::str(inplane_mode_name(rows[static_cast<std::size_t>(i)].mode));
+  return py::make_tuple(column_of(rows, &InPlaneTraceRow::phi, digits, strings),
+                        column_of(rows, &InPlaneTraceRow::n, digits, strings),
+                        column_of(rows, &InPlaneTraceRow::s_x, digits, strings),
+                        column_of(rows, &InPlaneTraceRow::s_y, digits, strings), modes);
+}
+
 }  // namespace
 
 void bind_trace(py::module_& m) {
-  static constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat') -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode)
+  static constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma=None, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat', longitudinal=None, transverse=None, phase=None, in_plane_wave=None) -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode), or in plane (phi, n, s_x, s_y, mode)
 
 The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
 in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
@@ -63,19 +74,61 @@ Y = X - beta phi behind the drive and Y' in units of mu0 k_z A/k_x, and the mode
 With a curved profile (as mu's profile=, the tool's `trace --profile P`): n and s summed over the
 half-row of MDR springs, in the units of the row (mean(s)/mean(n) over the period is mu's value),
 at the equally spaced phases and the central spring's contact boundaries.
+
+With longitudinal or transverse (phase and in_plane_wave optional; wave='constant' with
+gamma=None for a constant normal force), the in-plane periodic state (model.md, "In-plane and
+combined oscillation"), as `trace --longitudinal A --transverse B`: five arrays (phi, n, s_x, s_y,
+mode), the tangential force along and across the sliding direction, mode 'stick', 'slip',
+'backward' or 'flight'; flat punch.
 )doc";
   m.def(
       "trace",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& points,
          const py::object& digits, bool strings, const py::object& kappa, const py::object& omega,
-         const py::object& zeta, const py::object& profile) -> py::tuple {
-        const WaveSpec w = to_wave(wave);
+         const py::object& zeta, const py::object& profile, const py::object& longitudinal,
+         const py::object& transverse, const py::object& phase, const py::object& in_plane_wave) -> py::tuple {
         TraceRequest request;
         request.profile = to_profile(profile);
         request.beta.value = scalar_value(beta, "beta");
-        request.gamma.value = scalar_value(gamma, "gamma");
         if (const auto n = optional_int(points, "points")) request.points = *n;
         if (const auto d = optional_int(digits, "digits")) request.digits = *d;
+        const bool constant = py::isinstance<py::str>(wave) && wave.cast<std::string>() == "constant";
+        const bool amplitude = !longitudinal.is_none() || !transverse.is_none();
+        if (constant || amplitude || !phase.is_none() || !in_plane_wave.is_none()) {
+          if (!amplitude)
+            throw InputError(std::string(constant ? "wave = 'constant'" : phase.is_none() ? "in_plane_wave" : "phase") +
+                             " without longitudinal or transverse: give the in-plane amplitude");
+          if (!kappa.is_none() || !omega.is_none() || !zeta.is_none())
+            throw InputError("kappa/omega with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
+          if (request.profile.kind != ProfileKind::flat)
+            throw InputError("trace with profile = " + py_repr(profile) +
+                             " and an in-plane oscillation: the rows are the flat punch's only (mu takes the curved row)");
+          InPlaneSpec spec;
+          spec.constant_normal = constant;
+          spec.longitudinal = longitudinal.is_none() ? InputValue(*Decimal::read("0")) : scalar_value(longitudinal, "longitudinal");
+          if (!transverse.is_none()) spec.transverse = scalar_value(transverse, "transverse");
+          if (!phase.is_none()) spec.phase = scalar_value(phase, "phase");
+          if (!in_plane_wave.is_none()) spec.wave = to_wave(in_plane_wave);
+          check_inplane(spec);
+          WaveSpec w;
+          if (constant) {
+            if (!gamma.is_none())
+              throw InputError("gamma = " + py_repr(gamma) + " with wave 'constant': the normal force is constant (give gamma=None)");
+            w.name = "constant";
+          } else {
+            w = to_wave(wave);
+            request.gamma.value = scalar_value(gamma, "gamma");
+          }
+          std::vector<InPlaneTraceRow> rows;
+          {
+            py::gil_scoped_release release;
+            rows = inplane_trace_rows(w, request, spec);
+          }
+          return inplane_trace_arrays(rows, request.digits, strings);
+        }
+        const WaveSpec w = to_wave(wave);
+        if (gamma.is_none()) throw InputError("missing gamma: the mean indentation (Eq. 14)");
+        request.gamma.value = scalar_value(gamma, "gamma");
         if (!kappa.is_none() || !omega.is_none() || !zeta.is_none()) {
           if (kappa.is_none() || omega.is_none())
             throw InputError(std::string("missing ") + (kappa.is_none() ? "kappa" : "omega") +
@@ -98,8 +151,10 @@ at the equally spaced phases and the central spring's contact boundaries.
         }
         return trace_arrays(rows, request.digits, strings);
       },
-      "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false,
-      "kappa"_a = py::none(), "omega"_a = py::none(), "zeta"_a = py::none(), "profile"_a = "flat", trace_doc);
+      "wave"_a, "beta"_a, "gamma"_a = py::none(), py::kw_only(), "points"_a = 1000, "digits"_a = 17, "strings"_a = false,
+      "kappa"_a = py::none(), "omega"_a = py::none(), "zeta"_a = py::none(), "profile"_a = "flat",
+      "longitudinal"_a = py::none(), "transverse"_a = py::none(), "phase"_a = py::none(), "in_plane_wave"_a = py::none(),
+      trace_doc);
 }
 
 }  // namespace vibrofric::python

@@ -74,3 +74,39 @@ def test_transverse_refusals():
         vibrofric.mu("sine", 1, 0.5, transverse=-1)
     with pytest.raises(ValueError, match="without longitudinal or transverse"):
         vibrofric.mu("sine", 1, 0.5, phase=0.25)
+
+
+@pytest.mark.usefixtures("tool_path")
+@pytest.mark.parametrize("wave, beta, gamma, kw, flags", [
+    ("sine", "0.3", "0.2", dict(longitudinal="1", phase="0.25"), ["--longitudinal", "1", "--phase", "0.25"]),
+    ("constant", "0.5", None, dict(transverse="1"), ["--transverse", "1"]),
+    ("triangle", "1", "-0.2", dict(longitudinal="0.4", transverse="0.3", in_plane_wave="square"),
+     ["--longitudinal", "0.4", "--transverse", "0.3", "--in-plane-wave", "square"]),
+])
+def test_trace_is_the_tools(wave, beta, gamma, kw, flags):
+    # trace(..., longitudinal=, transverse=) gives the tool's `trace` rows (phi, n, s_x, s_y, mode),
+    # string for string; the force stays in the disc |s| <= n, on its rim while slipping.
+    args = ["trace", "--wave", wave, "--beta", beta] + ([] if gamma is None else ["--gamma", gamma]) + flags + \
+        ["--points", "16", "--digits", "12"]
+    lines = subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()
+    assert lines[0] == "phi,n,s_x,s_y,mode"
+    columns = vibrofric.trace(wave, beta, gamma, points=16, digits=12, strings=True, **kw)
+    assert [list(c) for c in columns] == [list(c) for c in zip(*(line.split(",") for line in lines[1:]))]
+    phi, n, sx, sy, mode = vibrofric.trace(wave, float(beta), None if gamma is None else float(gamma), points=16, **kw)
+    assert phi.dtype == np.float64 and mode.dtype == object
+    assert np.all(np.hypot(sx, sy) <= n * (1 + 1e-12) + 1e-15)
+    slipping = np.array([m in ("slip", "backward") for m in mode])
+    assert np.allclose(np.hypot(sx, sy)[slipping], n[slipping], rtol=1e-12, atol=1e-15)
+
+
+def test_trace_refusals():
+    with pytest.raises(ValueError, match="gamma=None"):
+        vibrofric.trace("constant", 0.5, 0.2, transverse=1)
+    with pytest.raises(ValueError, match="kappa/omega with an in-plane"):
+        vibrofric.trace("sine", 0.5, 0.2, longitudinal=1, kappa=1, omega=2)
+    with pytest.raises(ValueError, match="flat punch's only"):
+        vibrofric.trace("sine", 0.5, 0.2, longitudinal=1, profile="sphere")
+    with pytest.raises(ValueError, match="phase without"):
+        vibrofric.trace("sine", 0.5, 0.2, phase=0.25)
+    with pytest.raises(ValueError, match="missing gamma"):
+        vibrofric.trace("sine", 0.5)
