@@ -47,7 +47,7 @@ py::dict physical_dict(const WaveSpec& wave, const PhysicalRequest& request, con
 }  // namespace
 
 void bind_physical(py::module_& m) {
-  static constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, u_x=None, u_y=None, phase=None, in_plane_wave=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False) -> dict
+  static constexpr const char* physical_doc = R"doc(physical(wave, *, E1, nu1, E2, nu2, v0, f, A=None, mu0, u_mean=None, F_N=None, G1=None, G2=None, shape="flat", radius=None, R=None, half_angle=None, flat_radius=None, unit=None, mass=None, k_system=None, damping=None, u_x=None, u_y=None, phase=None, in_plane_wave=None, digits=None, type=None, max_iterations=None, escalate=True, strings=False, nan_on_error=False, trace=False, points=None) -> dict
 
 The tool's `physical` from SI inputs: effective moduli and stiffnesses (Eq. 1), beta = G* v0 /
 (mu0 E* A f) (Eq. 5), gamma = u_mean/A (Eq. 14) -- or gamma solving <F_N>(gamma) = F_N for a given
@@ -84,6 +84,11 @@ is an array of the broadcast shape (float64, longdouble, or object arrays of mpf
 element the scalar call's value. An element that fails raises its error prefixed with its index
 ('at index (2,): ...'), or with nan_on_error=True (scipy's convention) is NaN (None in object
 arrays) while the others answer.
+
+trace=True (the tool's physical --trace, points as its --points, default 1000): one period of the
+point in SI instead, a dict of arrays t_s, F_N_N, F_x_N and u_m (the tip's indentation, negative
+off the surface), each to digits significant digits (17 by default): float64, or strings with
+strings=True. Quasi-static contacts under the normal oscillation (no rig, no in-plane drive).
 )doc";
   m.def(
       "physical",
@@ -94,7 +99,8 @@ arrays) while the others answer.
          const py::object& flat_radius, const py::object& unit, const py::object& mass, const py::object& k_system,
          const py::object& damping, const py::object& u_x, const py::object& u_y, const py::object& phase,
          const py::object& in_plane_wave, const py::object& digits, const py::object& type,
-         const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error) {
+         const py::object& max_iterations, bool escalate, bool strings, bool nan_on_error, bool trace,
+         const py::object& points) {
         // 'constant': no normal oscillation, the load F_N (physical_constant); else a wave to read.
         const bool constant = py::isinstance<py::str>(wave) && wave.cast<std::string>() == "constant";
         WaveSpec w;
@@ -139,6 +145,33 @@ arrays) while the others answer.
             arrays.append(*value);
             broadcast = broadcast || (!py::isinstance<py::str>(*value) && np.attr("ndim")(*value).cast<int>() > 0);
           }
+        if (trace) {
+          // One period in SI (the tool's physical --trace): t_s, F_N_N, F_x_N, u_m.
+          if (broadcast) throw InputError("trace=True with array inputs: expected one point");
+          if (!type.is_none()) throw InputError("trace=True gives digits significant digits (17 by default): expected no type");
+          std::map<std::string, py::object> values;
+          for (std::size_t k = 0; k < names.size(); ++k) values[names[k]] = arrays[k];
+          const int d = optional_int(digits, "digits").value_or(17);
+          std::vector<PhysicalTraceRow> rows;
+          {
+            const PhysicalRequest request = request_of(values);
+            py::gil_scoped_release release;
+            rows = physical_trace(w, request, optional_int(points, "points").value_or(1000), d, options);
+          }
+          py::dict out;
+          for (const auto& [name, field] : {std::pair<const char*, mpfr PhysicalTraceRow::*>{"t_s", &PhysicalTraceRow::t_s},
+                                            {"F_N_N", &PhysicalTraceRow::F_N_N}, {"F_x_N", &PhysicalTraceRow::F_x_N},
+                                            {"u_m", &PhysicalTraceRow::u_m}}) {
+            py::list column;
+            for (const auto& r : rows) {
+              const std::string text = format_significant(r.*field, d);
+              column.append(strings ? py::object(py::str(text)) : py::object(py::float_(std::strtod(text.c_str(), nullptr))));
+            }
+            out[name] = np.attr("array")(column, "dtype"_a = strings ? "object" : "float64");
+          }
+          return py::object(out);
+        }
+        if (!points.is_none()) throw InputError("points without trace=True: expected trace=True");
         if (!broadcast) {
           std::map<std::string, py::object> values;
           for (std::size_t k = 0; k < names.size(); ++k) values[names[k]] = arrays[k];
@@ -189,7 +222,7 @@ arrays) while the others answer.
       "unit"_a = py::none(), "mass"_a = py::none(), "k_system"_a = py::none(), "damping"_a = py::none(),
       "u_x"_a = py::none(), "u_y"_a = py::none(), "phase"_a = py::none(), "in_plane_wave"_a = py::none(),
       "digits"_a = py::none(), "type"_a = py::none(), "max_iterations"_a = py::none(), "escalate"_a = true,
-      "strings"_a = false, "nan_on_error"_a = false, physical_doc);
+      "strings"_a = false, "nan_on_error"_a = false, "trace"_a = false, "points"_a = py::none(), physical_doc);
 }
 
 }  // namespace vibrofric::python

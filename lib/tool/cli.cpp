@@ -177,7 +177,12 @@ const std::vector<CommandSpec>& commands() {
         {"R", "M", "sphere, wearflat: radius of curvature", "", nullptr},
         {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", "", nullptr},
         {"flat-radius", "M", "wearflat: radius of the wear flat", "", nullptr},
-        {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)", format_of_point}},
+        {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)", format_of_point},
+        {"trace", "", "one period in SI instead: CSV t_s,F_N_N,F_x_N,u_m (u_m: the tip's indentation, < 0 off the surface)", "",
+         [](Flags& f, const std::string& t) { f.trace = switch_value(t, "trace"); }},
+        {"points", "N", "with --trace: N + 1 equally spaced times (0 and 1/f both), N from 2 to 1000000, plus every stick "
+                        "phase's ends and the contact boundaries", "1000",
+         [](Flags& f, const std::string& t) { f.points = integer(t, "--points", min_trace_points, max_trace_points); }}},
        {&kWaveFlags, &kPhysicalPrecisionFlags, &kSolverFlags},
        std::string(kPhysicalAbout) + kWaves,
        run_physical},

@@ -18,7 +18,7 @@ namespace {
 
 // `physical`'s inputs (`values`: one per number input, the swept one's value of this row), each named
 // by its flag (the input u_mean is --u-mean), and its controls.
-PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, InputValue>& values, const WaveSpec& wave) {
+PhysicalRequest request_of(const Flags& f, const std::map<std::string, InputValue>& values) {
   PhysicalRequest request;
   for (const auto& input : request.inputs()) {
     std::string flag = input.member;
@@ -31,6 +31,11 @@ PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, Inpu
     }
   }
   request.constant_normal = f.wave && *f.wave == "constant";
+  return request;
+}
+
+PhysicalOutputs physical_record(const Flags& f, const std::map<std::string, InputValue>& values, const WaveSpec& wave) {
+  const PhysicalRequest request = request_of(f, values);
   std::vector<std::string> warnings;
   // A guaranteed double unless --digits or --type says otherwise.
   Precision precision = precision_of(f);
@@ -73,6 +78,21 @@ int run_physical(const Flags& f) {
         throw InputError("--" + swept + " and --" + name + " are both ranges: expected one swept input at a time");
       swept = name;
     }
+  if (f.trace) {
+    // One period in SI: t_s,F_N_N,F_x_N,u_m, each to --digits (17 by default).
+    if (!swept.empty()) throw InputError("--trace with a range of --" + swept + ": expected one point");
+    if (f.format && *f.format != Format::csv) throw InputError("--trace writes csv: expected no --format or --format csv");
+    if (f.type) throw InputError("--trace prints --digits significant digits (17 by default): expected no --type");
+    const auto rows = physical_trace(wave, request_of(f, values), f.points.value_or(1000), f.digits.value_or(17),
+                                     batch_options(f));
+    const int d = f.digits.value_or(17);
+    std::cout << "t_s,F_N_N,F_x_N,u_m\n";
+    for (const auto& r : rows)
+      std::cout << format_significant(r.t_s, d) << ',' << format_significant(r.F_N_N, d) << ','
+                << format_significant(r.F_x_N, d) << ',' << format_significant(r.u_m, d) << '\n';
+    return 0;
+  }
+  if (f.points) throw InputError("--points goes with --trace: expected --trace");
   if (swept.empty()) {
     const Format format = f.format.value_or(Format::text);
     const PhysicalOutputs rec = physical_record(f, values, wave);

@@ -317,3 +317,24 @@ def test_in_plane_refusals():
     with pytest.raises(ValueError, match="constant"):
         vibrofric.physical("constant", E1=210e9, nu1=0.3, E2=70e9, nu2=0.33, v0=2e-2, f=20000, mu0=0.3,
                            radius=1e-3, F_N=10, A=1e-6, u_x=1e-7)
+
+
+@needs_tool
+def test_trace_is_the_tools():
+    # physical(..., trace=True) gives the tool's physical --trace rows, string for string; floats
+    # are those strings read; array inputs and rigs are refused.
+    kw = dict(E1="210e9", nu1="0.3", E2="70e9", nu2="0.33", F_N="10", v0="2e-3", f="20000", A="1.5e-6", mu0="0.3",
+              shape="sphere", R="5e-3")
+    args = ["physical", "--wave", "sine", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33", "--F-N", "10",
+            "--v0", "2e-3", "--f", "20000", "--A", "1.5e-6", "--mu0", "0.3", "--shape", "sphere", "--R", "5e-3",
+            "--trace", "--points", "12", "--digits", "12"]
+    lines = subprocess.run([TOOL, *args], check=True, stdout=subprocess.PIPE, text=True).stdout.splitlines()
+    got = vibrofric.physical("sine", trace=True, points=12, digits=12, strings=True, **kw)
+    assert list(got) == lines[0].split(",")
+    assert [list(c) for c in got.values()] == [list(c) for c in zip(*(line.split(",") for line in lines[1:]))]
+    floats = vibrofric.physical("sine", trace=True, points=12, digits=12, **kw)
+    assert all(list(floats[k]) == [float(x) for x in got[k]] for k in got)
+    with pytest.raises(ValueError, match="one point"):
+        vibrofric.physical("sine", trace=True, **dict(kw, v0=[1e-3, 2e-3]))
+    with pytest.raises(ValueError, match="quasi-static"):
+        vibrofric.physical("sine", trace=True, mass=0.01, k_system=1e7, **dict(kw, shape="flat", R=None, radius=1e-3))

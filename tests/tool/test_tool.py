@@ -1552,7 +1552,7 @@ HELP_FLAGS = {
               + INPLANE, {"--quantity": "mu", "--threads": "0", "--format": "csv", "--phase": "0", "--in-plane-wave": "sine"}),
     "physical": (["--E1", "--nu1", "--E2", "--nu2", "--G1", "--G2", "--v0", "--f", "--A", "--u-mean", "--F-N",
                   "--mu0", "--shape", "--radius", "--R", "--half-angle", "--flat-radius", "--unit", "--mass", "--k-system", "--damping", "--format",
-                  "--u-x", "--u-y", "--phase", "--in-plane-wave"]
+                  "--u-x", "--u-y", "--phase", "--in-plane-wave", "--trace", "--points"]
                  + WAVE + PRECISION + SOLVER, {"--shape": "flat", "--phase": "0", "--in-plane-wave": "sine",
                                                    "--type": "double (mpfr with --digits)"}),
     "trace": (["--beta", "--gamma", "--points", "--digits", "--profile"] + WAVE + RIG + INPLANE,
@@ -1667,6 +1667,38 @@ def cli_tests():
         if [d["A"] for d in js] != ["1e-06", "2e-06"]:
             raise Fail("physical --A sweep as json: %r" % js)
     case("physical: one input swept (--v0, --F-N, --A), each row the single-point output", physical_sweep)
+
+    def physical_trace():
+        # One period in SI: every row's forces from its own indentation by the closed forms (the
+        # punch: F = k_z u, k_z = 2 E* a; the ball: Hertz, F = (4/3) E* R^(1/2) u^(3/2)), |F_x| <= mu0 F_N,
+        # t over [0, 1/f], and the trapezoid means of F_N and F_x the printed mean forces.
+        E_star = 1 / ((1 - F("0.09")) / F("210e9") + (1 - F("0.1089")) / F("70e9"))
+        base = ["physical", "--wave", "sine", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33", "--F-N", "10",
+                "--v0", "2e-3", "--f", "20000", "--A", "1.5e-6", "--mu0", "0.3"]
+        for shape, force in ((["--radius", "1e-3"], lambda u: 2 * E_star * F("1e-3") * u),
+                             (["--shape", "sphere", "--R", "5e-3"],
+                              lambda u: Fraction(4, 3) * E_star * Fraction(Decimal("5e-3").sqrt()) * u * Fraction(u ** 0.5))):
+            point = json.loads(ok_run(base + shape + ["--format", "json", "--digits", "20"]))
+            lines = ok_run(base + shape + ["--trace", "--points", "400"]).splitlines()
+            if lines[0] != "t_s,F_N_N,F_x_N,u_m":
+                raise Fail("physical --trace header: %r" % lines[0])
+            rows = [[F(x) for x in line.split(",")] for line in lines[1:]]
+            t = [r[0] for r in rows]
+            if t[0] != 0 or t[-1] != Fraction(1, 20000) or any(b < a for a, b in zip(t, t[1:])):
+                raise Fail("physical --trace %s: t from %s to %s, not over one period ascending" % (shape, t[0], t[-1]))
+            for _, fn, fx, u in rows:
+                want = force(u) if u > 0 else 0
+                if abs(fn - want) > abs(want) * F("1e-15") + F("1e-20") or abs(fx) > F("0.3") * fn * (1 + F("1e-15")):
+                    raise Fail("physical --trace %s: F_N %s, F_x %s at u %s; the closed form gives %s" % (shape, fn, fx, u, want))
+            mean = lambda k: sum((t[i + 1] - t[i]) * (rows[i][k] + rows[i + 1][k]) / 2 for i in range(len(t) - 1)) * 20000
+            for k, name in ((1, "F_N_mean_N"), (2, "F_x_mean_N")):
+                if abs(mean(k) / F(point[name]) - 1) > F("1e-4"):
+                    raise Fail("physical --trace %s: trapezoid mean %s, %s = %s" % (shape, float(mean(k)), name, point[name]))
+    case("physical --trace: forces in newtons over one period, from the indentation by Eq. 1 and Hertz", physical_trace)
+    bad("physical --trace with a range", physical_args(**{"--v0": "1e-4:1e-3:3"}) + ["--trace"], ["--v0"], ["one point"])
+    bad("physical --trace with a rig", physical_args(**{"--mass": "0.01", "--k-system": "1e7"}) + ["--trace"], ["--mass"],
+        ["quasi-static"])
+    bad("physical --points without --trace", physical_args() + ["--points", "10"], ["--points"], ["--trace"])
 
     def physical_plausibility():
         # Inputs outside any physical range, and a contact radius not small against R, are computed

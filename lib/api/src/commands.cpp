@@ -47,8 +47,13 @@ std::string wave_fingerprint(const WaveSpec& w) {
 }  // namespace
 
 namespace {
+// Where `trace` is given, it also receives the point's rows over one period (physical_trace).
+struct TraceTarget {
+  int points, digits;
+  std::vector<PhysicalTraceRow> rows;
+};
 PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
-                            std::vector<std::string>* warnings);
+                            std::vector<std::string>* warnings, TraceTarget* trace = nullptr);
 PhysicalOutputs physical_constant(const PhysicalRequest& r, const Precision& prec, const BatchOptions& base);
 
 // A length unit of a value column, in metres.
@@ -59,10 +64,14 @@ const std::map<std::string, const char*>& length_units() {
 }
 }  // namespace
 
-PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
-                               const BatchOptions& base, std::vector<std::string>* warnings) {
-  if (r.constant_normal) return physical_constant(r, prec, base);
-  if (!r.unit.given()) return physical_at(wave, r, prec, base, warnings);
+namespace {
+PhysicalOutputs physical_traced(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
+                                const BatchOptions& base, std::vector<std::string>* warnings, TraceTarget* trace) {
+  if (r.constant_normal) {
+    if (trace) throw InputError("a trace in SI units with a constant normal force: expected a normal oscillation");
+    return physical_constant(r, prec, base);
+  }
+  if (!r.unit.given()) return physical_at(wave, r, prec, base, warnings, trace);
   // The amplitude from the record (model.md: A is zero-to-peak, the wave normalised to
   // max − min = 2): half the samples' peak-to-peak, in the unit of the value column.
   const std::string& unit = *r.unit.text;
@@ -100,11 +109,24 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, c
   request.A.value = InputValue::computed(amplitude, amplitude_label);
   request.A.name = r.A.name + " (half the peak-to-peak of " + detail::visible(wave.name) + " in " + detail::visible(unit) + ")";
   request.unit.text.reset();
-  PhysicalOutputs out = physical_at(wave, request, prec, base, warnings);
+  PhysicalOutputs out = physical_at(wave, request, prec, base, warnings, trace);
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
   out.insert(out.begin() + 1, PhysicalOutput{"A_m", {detail::rounded<mpfr>(amplitude), digits}, {}});
   return out;
+}
+}  // namespace
+
+PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec,
+                               const BatchOptions& base, std::vector<std::string>* warnings) {
+  return physical_traced(wave, r, prec, base, warnings, nullptr);
+}
+
+std::vector<PhysicalTraceRow> physical_trace(const WaveSpec& wave, const PhysicalRequest& request, int points, int digits,
+                                             const BatchOptions& options) {
+  TraceTarget target{points, digits, {}};
+  physical_traced(wave, request, Precision{NumberType::mpfr, digits}, options, nullptr, &target);
+  return target.rows;
 }
 
 namespace {
@@ -244,7 +266,7 @@ PhysicalOutputs physical_constant(const PhysicalRequest& r, const Precision& pre
 }
 
 PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, const Precision& prec, const BatchOptions& base,
-                            std::vector<std::string>* warnings) {
+                            std::vector<std::string>* warnings, TraceTarget* trace) {
   using Input = NamedInput;
   const int digits = output_digits(prec);
   PrecisionScope scope(static_cast<unsigned>(digits + 20));
@@ -430,6 +452,27 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   // β and γ go to evaluate as values; the texts only name the point in its messages.
   const Point point{InputValue::computed(g.beta, format_significant(g.beta, digits + 15)),
                     InputValue::computed(g.gamma, format_significant(g.gamma, digits + 15))};
+  if (trace) {
+    if (options.rig || inplane)
+      throw InputError("a trace in SI units is of the quasi-static contact under the normal oscillation: not with " +
+                       (options.rig ? r.mass.name : r.u_x.given() ? r.u_x.name : r.u_y.name));
+    TraceRequest request;
+    request.beta.value = point.beta;
+    request.gamma.value = point.gamma;
+    request.points = trace->points;
+    request.digits = trace->digits;
+    request.profile = options.profile;
+    const mpfr scale = kind == "flat" ? mpfr(g.k_z * A) : mpfr(2 * g.E_star * A * length);
+    // At a contact boundary γ + w = 0 by definition: its computed value, a rounding far below
+    // the digits asked of A, is 0.
+    const mpfr floor_u = A * pow(mpfr(10), -trace->digits - 3);
+    for (const TraceRow& row : trace_rows(wave, request)) {
+      const auto at = [&](const mpfr& x) { return mpfr(format_significant(x, trace->digits)); };
+      const mpfr u = A * (g.gamma + (*w)(row.phi - floor(row.phi)));
+      trace->rows.push_back({at(mpfr(row.phi / in.f)), at(mpfr(scale * row.n)), at(mpfr(in.mu0 * scale * row.s)),
+                             abs(u) < floor_u ? mpfr(0) : at(u)});
+    }
+  }
   // μ = μ0·(μ̄/μ0) from the ratio's value (mpfr: decided at 10 more digits), rounded once to the
   // requested digits.
   Precision fine = prec;

@@ -86,6 +86,19 @@ struct PhysicalRequest {
 PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& request, const Precision& precision,
                                const BatchOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
+// `physical`'s point over one period in SI units (README, "physical --trace"): the rows of
+// trace_rows at its β and γ (points + 1 equally spaced phases, both ends of every stick phase,
+// the contact boundaries), as the time t = φ/f, the normal and friction forces F_N = k n,
+// F_x = μ0 k s (k = k_z A for the punch, 2 E* A L for a curved shape's row) and the indenter
+// tip's indentation u = A (γ + w(φ)) (negative while the body is off the surface), each to
+// `digits` significant digits. Quasi-static contacts with the normal oscillation: InputError
+// with a rig, an in-plane drive or a constant normal force.
+struct PhysicalTraceRow {
+  mpfr t_s, F_N_N, F_x_N, u_m;
+};
+std::vector<PhysicalTraceRow> physical_trace(const WaveSpec& wave, const PhysicalRequest& request, int points, int digits,
+                                             const BatchOptions& options = {});
+
 // The inputs of `trace`, each named in its caller's terms as in PhysicalRequest.
 struct TraceRequest {
   NamedInput beta{{}, "beta"}, gamma{{}, "gamma"};
