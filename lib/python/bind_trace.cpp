@@ -103,13 +103,7 @@ mode), the tangential force along and across the sliding direction, mode 'stick'
           if (request.profile.kind != ProfileKind::flat)
             throw InputError("trace with profile = " + py_repr(profile) +
                              " and an in-plane oscillation: the rows are the flat punch's only (mu takes the curved row)");
-          InPlaneSpec spec;
-          spec.constant_normal = constant;
-          spec.longitudinal = longitudinal.is_none() ? InputValue(*Decimal::read("0")) : scalar_value(longitudinal, "longitudinal");
-          if (!transverse.is_none()) spec.transverse = scalar_value(transverse, "transverse");
-          if (!phase.is_none()) spec.phase = scalar_value(phase, "phase");
-          if (!in_plane_wave.is_none()) spec.wave = to_wave(in_plane_wave);
-          check_inplane(spec);
+          const InPlaneSpec spec = inplane_spec(constant, longitudinal, transverse, phase, in_plane_wave);
           WaveSpec w;
           if (constant) {
             if (!gamma.is_none())

@@ -105,14 +105,7 @@ Flat punch only (Psi does not exist for curved profiles).
             throw InputError("kappa/omega with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
           if (certify) throw InputError("certify: certified values exist for the normal oscillation only, not with an in-plane drive");
           if (!escalate) throw InputError("escalate=False: in-plane oscillation is always computed in mpfr at two precisions");
-          InPlaneSpec s;
-          s.constant_normal = constant;
-          s.longitudinal = longitudinal.is_none() ? InputValue(*Decimal::read("0")) : scalar_value(longitudinal, "longitudinal");
-          if (!transverse.is_none()) s.transverse = scalar_value(transverse, "transverse");
-          if (!phase.is_none()) s.phase = scalar_value(phase, "phase");
-          if (!in_plane_wave.is_none()) s.wave = to_wave(in_plane_wave);
-          check_inplane(s);
-          e.inplane = s;
+          e.inplane = inplane_spec(constant, longitudinal, transverse, phase, in_plane_wave);
         }
         if (!kappa.is_none() || !omega.is_none() || !zeta.is_none()) {
           if (kappa.is_none() || omega.is_none())

@@ -197,6 +197,17 @@ class Output {
   std::vector<std::pair<std::size_t, std::string>> pending_;
 };
 
+// The batch's result: a scalar for scalar arguments (float for float64), else the array in the
+// broadcast's shape.
+py::object shaped(const Output& out, const Converter& convert, const std::vector<std::size_t>& dims, const py::tuple& shape) {
+  const py::array& flat = out.array();
+  if (dims.empty()) {
+    if (convert.form() == Form::float64) return py::float_(static_cast<const double*>(flat.data())[0]);
+    return flat[py::int_(0)];
+  }
+  return flat.attr("reshape")(shape);
+}
+
 // certify=True (certify.hpp): each point computed as without it, and proven the correct rounding
 // of its exact value (piecewise-linear waves, flat punch); the result is (lo, hi) of
 // fractions.Fraction, equal, the exact value (arrays of them for array arguments).
@@ -301,12 +312,7 @@ py::object rig_broadcast(const WaveSpec& wave, const Precision& precision, Batch
     }
     out.flush();
   }
-  const py::array& flat = out.array();
-  if (dims.empty()) {
-    if (convert.form() == Form::float64) return py::float_(static_cast<const double*>(flat.data())[0]);
-    return flat[py::int_(0)];
-  }
-  return flat.attr("reshape")(shape);
+  return shaped(out, convert, dims, shape);
 }
 
 }  // namespace
@@ -367,12 +373,7 @@ py::object evaluate_broadcast(const py::object& wave_obj, const py::object& beta
         precision, options, [&](std::size_t i, const StreamValue& value) { out.put(i, value); });
     out.flush();
   }
-  const py::array& flat = out.array();
-  if (dims.empty()) {
-    if (convert.form() == Form::float64) return py::float_(static_cast<const double*>(flat.data())[0]);
-    return flat[py::int_(0)];
-  }
-  return flat.attr("reshape")(shape);
+  return shaped(out, convert, dims, shape);
 }
 
 }  // namespace vibrofric::python

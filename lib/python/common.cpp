@@ -19,6 +19,18 @@ WaveSpec to_wave(const py::object& w) {
                        "vibrofric.samples / vibrofric.fourier");
 }
 
+InPlaneSpec inplane_spec(bool constant, const py::object& longitudinal, const py::object& transverse,
+                         const py::object& phase, const py::object& in_plane_wave) {
+  InPlaneSpec spec;
+  spec.constant_normal = constant;
+  spec.longitudinal = longitudinal.is_none() ? InputValue(*Decimal::read("0")) : scalar_value(longitudinal, "longitudinal");
+  if (!transverse.is_none()) spec.transverse = scalar_value(transverse, "transverse");
+  if (!phase.is_none()) spec.phase = scalar_value(phase, "phase");
+  if (!in_plane_wave.is_none()) spec.wave = to_wave(in_plane_wave);
+  check_inplane(spec);
+  return spec;
+}
+
 ProfileSpec to_profile(const py::object& p) {
   if (py::isinstance<py::str>(p)) return parse_profile(p.cast<std::string>());
   if (py::isinstance<PyProfile>(p)) return p.cast<const PyProfile&>().spec;

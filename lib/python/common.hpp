@@ -15,6 +15,7 @@
 #include "vibrofric/api/arrays.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 
 namespace vibrofric::python {
@@ -37,6 +38,10 @@ struct PyProfile {
 std::string py_repr(const py::handle& x);
 
 WaveSpec to_wave(const py::object& w);
+// The in-plane drive of the keywords longitudinal (None: 0), transverse, phase and in_plane_wave
+// (None: their defaults), checked as the tool's flags (check_inplane).
+InPlaneSpec inplane_spec(bool constant, const py::object& longitudinal, const py::object& transverse,
+                         const py::object& phase, const py::object& in_plane_wave);
 ProfileSpec to_profile(const py::object& p);
 
 // The decimal text of one Python number or string: floats by their shortest round-trip text (0.1
