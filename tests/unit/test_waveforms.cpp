@@ -397,7 +397,8 @@ TEST(Waveforms, LabFilesAsWritten) {
   // Time columns by name in five languages or by a unit of time; other units are values.
   for (const char* name : {"Zeit", "temps (s)", "tiempo [ms]", "tempo", "Messzeit [s]", "dt/ms", "Zeit in \xC2\xB5s", "T"})
     same(parse_wave("samples:" + temp_file("lab_name.csv", std::string(name) + ";y\n" + rows)), name);
-  for (const char* name : {"v [m/s]", "m/s", "Weg [\xC2\xB5m]", "Kraft (N)", "speed_s", "Strom in A"}) {
+  for (const char* name : {"v [m/s]", "m/s", "Weg [\xC2\xB5m]", "Kraft (N)", "speed_s", "Strom in A", "T [\xC2\xB0" "C]",
+                           "Temperatur (K)"}) {
     SCOPED_TRACE(name);
     try {
       parse_wave("samples:" + temp_file("lab_value.csv", std::string(name) + ";y\n" + rows));
@@ -407,6 +408,10 @@ TEST(Waveforms, LabFilesAsWritten) {
                 std::string::npos) << e.what();
     }
   }
+  // A rig's temperature column "T [°C]" beside "Zeit [s]": one time column, the value chosen.
+  const std::string three = temp_file("lab_three.csv", "Zeit [s];Weg [\xC2\xB5m];T [\xC2\xB0" "C]\n0;0,75;21\n0,0000125;1,5;21\n"
+                                                        "0,000025;0,75;22\n0,0000375;0;22\n");
+  same(parse_wave("samples:" + three, {"Weg [\xC2\xB5m]"}), "three columns");
   // A preamble: named with the lines to skip, then skipped; line numbers stay the file's.
   const std::string preamble = temp_file("lab_preamble.csv", "Messung: Probe 3\nDatum: 05.12.2026\n\nZeit [s];Weg [\xC2\xB5m]\n" + rows);
   try {

@@ -79,20 +79,23 @@ std::vector<std::string> fields_at_separator(const std::string& line, char* deli
 }
 
 // The name of a time column, as rigs export it: "time", "t", "timestamp" or the word in German,
-// French, Spanish, Italian and Portuguese (Zeit, temps, tiempo, tempo), with a unit in brackets
-// ("Time [s]", "t (ms)"), after '_' or '/' ("time_s", "t/s") or after "in" ("Zeit in ms"); or any
-// name with a unit of time in brackets, after '/' or after "in" ("Messzeit [s]", "dt/ms").
+// French, Spanish, Italian and Portuguese (Zeit, temps, tiempo, tempo), alone, with a unit of time
+// in brackets ("Time [s]", "t (ms)"; "T [°C]" is a temperature) or after "in" ("Zeit in ms"), or
+// with anything after '_' or '/' ("time_s", "t/s"); or any name with a unit of time in brackets,
+// after '/' or after "in" ("Messzeit [s]", "dt/ms"; "v [m/s]" is a velocity).
 bool is_time_name(const std::string& name) {
-  static const std::regex word(R"((t|time|timestamp|zeit|temps|tiempo|tempo)(\s*[\[(].*[\])]|\s*[_/]\s*\S+|\s+in\s+\S+)?)",
-                               std::regex::icase);
-  static const std::string units = "(s|sec|ms|us|ns|\xC2\xB5s|\xCE\xBCs)";
+  static const std::string units = "(s|sec|min|ms|us|ns|\xC2\xB5s|\xCE\xBCs)";
+  static const std::regex word(R"((t|time|timestamp|zeit|temps|tiempo|tempo)(\s*[_/]\s*\S+)?)", std::regex::icase);
+  static const std::regex word_unit("(t|time|timestamp|zeit|temps|tiempo|tempo)(\\s*\\[\\s*" + units + "\\s*\\]|\\s*\\(\\s*" +
+                                        units + "\\s*\\)|\\s+in\\s+" + units + ")\\s*",
+                                    std::regex::icase);
   static const std::regex unit(".*?(\\[\\s*" + units + "\\s*\\]|\\(\\s*" + units + "\\s*\\)|\\s+in\\s+" + units + ")\\s*");
   // "name/s" is a quantity per unit, as pandas and ISO 80000 write it; "m/s" is a velocity.
   static const std::regex per(R"(\s*([^\s/]+)\s*/\s*)" + units + "\\s*");
   static const std::regex length("(k|m|c|u|n|\xC2\xB5|\xCE\xBC)?m");
   std::smatch m;
   if (std::regex_match(name, m, per) && !std::regex_match(m[1].str(), length)) return true;
-  return std::regex_match(name, word) || std::regex_match(name, unit);
+  return std::regex_match(name, word) || std::regex_match(name, word_unit) || std::regex_match(name, unit);
 }
 
 // The lines before a samples file's last run of numeric rows, where that run follows a line that
