@@ -2319,6 +2319,11 @@ def rig_tests():
         if rc != 0 or lines.get("quasi_static_mu_over_mu0") != quasi or err.count("\n") != 1 or \
                 "stick oscillator, omega sqrt(1 + kappa) = %s, near 1" % ratio not in err:
             raise Fail("a rig near resonance: exit %d, %r, stderr %r" % (rc, text, err))
+        # The field against an exact value: the triangle at beta 1/2, gamma 1/5 is 2/9 (the exact
+        # rational solver, `--certify` of the paper's model), to 20 digits beside a rig.
+        out = json.loads(rig_ok_run(["mu", "--wave", "triangle", "--beta", "0.5", "--gamma", "0.2", "--kappa", "3", "--omega",
+                                     "10", "--zeta", "0.1", "--digits", "20", "--format", "json"]))
+        expect_digits(out["quasi_static_mu_over_mu0"], Fraction(2, 9), 20, "quasi_static_mu_over_mu0 of the triangle")
         rc, text, err = run(point + ["--kappa", "0.18", "--omega", "2.3"])  # omega sqrt(kappa) = 0.976
         if rc != 0 or "slip oscillator, omega sqrt(kappa) = %.3g, near 1" % (2.3 * math.sqrt(0.18)) not in err:
             raise Fail("a rig near the slip resonance: exit %d, stderr %r" % (rc, err))
