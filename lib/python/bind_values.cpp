@@ -135,10 +135,6 @@ Flat punch only (Psi does not exist for curved profiles).
         if (e.inplane && e.inplane->constant_normal && e.profile.kind != ProfileKind::flat)
           throw InputError("wave = 'constant' with profile = " + e.profile_text +
                            ": a curved contact is solved with the normal oscillation (give wave and gamma)");
-        if ((e.rig || e.rig_arrays) && e.profile.kind != ProfileKind::flat)
-          throw InputError("kappa/omega with profile = " + e.profile_text +
-                           ": the springs of a curved contact share the body, so the MDR row does not decouple "
-                           "(rig dynamics: the flat punch only)");
         e.threads = to_threads(threads);
         if (auto mi = optional_int(max_iterations, "max_iterations")) e.max_iterations = *mi;
         e.escalate = escalate;
@@ -175,8 +171,10 @@ Flat punch only (Psi does not exist for curved profiles).
   m.def(
       "rig",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& kappa,
-         const py::object& omega, const py::object& zeta, const py::object& digits, const py::object& type, bool strings) {
+         const py::object& omega, const py::object& zeta, const py::object& digits, const py::object& type, bool strings,
+         const py::object& profile) {
         const WaveSpec w = to_wave(wave);
+        const ProfileSpec shape = to_profile(profile);
         const Precision precision = to_precision(optional_int(digits, "digits"), type);
         RigSpec spec;
         spec.kappa = scalar_value(kappa, "kappa");
@@ -186,7 +184,7 @@ Flat punch only (Psi does not exist for curved profiles).
         RigReport r;
         {
           py::gil_scoped_release release;
-          r = evaluate_rig(w, point, spec, precision);
+          r = evaluate_rig(w, point, spec, precision, {}, shape);
         }
         const Converter convert(result_form(precision, strings), precision);
         char floquet[32];
@@ -199,12 +197,13 @@ Flat punch only (Psi does not exist for curved profiles).
                  {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()},
                  {"quasi_static_mu_over_mu0", r.quasi_static_mu}})
           d[py::str(name)] = convert(value);
+        if (r.springs) d["springs"] = py::int_(r.springs);
         if (!r.resonance_note.empty() && PyErr_WarnEx(PyExc_UserWarning, r.resonance_note.c_str(), 1) != 0)
           throw py::error_already_set();
         return d;
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "kappa"_a, "omega"_a, "zeta"_a = py::none(), "digits"_a = py::none(),
-      "type"_a = py::none(), "strings"_a = false, R"doc(rig(wave, beta, gamma, *, kappa, omega, zeta=None, digits=None, type=None, strings=False) -> dict
+      "type"_a = py::none(), "strings"_a = false, "profile"_a = "flat", R"doc(rig(wave, beta, gamma, *, kappa, omega, zeta=None, digits=None, type=None, strings=False, profile='flat') -> dict
 
 Rig dynamics at one point (the tool's mu --kappa --omega --zeta; model.md, "Rig dynamics"): a body
 of mass m on a system spring k_s (damper c), kappa = k_s/k_x, omega = sqrt(k_x/m)/(2 pi f),
@@ -218,6 +217,11 @@ quasi_static_mu_over_mu0 (the paper's value at the same point; where the two dif
 mu(): float for type None/'double', or decimal strings with strings=True; the fractions carry
 the digits the two precisions agree on. ValueError for bad input, vibrofric.SolverError where no
 periodic state is found.
+
+profile: a curved contact ('sphere', 'cone', 'power:N', 'wearflat:L', 'profile:FILE'; model.md,
+"On a curved contact"): the body carries the whole MDR row, kappa and omega of k_x,max (every
+spring touching); gamma <= 1 (the contact opens once per period). The row is solved at n and 2n
+springs: mu_over_mu0 and the fractions carry the digits the two agree on, and 'springs' is 2n.
 )doc");
 }
 

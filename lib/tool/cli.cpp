@@ -62,7 +62,9 @@ const char* const kRig =
     "  paper's quasi-static spring by a body of mass m on a system spring k_s (damper c), moving along\n"
     "  the sliding direction; the normal indentation follows the wave as prescribed (no normal\n"
     "  dynamics): K = k_s/k_x, W = sqrt(k_x/m)/(2 pi f),\n"
-    "  Z = c/(2 sqrt(m k_s)); flat punch; sine, Fourier and piecewise-linear waves. mu prints the\n"
+    "  Z = c/(2 sqrt(m k_s)); sine, Fourier and piecewise-linear waves. With --profile the body\n"
+    "  carries the whole MDR row (k_x: k_x,max = 2 a_max G*, every spring touching; gamma <= 1), the\n"
+    "  row solved at n and 2n springs and printed to the digits they agree on. mu prints the\n"
     "  stick, slip and flight fractions (they add to 1; backward_slip_fraction is the part of the\n"
     "  slip that goes backward), the body's amplitude, the largest backward slip and the largest\n"
     "  Floquet multiplier (0: below what difference quotients resolve) after the value.\n";
@@ -166,7 +168,7 @@ const std::vector<CommandSpec>& commands() {
         {"F-N", "N", "mean normal load, > 0 (or a range); or give --u-mean", "", nullptr},
         {"mu0", "MU", "local coefficient of friction, > 0 (required)", "", nullptr},
         {"shape", "S", "flat | sphere | cone | wearflat | profile:FILE", "flat", nullptr},
-        {"mass", "KG", "tangential (in-plane) rig dynamics (flat): the body's mass, > 0 (with --k-system)", "", nullptr},
+        {"mass", "KG", "tangential (in-plane) rig dynamics: the body's mass, > 0 (with --k-system)", "", nullptr},
         {"k-system", "N/M", "rig dynamics: the apparatus' stiffness between drive and body, > 0 (with --mass)", "", nullptr},
         {"damping", "NS/M", "rig dynamics: a damper parallel to the apparatus' spring, >= 0", "0", nullptr},
         {"u-x", "M", "in-plane oscillation along the sliding direction: zero-to-peak amplitude, >= 0", "none", nullptr},

@@ -30,7 +30,7 @@ int write_record(const std::vector<std::string>& names, const std::vector<std::s
 
 // mu with --kappa/--omega: the value, then the periodic state's fractions and sizes.
 int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, const Precision& precision, Format format) {
-  const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver);
+  const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver, opt.profile);
   char floquet[32];
   std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
   const std::vector<std::pair<std::string, std::string>> fields{
@@ -39,16 +39,24 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
       {"amplitude", r.amplitude.text()}, {"largest_backward_slip", r.largest_backward_slip.text()},
       {"floquet_multiplier", floquet}, {"relative_error_estimate", r.relative_error.text()},
       {"quasi_static_mu_over_mu0", r.quasi_static_mu}};
+  // a curved contact: its profile, and the row's springs (mu has the digits two sizes agree on)
+  std::vector<std::pair<std::string, std::string>> row;
+  if (opt.profile.kind != ProfileKind::flat) row = {{"profile", opt.profile.name}, {"springs", std::to_string(r.springs)}};
   if (!r.resonance_note.empty()) pending_diagnostics += "vibrofric: warning: " + r.resonance_note + "\n";
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
+    for (const auto& [name, value] : row) std::cout << name << ": " << value << '\n';
     return 0;
   }
   std::vector<std::string> names{"wave", "beta", "gamma", "kappa", "omega", "zeta", "mu_over_mu0"};
   std::vector<std::string> values{wave.name,         p.beta.text(),      p.gamma.text(), opt.rig->kappa.text(),
                                   opt.rig->omega.text(), opt.rig->zeta.text(), r.mu};
   for (const auto& [name, value] : fields) {
+    names.push_back(name);
+    values.push_back(value);
+  }
+  for (const auto& [name, value] : row) {
     names.push_back(name);
     values.push_back(value);
   }

@@ -12,7 +12,7 @@ core/detail/) and the modules below them:
     waves      foundation
     flat       waves
     curved     waves, flat
-    dynamics   waves, flat
+    dynamics   waves, flat, curved (the MDR row the rig's body carries)
     inplane    waves, flat, curved (the MDR row of in-plane springs)
     certified  foundation only
 (lib/core/src/instances compiles the solvers once per number type and may include any of them.)
@@ -47,7 +47,7 @@ MODULES = {
     "waves": (),
     "flat": ("waves",),
     "curved": ("waves", "flat"),
-    "dynamics": ("waves", "flat"),
+    "dynamics": ("waves", "flat", "curved"),
     "inplane": ("waves", "flat", "curved"),
     "certified": (),
 }

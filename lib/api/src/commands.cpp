@@ -4,6 +4,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -132,7 +133,11 @@ std::vector<PhysicalTraceRow> physical_trace(const WaveSpec& wave, const Physica
 namespace {
 // evaluate_one's value and text under a rig, with the rig's report.
 Evaluated rig_evaluated(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
-                        const Options& solver, RigReport& report) {
+                        const Options& solver, RigReport& report, const ProfileSpec& profile = {}) {
+  if (profile.kind != ProfileKind::flat) {
+    const Significant v = detail::row_rig_value(wave, point, rig, profile, precision, solver, &report);
+    return {report.mu, v.value};
+  }
   const mpfr v = detail::rig_value(wave, point, rig, precision, solver, &report);
   report.mu = detail::rig_text(v, precision);
   return {report.mu, v};
@@ -329,26 +334,29 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   auto g = physical_groups(in);
   BatchOptions options = base;
   options.profile = ProfileSpec{};
-  // Rig dynamics (model.md): the body's mass and the apparatus' stiffness, on the punch (k_x, Eq. 1).
+  // Rig dynamics (model.md): the body's mass and the apparatus' stiffness, on the punch (k_x, Eq. 1)
+  // or on a curved contact (k_x,max = 2 a_max G*, the row's stiffness at the deepest instant).
   const bool rig = r.mass.given() || r.k_system.given() || r.damping.given();
+  std::function<RigSpec(const mpfr&)> rig_of;
+  mpfr k_x_max;
   if (rig) {
     if (!r.mass.given() || !r.k_system.given())
       throw InputError("missing " + (r.mass.given() ? r.k_system.name : r.mass.name) + ": rig dynamics needs " +
                        r.mass.name + " and " + r.k_system.name + " (" + r.damping.name + " is optional)");
-    if (kind != "flat")
-      throw InputError(r.mass.name + " with " + r.shape.name + " " + detail::visible(shape) +
-                       ": the springs of a curved contact share the body, so the MDR row does not decouple "
-                       "(rig dynamics: the flat punch only)");
     const mpfr m = positive(r.mass), ks = positive(r.k_system);
     const mpfr c = opt(r.damping);
     if (r.damping.given() && !(c >= 0)) throw InputError(r.damping.name + " = " + r.damping.text() + ": expected a value >= 0");
     // Values, labelled for messages by 17 digits.
-    const auto computed = [](const mpfr& v) { return InputValue::computed(v, format_significant(v, 17)); };
-    RigSpec spec;
-    spec.kappa = computed(mpfr(ks / g.k_x));
-    spec.omega = computed(mpfr(sqrt(mpfr(g.k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * in.f)));
-    spec.zeta = computed(mpfr(c / (2 * sqrt(mpfr(m * ks)))));
-    options.rig = spec;
+    rig_of = [=, f = in.f](const mpfr& k_x) {
+      const auto computed = [](const mpfr& v) { return InputValue::computed(v, format_significant(v, 17)); };
+      RigSpec spec;
+      spec.kappa = computed(mpfr(ks / k_x));
+      spec.omega = computed(mpfr(sqrt(mpfr(k_x / m)) / (2 * boost::math::constants::pi<mpfr>() * f)));
+      spec.zeta = computed(mpfr(c / (2 * sqrt(mpfr(m * ks)))));
+      return spec;
+    };
+    // the punch's k_x now; a curved contact's k_x,max = 2 a_max G* once γ (a_max) is known
+    if (kind == "flat") options.rig = rig_of(g.k_x);
   }
   // In-plane oscillation: a_l = k_x u_x/(mu0 k_z A) = G* u_x/(mu0 E* A), for the punch and the row.
   const std::optional<InPlaneSpec> drive = physical_drive(r, mpfr(g.G_star / (in.mu0 * g.E_star * A)), digits);
@@ -452,6 +460,10 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   // β and γ go to evaluate as values; the texts only name the point in its messages.
   const Point point{InputValue::computed(g.beta, format_significant(g.beta, digits + 15)),
                     InputValue::computed(g.gamma, format_significant(g.gamma, digits + 15))};
+  if (rig && kind != "flat") {
+    k_x_max = 2 * g.G_star * length * p->x_at_sigma(mpfr(g.gamma + w->maximum()));
+    options.rig = rig_of(k_x_max);
+  }
   if (trace) {
     if (options.rig || inplane)
       throw InputError("a trace in SI units is of the quasi-static contact under the normal oscillation: not with " +
@@ -479,7 +491,7 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   if (fine.type == NumberType::mpfr) fine.digits = std::min(prec.digits + 10, max_digits);
   RigReport report;
   InPlaneReport inplane_report;
-  const Evaluated ratio = options.rig ? rig_evaluated(wave, point, *options.rig, fine, options.solver, report)
+  const Evaluated ratio = options.rig ? rig_evaluated(wave, point, *options.rig, fine, options.solver, report, options.profile)
                           : inplane ? inplane_evaluated(wave, point, *drive, fine, options.solver, options.profile, inplane_report)
                                     : evaluate_one(wave, Quantity::mu, point, fine, options);
   const mpfr mu = ratio.value * in.mu0;
@@ -601,11 +613,14 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     line("phase", drive->phase.to<mpfr>());
   }
   // evaluate's text: the type's value (the rig's is computed in mpfr), or mpfr's to `digits`
-  rec.push_back({"mu_over_mu0", fine.type == NumberType::mpfr ? Significant{ratio.value, digits}
-                                                               : detail::type_significant(ratio.value, prec), {}});
-  line("mu", mu);
+  // (a curved contact's rig: the digits its row's two sizes agree on)
+  const int mu_known = report.mu_digits ? std::min(digits, report.mu_digits) : digits;
+  rec.push_back({"mu_over_mu0", report.mu_digits                  ? Significant{ratio.value, mu_known}
+                                : fine.type == NumberType::mpfr ? Significant{ratio.value, digits}
+                                                                : detail::type_significant(ratio.value, prec), {}});
+  number("mu", mu, mu_known);
   line("F_N_mean_N", force);
-  line("F_x_mean_N", mpfr(mu * force));
+  number("F_x_mean_N", mpfr(mu * force), mu_known);
   // The in-plane model: the lateral force and its own fractions (its β_c is not the paper's).
   if (inplane) inplane_outputs(rec, inplane_report, mpfr(in.mu0 * force), digits);
   line("F_N_peak_N", peak_force);
@@ -624,6 +639,10 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
   line("contact_fraction", contact_fraction);
   if (options.rig) {
     // the rig's periodic state: its own fractions, and the frequency ratios it was computed with
+    if (kind != "flat") {
+      line("k_x_max_N_per_m", k_x_max);
+      field("springs", std::to_string(report.springs));  // the row's, its digits those of n and n/2 agreeing
+    }
     line("kappa", *options.rig->kappa.computed_value());
     line("omega", *options.rig->omega.computed_value());
     line("zeta", *options.rig->zeta.computed_value());
@@ -633,9 +652,11 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     fraction("slip_fraction", report.slip_fraction);
     fraction("backward_slip_fraction", report.backward_fraction);
     fraction("flight_fraction", report.flight_fraction);
-    // lengths: the rig's unit μ0 k_z A/k_x (model.md), to the digits both precisions agree on
+    // lengths: the rig's unit μ0 k_z A/k_x (model.md; μ0 E* A/G* on a curved contact, k_z,max/k_x,max),
+    // to the digits both precisions agree on
+    const mpfr unit = kind == "flat" ? mpfr(in.mu0 * g.k_z * A / g.k_x) : mpfr(in.mu0 * g.E_star * A / g.G_star);
     const auto length_m = [&](const char* name, const Significant& v) {
-      number(name, mpfr(v.value * in.mu0 * g.k_z * A / g.k_x), std::min(digits, v.digits));
+      number(name, mpfr(v.value * unit), std::min(digits, v.digits));
     };
     length_m("body_amplitude_m", report.amplitude);
     length_m("largest_backward_slip_m", report.largest_backward_slip);

@@ -426,10 +426,12 @@ class PointEvaluator {
   Real rig(const Point& p) const {
     if (q_ == Quantity::psi)
       throw InputError("rig dynamics gives mu only: Psi (Eq. 12) belongs to the quasi-static model");
-    if (options_.profile.kind != ProfileKind::flat)
-      throw InputError("rig dynamics with profile " + options_.profile.name +
-                       ": the springs of a curved contact share the body, so the MDR row does not decouple "
-                       "(the flat punch only)");
+    if (options_.profile.kind != ProfileKind::flat) {
+      // the row's value with the digits its two sizes agree on: printed as they are
+      const Significant v = row_rig_value(spec_, p, *options_.rig, options_.profile, precision(), options_.solver);
+      row_text_ = v.text();
+      return decided(v.value);
+    }
     return decided(rig_value(spec_, p, *options_.rig, precision(), options_.solver));
   }
   // In-plane oscillation: the same, from the in-plane solver.
@@ -452,8 +454,9 @@ class PointEvaluator {
     else return rounded<Real>(v);
   }
   StreamValue operator()(const Point& p) {
+    row_text_.clear();
     const Real v = value(p);
-    StreamValue out{format_significant(v, digits_), std::nullopt, nullptr};
+    StreamValue out{row_text_.empty() ? format_significant(v, digits_) : row_text_, std::nullopt, nullptr};
     if constexpr (std::is_same_v<Real, double> || std::is_same_v<Real, long double>) out.number = v;
     return out;
   }
@@ -467,6 +470,7 @@ class PointEvaluator {
   WaveCache<Real> waves_;
   WaveCache<long double> wider_;
   WaveCache<mpfr> fallback_;
+  mutable std::string row_text_;  // the last curved rig's value as printed (its agreed digits)
 };
 
 // evaluate_one (evaluate.hpp): a fixed type's value copied into an mpfr with more bits, exactly.

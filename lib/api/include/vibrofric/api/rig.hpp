@@ -1,7 +1,10 @@
 // Rig dynamics at a requested precision (model.md, "Rig dynamics: mass and system stiffness"):
 // μ̄/μ0 of the periodic state of a body of mass m on a system spring, with what a tribologist
 // checks of it, from decimal inputs to decimal text. The core's RigSolver (core/dynamics/dynamics.hpp)
-// computes in mpfr at two working precisions; the printed digits are those both agree on.
+// computes in mpfr at two working precisions; the printed digits are those both agree on. On a
+// curved contact (core/dynamics/rig_row.hpp) the row of springs is solved in double at two sizes,
+// n and 2n, doubled until they agree to 8 digits (or n = 3200); the printed digits are those the
+// two sizes agree on: the row's quadrature error, not the precision, limits them.
 #pragma once
 #include <optional>
 #include <string>
@@ -10,6 +13,7 @@
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/api/input_value.hpp"
+#include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/core/numbers.hpp"
 #include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/flat/solver.hpp"
@@ -43,16 +47,20 @@ struct RigReport {
   // nearest a whole multiple of the drive's frequency. Empty otherwise.
   std::string quasi_static_mu;
   std::string resonance_note;
+  // A curved contact: the significant digits of mu that the row's two sizes agree on (mu's text
+  // has them), and the larger size. 0 on the flat punch (mu: the request's digits).
+  int mu_digits = 0;
+  std::size_t springs = 0;
 };
 
 // κ, Ω, ζ checked (finite decimals, κ > 0, Ω > 0, ζ ≥ 0): InputError quoting the text otherwise.
 void check_rig(const RigSpec& rig);
 
-// InputError for bad input, Ψ, a curved profile (the MDR springs share the body: the row does
-// not decouple) or a wave without a closed-form motion (power:p); SolverError where no periodic
-// state is found, two are, or the precisions do not agree.
+// InputError for bad input, Ψ, a wave without a closed-form motion (power:p), or a curved profile
+// whose contact does not open fully once per period (γ + min w > 0); SolverError where no periodic
+// state is found, two are, or the precisions (the row's sizes) do not agree.
 RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
-                       const Options& solver = {});
+                       const Options& solver = {}, const ProfileSpec& profile = {});
 
 // One row of the periodic state for `trace` (the rig's Fig. 2): φ, n, s, the body's lag
 // Y = X − βφ behind the drive and its rate Y' (units μ0 k_z A/k_x, per period), and the mode.
@@ -76,6 +84,10 @@ namespace detail {
 // to the digits for mpfr) wherever the two precisions' difference is a true bound of the error.
 mpfr rig_value(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
                const Options& solver, RigReport* report = nullptr);
+// The same on a curved contact (the row, rig_row.hpp): the value with the digits the row's two
+// sizes agree on (at most the request's).
+Significant row_rig_value(const WaveSpec& wave, const Point& point, const RigSpec& rig, const ProfileSpec& profile,
+                          const Precision& precision, const Options& solver, RigReport* report = nullptr);
 // The text evaluate() prints for that value: rounded to the type, its significant digits.
 std::string rig_text(const mpfr& value, const Precision& precision);
 // That value rounded to the type (held exactly) with the digits evaluate() prints; mpfr as it is.

@@ -18,8 +18,8 @@
 // The solver itself is private (lib/core/src/dynamics/rig_engine.hpp), compiled for double,
 // long double and mpfr (lib/core/src/dynamics/rig_*.cpp).
 //
-// Not for: power:p and other waves without a closed-form motion; curved contacts (the MDR row of
-// springs shares one body, so the springs do not decouple).
+// Not for: power:p and other waves without a closed-form motion. Curved contacts (the MDR row of
+// springs shares one body, so the springs do not decouple): rig_row.hpp.
 #pragma once
 #include <array>
 #include <cstddef>

@@ -1,0 +1,687 @@
+// The curved contact's rig (core/dynamics/rig_row.hpp, model.md "Rig dynamics", "On a curved
+// contact"): the row's springs under one body, their events through H± = X ∓ w, the closed-form
+// motion between events (motion.hpp) and the shooting for the periodic state at w's minimum.
+// Private to the core; instantiated for double in rig_row_double.cpp.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vibrofric/core/detail/roots.hpp"
+#include "vibrofric/core/dynamics/rig_row.hpp"
+#include "vibrofric/core/errors.hpp"
+#include "motion.hpp"
+
+namespace vibrofric {
+namespace detail {
+
+template <class Real>
+class RowRigEngine {
+ public:
+  using State = std::array<Real, 2>;  // Y, Y' at the section
+
+  RowRigEngine(const Waveform<Real>& w, const Real& beta, const Real& gamma, const RigParameters<Real>& p,
+               const std::vector<RowSpring<Real>>& row, const Options& opt)
+      : wave_(w), rw_(w), beta_(beta), gamma_(gamma), p_(p), row_(row) {
+    using std::abs;
+    using std::sqrt;
+    if (!(p.kappa > 0) || !(p.omega > 0) || !(p.zeta >= 0))
+      throw DomainError("rig dynamics: expected kappa > 0, omega > 0, zeta >= 0");
+    if (row.empty()) throw DomainError("rig dynamics on a curved contact: the row has no spring");
+    if (gamma + w.minimum() > 0)
+      throw DomainError("rig dynamics on a curved contact: gamma = " + short_str(gamma) +
+                        " keeps the centre in contact all period; the row's periodic state is taken where the "
+                        "contact opens fully (expected gamma + min w <= 0: gamma <= 1 for the catalogue waves)");
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    omega2_ = two_pi * p.omega * (two_pi * p.omega);
+    c_ = 2 * two_pi * p.zeta * p.omega * sqrt(p.kappa);
+    K_slip_ = p.resonant_harmonic ? Real(two_pi * p.resonant_harmonic * (two_pi * p.resonant_harmonic))
+                                  : Real(omega2_ * p.kappa);
+    stats_.max_iterations = root_budget<Real>(opt);
+    const std::size_t P = w.piece_count(), i0 = w.argmin_break();
+    section_ = w.piece_begin(i0);
+    normal_area_ = 0;
+    for (std::size_t k = 0; k < P; ++k) {
+      const std::size_t i = (i0 + k) % P;
+      const Real shift = i < i0 ? Real(1) : Real(0);
+      Piece pc;
+      pc.index = i;
+      pc.a = w.piece_begin(i) + shift;
+      pc.b = w.piece_end(i) + shift;
+      pc.form = rw_.form(i);
+      if (!pc.form.a) pc.form.origin += shift;
+      pc.jump = k > 0 && w.jump_at(i);
+      pc.prev_end = w.end_value((i + P - 1) % P);
+      pc.begin = w.begin_value(i);
+      pc.w1 = abs(pc.form.p1);
+      pc.w2 = 0;
+      if (pc.form.a)
+        for (std::size_t h = 1; h < pc.form.a->size(); ++h) {
+          const Real nu = two_pi * static_cast<unsigned>(h);
+          const Real size = abs((*pc.form.a)[h]) + abs((*pc.form.b)[h]);
+          pc.w1 += nu * size;
+          pc.w2 += nu * nu * size;
+        }
+      pc.parts.resize(row.size());
+      for (std::size_t j = 0; j < row.size(); ++j) {
+        Part& part = pc.parts[j];
+        const Real gj = gamma - row[j].sigma;
+        Real c0, c1;
+        if (!w.contact_part(i, gj, c0, c1, stats_)) continue;
+        part.in = true;
+        part.c0 = c0 + shift;
+        part.c1 = c1 + shift;
+        part.enters = gj + w.begin_value(i) < 0;
+        part.leaves = gj + w.end_value(i) < 0;
+        if (part.enters) pc.schedule.push_back({part.c0, j, true});
+        if (part.leaves) pc.schedule.push_back({part.c1, j, false});
+        normal_area_ += row[j].weight * (gj * (part.c1 - part.c0) + wave_integral(pc.form, part.c0, part.c1));
+      }
+      std::sort(pc.schedule.begin(), pc.schedule.end(),
+                [](const Scheduled& x, const Scheduled& y) { return x.phi < y.phi; });
+      pieces_.push_back(std::move(pc));
+    }
+    if (!(normal_area_ > 0)) throw DomainError("rig dynamics on a curved contact: no spring of the row touches");
+  }
+
+  // The one-period map of (Y, Y') from the section to the section a period later.
+  State period(const State& in, RowRigResult<Real>* record = nullptr) const {
+    Run r;
+    r.y = in[0];
+    r.v = in[1];
+    r.s.assign(row_.size(), Spring{});
+    r.record = record != nullptr;
+    for (const Piece& pc : pieces_) piece(r, pc);
+    if (record) {
+      record->retained_area = r.retained;
+      record->lag_integral = r.lag;
+      record->stick_fraction = r.stick;
+      record->slip_fraction = r.slip;
+      record->backward_fraction = r.back;
+      record->flight_fraction = 1 - r.stick - r.slip;
+      record->amplitude = (r.ymax - r.ymin) / 2;
+      record->largest_backward_slip = r.largest_back;
+      record->events = r.events;
+    }
+    return {r.y, r.v};
+  }
+
+  RowRigResult<Real> solve() const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    // Two starts: moving with the drive (the quasi-static limit's body) and at rest.
+    Real last1 = 0, last2 = 0;
+    std::size_t steps1 = 0, steps2 = 0;
+    std::array<std::array<Real, 2>, 2> J1{}, J2{};
+    const State a = shoot(State{Real(0), Real(0)}, steps1, last1, J1);
+    const State b = shoot(State{Real(0), Real(-beta_)}, steps2, last2, J2);
+    jacobian(a, J1);
+    RowRigResult<Real> res, other;
+    period(a, &res);
+    period(b, &other);
+    res.normal_area = other.normal_area = normal_area_;
+    res.mu = res.retained_area / normal_area_;
+    other.mu = other.retained_area / normal_area_;
+    const Real diff = abs(Real(res.mu - other.mu));
+    if (diff > sqrt(eps) * std::max(Real(1), abs(res.mu)))
+      throw SolverError("rig dynamics on a curved contact: two periodic states from two starts (mu = " +
+                        short_str(res.mu) + " moving with the drive, " + short_str(other.mu) + " from rest)");
+    res.state_y = a[0];
+    res.state_v = a[1];
+    res.section = section_;
+    res.newton_steps = steps1;
+    res.springs = row_.size();
+    res.floquet = largest(J1);
+    res.relative_error = (diff + abs(last1) + 16 * eps * abs(res.mu)) / std::max(abs(res.mu), eps);
+    return res;
+  }
+
+ private:
+  enum class Mode { out, stick, forward, backward };
+  struct Spring {
+    Mode mode = Mode::out;
+    Real xc = 0;          // the contact point X_c (stick; set again where a slip ends)
+    Real back_start = 0;  // X_c where the current backward phase began
+  };
+  struct Part {
+    bool in = false, enters = false, leaves = false;
+    Real c0 = 0, c1 = 0;
+  };
+  struct Scheduled {
+    Real phi;
+    std::size_t spring;
+    bool touch;  // touch-down, else contact loss
+  };
+  struct Piece {
+    std::size_t index;
+    Real a, b, prev_end, begin, w1, w2;  // w1, w2: bounds of |w'|, |w''| on the piece
+    WaveForm<Real> form;
+    bool jump;
+    std::vector<Part> parts;
+    std::vector<Scheduled> schedule;
+  };
+  struct Run {
+    Real y, v;
+    std::vector<Spring> s;
+    bool record = false;
+    Real retained = 0, lag = 0, stick = 0, slip = 0, back = 0, largest_back = 0;
+    Real ymin = std::numeric_limits<Real>::infinity(), ymax = -std::numeric_limits<Real>::infinity();
+    std::size_t events = 0;
+  };
+  // The row's sums in the current modes: ⟨s⟩ = Ws (Y + βφ) − As + Gf − Gb + (Wf − Wb) w.
+  struct Sums {
+    Real Ws = 0, As = 0, Wf = 0, Gf = 0, Wb = 0, Gb = 0;
+    Real C = 0, D = 0;  // min over stick springs of X_c + γ_j, max of X_c − γ_j
+    bool stick = false, forward = false, backward = false;
+  };
+
+  Real gj(std::size_t j) const { return gamma_ - row_[j].sigma; }
+
+  Sums sums(const Run& r) const {
+    Sums S;
+    for (std::size_t j = 0; j < row_.size(); ++j) {
+      const Spring& sp = r.s[j];
+      const Real& wt = row_[j].weight;
+      switch (sp.mode) {
+        case Mode::stick: {
+          const Real up = sp.xc + gj(j), down = sp.xc - gj(j);
+          if (!S.stick || up < S.C) S.C = up;
+          if (!S.stick || down > S.D) S.D = down;
+          S.stick = true;
+          S.Ws += wt;
+          S.As += wt * sp.xc;
+          break;
+        }
+        case Mode::forward:
+          S.forward = true;
+          S.Wf += wt;
+          S.Gf += wt * gj(j);
+          break;
+        case Mode::backward:
+          S.backward = true;
+          S.Wb += wt;
+          S.Gb += wt * gj(j);
+          break;
+        default:
+          break;
+      }
+    }
+    return S;
+  }
+
+  Motion<Real> motion(const Run& r, const Piece& pc, const Sums& S, const Real& a) const {
+    const bool slip_only = !S.stick;
+    const Real K = slip_only ? K_slip_ : Real(omega2_ * (p_.kappa + S.Ws));
+    const Real f0 = -omega2_ * (S.Ws * beta_ * a - S.As + S.Gf - S.Gb);
+    const Real f1 = -omega2_ * S.Ws * beta_;
+    return Motion<Real>(c_, K, a, r.y, r.v, f0, f1, &pc.form, Real(-omega2_ * (S.Wf - S.Wb)),
+                        slip_only ? p_.resonant_harmonic : 0u);
+  }
+
+  // X, X', X'' and w, w', w'' at φ under motion m.
+  struct Body {
+    Real x, dx, ddx;
+    std::array<Real, 3> w;
+  };
+  Body at(const Motion<Real>& m, const Piece& pc, const Sums& S, const Real& phi) const {
+    const auto yv = m(phi);
+    const auto w = wave_derivatives(pc.form, phi);
+    const Real mean_s = S.Ws * (yv[0] + beta_ * phi) - S.As + S.Gf - S.Gb + (S.Wf - S.Wb) * w[0];
+    // Y'' from the body's equation as the motion solves it (K may be the resonance's ν² exactly).
+    const Real K_used = S.stick ? Real(omega2_ * (p_.kappa + S.Ws)) : K_slip_;
+    const Real forcing = -omega2_ * (mean_s - S.Ws * yv[0]);
+    const Real ddy = forcing - c_ * yv[1] - K_used * yv[0];
+    return {yv[0] + beta_ * phi, yv[1] + beta_, ddy, w};
+  }
+
+  // The first φ in (a, end] where g ≥ 0, g(φ) and g'(φ) from f; G(x) bounds |g'| beyond x. As the
+  // flat rig's search (rig_engine.hpp): a grid of 16 points per oscillation of the fastest rate,
+  // strided where |g|/G rules a root out; a local maximum between grid points bisected on g'; a
+  // start on an event (g(a) ≥ 0) searched just inside, and a at once where g ≥ 0 down to a.
+  template <class F, class Bound>
+  std::optional<Real> first_root(F f, const Real& a, const Real& end, const Real& rate, Bound G) const {
+    using std::abs;
+    using std::ceil;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    const Real per = ceil(Real(rate * (end - a) / two_pi * 16));
+    if (per > 5e7) throw SolverError("rig dynamics on a curved contact: more than 5e7 event-grid points in one span");
+    const std::size_t steps = std::max<std::size_t>(4, static_cast<std::size_t>(per) + 1);
+    const Real cell = (end - a) / static_cast<unsigned>(steps);
+    Real x0 = a;
+    auto [g0, d0] = f(a);
+    const bool at_event = !(g0 < 0);
+    if (at_event) g0 = Real(-1);
+    while (x0 < end) {
+      Real x1 = x0 + cell;
+      if (g0 < 0 && !(at_event && x0 == a)) {
+        const Real clear = abs(g0) / G(x0) * Real(0.9375);
+        if (clear > cell) x1 = x0 + clear;
+      }
+      if (!(x1 < end) || end - x1 < cell / 1024) x1 = end;
+      auto [g1, d1] = f(x1);
+      if (g1 >= 0) {
+        Real lo = x0, glo = g0;
+        if (at_event && x0 == a) {
+          bool found = false;
+          Real hi = x1;
+          for (int k = 0; k < 200 && !found; ++k) {
+            const Real x = a + (hi - a) / 2;
+            if (!(x > a) || !(x < hi)) break;
+            const Real gx = f(x).first;
+            if (gx < 0) {
+              lo = x;
+              glo = gx;
+              found = true;
+            } else {
+              hi = x;
+            }
+          }
+          if (!found) return a;
+          x1 = hi;
+          g1 = f(hi).first;
+        }
+        return bracketed_root<Real>([&](const Real& x) { return f(x).first; }, lo, x1, glo, g1,
+                                    "rig dynamics event (curved contact)", stats_, Real(1));
+      }
+      if (d0 > 0 && d1 < 0 && !(at_event && x0 == a)) {
+        // a local maximum between grid points: bisected on g' until it is found or ruled out
+        Real lo = x0, hi = x1, glo = g0, ghi = g1;
+        const Real slope = G(x0), margin = 64 * std::numeric_limits<Real>::epsilon() * (1 + abs(g0) + abs(g1));
+        bool excluded = false;
+        for (int it = 0; it < 400; ++it) {
+          if ((glo + ghi) / 2 + slope * (hi - lo) / 2 < -margin) {
+            excluded = true;
+            break;
+          }
+          const Real c2 = (lo + hi) / 2;
+          if (!(c2 > lo) || !(c2 < hi)) break;
+          const auto [gc, dc] = f(c2);
+          if (dc > 0) {
+            lo = c2;
+            glo = gc;
+          } else {
+            hi = c2;
+            ghi = gc;
+          }
+        }
+        const Real xm = (lo + hi) / 2;
+        const Real gm = excluded ? Real(-1) : f(xm).first;
+        if (gm >= 0)
+          return bracketed_root<Real>([&](const Real& x) { return f(x).first; }, x0, xm, g0, gm,
+                                      "rig dynamics event (curved contact)", stats_, Real(1));
+      }
+      x0 = x1;
+      g0 = g1;
+      d0 = d1;
+    }
+    return std::nullopt;
+  }
+
+  // Y's extremes on [a, b] (the amplitude): a grid of 16 points per oscillation, Y' = 0 refined.
+  void track(Run& r, const Motion<Real>& m, const Real& a, const Real& b, const Real& rate) const {
+    using std::ceil;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    const std::size_t steps =
+        std::max<std::size_t>(2, static_cast<std::size_t>(std::min(Real(1e7), ceil(Real(rate * (b - a) / two_pi * 16)))));
+    auto x0 = a;
+    auto y0 = m(a);
+    const auto see = [&](const Real& y) {
+      r.ymin = std::min(r.ymin, y);
+      r.ymax = std::max(r.ymax, y);
+    };
+    see(y0[0]);
+    for (std::size_t k = 1; k <= steps; ++k) {
+      const Real x1 = k == steps ? b : Real(a + (b - a) * static_cast<unsigned>(k) / static_cast<unsigned>(steps));
+      const auto y1 = m(x1);
+      see(y1[0]);
+      if ((y0[1] > 0) != (y1[1] > 0) && y0[1] != 0 && y1[1] != 0) {
+        const Real e = bracketed_root<Real>([&](const Real& x) { return m(x)[1]; }, x0, x1, y0[1], y1[1],
+                                            "rig dynamics extreme (curved contact)", stats_, Real(1));
+        see(m(e)[0]);
+      }
+      x0 = x1;
+      y0 = y1;
+    }
+  }
+
+  void end_backward(Run& r, std::size_t j, const Real& xc_end) const {
+    using std::abs;
+    if (r.s[j].mode == Mode::backward)
+      r.largest_back = std::max(r.largest_back, Real(r.s[j].back_start - xc_end));
+  }
+
+  // The sweeping-process rules at φ where modes may change without an event of the body: a
+  // slip whose direction no longer holds ends (at kinks of w), a stick spring on its boundary and
+  // moving out of it slips, a new contact's mode by its rate (model.md: touch-down).
+  void classify(Run& r, const Piece& pc, const Real& phi) const {
+    using std::abs;
+    const auto w = wave_derivatives(pc.form, phi);
+    const Real X = r.y + beta_ * phi, dX = r.v + beta_;
+    const Real Hp = X - w[0], dHp = dX - w[1], Hm = X + w[0], dHm = dX + w[1];
+    const Real tol = 64 * std::numeric_limits<Real>::epsilon() * (1 + abs(X) + abs(w[0]) + abs(gamma_));
+    for (std::size_t j = 0; j < row_.size(); ++j) {
+      Spring& sp = r.s[j];
+      const Real n = std::max(Real(gj(j) + w[0]), Real(0));
+      switch (sp.mode) {
+        case Mode::forward:
+          if (dHp < 0) {
+            sp.mode = Mode::stick;
+            sp.xc = X - n;
+          }
+          break;
+        case Mode::backward:
+          if (dHm > 0) {
+            end_backward(r, j, Real(X + n));
+            sp.mode = Mode::stick;
+            sp.xc = X + n;
+          }
+          break;
+        case Mode::stick: {
+          const Real s = X - sp.xc;
+          if (s >= n - tol && dHp > 0) {
+            sp.mode = Mode::forward;
+          } else if (s <= -n + tol && dHm < 0) {
+            sp.mode = Mode::backward;
+            sp.back_start = X + n;
+          } else if (s > n) {
+            sp.xc = X - n;  // rounding beyond the bound, clipped
+          } else if (s < -n) {
+            sp.xc = X + n;
+          }
+          break;
+        }
+        default:
+          break;
+      }
+    }
+    (void)Hp;
+    (void)Hm;
+  }
+
+  void touch(Run& r, std::size_t j, const Real& phi) const {
+    r.s[j].mode = Mode::stick;
+    r.s[j].xc = r.y + beta_ * phi;
+  }
+  void lose(Run& r, std::size_t j, const Real& phi) const {
+    end_backward(r, j, Real(r.y + beta_ * phi));
+    r.s[j].mode = Mode::out;
+  }
+
+  void piece(Run& r, const Piece& pc) const {
+    const Real X = r.y + beta_ * pc.a;
+    for (std::size_t j = 0; j < row_.size(); ++j) {
+      Spring& sp = r.s[j];
+      const Part& part = pc.parts[j];
+      const bool in_now = part.in && !part.enters;
+      if (sp.mode != Mode::out && !in_now) {
+        lose(r, j, pc.a);
+      } else if (sp.mode == Mode::out && in_now) {
+        touch(r, j, pc.a);
+      } else if (sp.mode != Mode::out && pc.jump) {
+        // a jump of n: the spring holds its force, projected onto the new bound (instant slip)
+        const Real n_old = std::max(Real(gj(j) + pc.prev_end), Real(0));
+        const Real n_new = std::max(Real(gj(j) + pc.begin), Real(0));
+        Real s = sp.mode == Mode::stick ? Real(X - sp.xc) : (sp.mode == Mode::forward ? n_old : Real(-n_old));
+        if (sp.mode == Mode::backward) end_backward(r, j, Real(X - s));
+        const Real before = X - s;
+        if (s > n_new) s = n_new;
+        if (s < -n_new) {
+          s = -n_new;
+          r.largest_back = std::max(r.largest_back, Real(X - s - before) < 0 ? Real(before - (X - s)) : Real(0));
+        }
+        sp.mode = Mode::stick;
+        sp.xc = X - s;
+      }
+    }
+    classify(r, pc, pc.a);
+    Real a = pc.a;
+    std::size_t next = 0;
+    while (true) {
+      const Real stop = next < pc.schedule.size() ? pc.schedule[next].phi : pc.b;
+      if (stop > a) traverse(r, pc, a, stop);
+      if (next >= pc.schedule.size()) break;
+      a = std::max(a, stop);
+      for (; next < pc.schedule.size() && !(pc.schedule[next].phi > stop); ++next) {
+        const Scheduled& e = pc.schedule[next];
+        if (e.touch) touch(r, e.spring, a);
+        else lose(r, e.spring, a);
+      }
+      classify(r, pc, a);
+    }
+  }
+
+  void traverse(Run& r, const Piece& pc, Real a, const Real& end) const {
+    using std::abs;
+    using std::sqrt;
+    const Real two_pi = boost::math::constants::two_pi<Real>();
+    const long most = 64 + 16 * static_cast<long>(row_.size()) +
+                      8 * static_cast<long>(std::min(Real(1e7), Real(sqrt(Real(omega2_ * (p_.kappa + 1))) * (end - a) / two_pi)));
+    for (long guard = 0; guard < most; ++guard) {
+      const Sums S = sums(r);
+      const Motion<Real> m = motion(r, pc, S, a);
+      const Real rate = std::max(m.rate(), Real(two_pi * rw_.harmonics()));
+      std::optional<Real> stop;
+      int which = -1;
+      const auto consider = [&](int k, const std::optional<Real>& x) {
+        if (x && (!stop || *x < *stop)) {
+          stop = x;
+          which = k;
+        }
+      };
+      const auto lip1 = [&](const Real& x) { return Real(m.slope_bound(x) + abs(beta_) + pc.w1); };
+      const auto lip2 = [&](const Real& x) { return Real(m.curvature_bound(x) + pc.w2); };
+      if (S.stick) {
+        consider(0, first_root([&](const Real& x) {
+                   const Body q = at(m, pc, S, x);
+                   return std::pair<Real, Real>{q.x - q.w[0] - S.C, q.dx - q.w[1]};
+                 }, a, end, rate, lip1));
+        consider(1, first_root([&](const Real& x) {
+                   const Body q = at(m, pc, S, x);
+                   return std::pair<Real, Real>{S.D - q.x - q.w[0], -q.dx - q.w[1]};
+                 }, a, end, rate, lip1));
+      }
+      if (S.forward)
+        consider(2, first_root([&](const Real& x) {
+                   const Body q = at(m, pc, S, x);
+                   return std::pair<Real, Real>{-(q.dx - q.w[1]), -(q.ddx - q.w[2])};
+                 }, a, end, rate, lip2));
+      if (S.backward)
+        consider(3, first_root([&](const Real& x) {
+                   const Body q = at(m, pc, S, x);
+                   return std::pair<Real, Real>{q.dx + q.w[1], q.ddx + q.w[2]};
+                 }, a, end, rate, lip2));
+      const Real b = stop ? *stop : end;
+      // the span [a, b] in these modes: its integrals, and Y's extremes on the recorded period
+      if (b > a) {
+        const auto ya = m(a), yb = m(b);
+        const Real K = S.stick ? Real(omega2_ * (p_.kappa + S.Ws)) : K_slip_;
+        const Real lag = (m.forcing_integral(b) - (yb[1] - ya[1]) - c_ * (yb[0] - ya[0])) / K;
+        r.lag += lag;
+        r.retained += S.Ws * (lag + beta_ * (b * b - a * a) / 2) + (S.Gf - S.Gb - S.As) * (b - a) +
+                      (S.Wf - S.Wb) * wave_integral(pc.form, a, b);
+        r.stick += S.Ws * (b - a);
+        r.slip += (S.Wf + S.Wb) * (b - a);
+        r.back += S.Wb * (b - a);
+        if (r.record) track(r, m, a, b, rate);
+      }
+      const auto yb = m(b);
+      r.y = yb[0];
+      r.v = yb[1];
+      if (!stop) return;
+      ++r.events;
+      const Body q = at(m, pc, S, b);
+      const Real tol = 64 * std::numeric_limits<Real>::epsilon() * (1 + abs(q.x) + abs(q.w[0]) + abs(gamma_));
+      for (std::size_t j = 0; j < row_.size(); ++j) {
+        Spring& sp = r.s[j];
+        const Real n = std::max(Real(gj(j) + q.w[0]), Real(0));
+        if (which == 0 && sp.mode == Mode::stick && sp.xc + gj(j) <= S.C + tol) {
+          sp.mode = Mode::forward;
+        } else if (which == 1 && sp.mode == Mode::stick && sp.xc - gj(j) >= S.D - tol) {
+          sp.mode = Mode::backward;
+          sp.back_start = q.x + n;
+        } else if (which == 2 && sp.mode == Mode::forward) {
+          sp.mode = Mode::stick;
+          sp.xc = q.x - n;
+        } else if (which == 3 && sp.mode == Mode::backward) {
+          end_backward(r, j, Real(q.x + n));
+          sp.mode = Mode::stick;
+          sp.xc = q.x + n;
+        }
+      }
+      classify(r, pc, b);
+      a = b;
+      if (!(a < end)) return;
+    }
+    throw SolverError("rig dynamics on a curved contact: more than " + std::to_string(most) +
+                      " events in one span of the wave (chattering)");
+  }
+
+  // Newton on P(u) − u = 0 with a finite-difference Jacobian, after a few periods of transient;
+  // the transient alone (up to 4000 periods while it contracts) where Newton does not converge.
+  State shoot(State u, std::size_t& steps, Real& last, std::array<std::array<Real, 2>, 2>& J) const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real body = sqrt(Real(omega2_ * (p_.kappa + 1)));  // Y' in units of the body's rate
+    const auto size = [&](const State& d) { return abs(d[0]) + abs(d[1]) / body; };
+    const auto scale = [&](const State& x) { return 1 + abs(x[0]) + abs(x[1]) / body; };
+    for (int k = 0; k < 4; ++k) u = period(u);
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      State Pu = period(u);
+      State res{Pu[0] - u[0], Pu[1] - u[1]};
+      for (int it = 0; it < 40; ++it) {
+        if (size(res) <= 64 * eps * scale(u)) {
+          last = size(res);
+          return u;
+        }
+        jacobian(u, J);
+        ++steps;
+        const Real a11 = J[0][0] - 1, a12 = J[0][1], a21 = J[1][0], a22 = J[1][1] - 1;
+        const Real det = a11 * a22 - a12 * a21;
+        if (det == 0) break;
+        State d{(-res[0] * a22 + res[1] * a12) / det, (-res[1] * a11 + res[0] * a21) / det};
+        bool better = false;
+        for (int halve = 0; halve < 12; ++halve) {
+          const State un{u[0] + d[0], u[1] + d[1]};
+          const State Pn = period(un);
+          const State rn{Pn[0] - un[0], Pn[1] - un[1]};
+          if (size(rn) < size(res)) {
+            u = un;
+            Pu = Pn;
+            res = rn;
+            better = true;
+            break;
+          }
+          d[0] /= 2;
+          d[1] /= 2;
+        }
+        if (!better) {
+          // converged as far as the map's kinks and rounding allow?
+          if (size(res) <= sqrt(eps) * scale(u)) {
+            last = size(res);
+            return u;
+          }
+          break;
+        }
+      }
+      // the transient from here while it contracts, then Newton again
+      Real prev = size(res);
+      for (int k = 0; k < 4000; ++k) {
+        u = Pu;
+        Pu = period(u);
+        res = {Pu[0] - u[0], Pu[1] - u[1]};
+        const Real now = size(res);
+        if (now <= 64 * eps * scale(u)) {
+          last = now;
+          return u;
+        }
+        if (k > 16 && now > prev * Real(0.999)) break;
+        prev = now;
+      }
+    }
+    throw SolverError("rig dynamics on a curved contact: no periodic state found (Newton and 4000 periods of "
+                      "transient did not converge)");
+  }
+
+  // The one-period map's Jacobian at u by forward differences (its multipliers: stability).
+  void jacobian(const State& u, std::array<std::array<Real, 2>, 2>& J) const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real body = sqrt(Real(omega2_ * (p_.kappa + 1)));
+    const State Pu = period(u);
+    const Real h[2] = {sqrt(eps) * (1 + abs(u[0])), sqrt(eps) * (body + abs(u[1]))};
+    for (int c = 0; c < 2; ++c) {
+      State uh = u;
+      uh[c] += h[c];
+      const State Ph = period(uh);
+      J[0][c] = (Ph[0] - Pu[0]) / h[c];
+      J[1][c] = (Ph[1] - Pu[1]) / h[c];
+    }
+  }
+
+  static double largest(const std::array<std::array<Real, 2>, 2>& J) {
+    const double a = static_cast<double>(J[0][0]), b = static_cast<double>(J[0][1]), c = static_cast<double>(J[1][0]),
+                 d = static_cast<double>(J[1][1]);
+    const double tr = a + d, det = a * d - b * c, disc = tr * tr / 4 - det;
+    if (disc >= 0) return std::max(std::abs(tr / 2 + std::sqrt(disc)), std::abs(tr / 2 - std::sqrt(disc)));
+    return std::sqrt(std::abs(det));
+  }
+
+  const Waveform<Real>& wave_;
+  RigWave<Real> rw_;
+  Real beta_, gamma_;
+  RigParameters<Real> p_;
+  std::vector<RowSpring<Real>> row_;
+  Real omega2_, c_, K_slip_, section_, normal_area_;
+  std::vector<Piece> pieces_;
+  mutable RootStats stats_;
+};
+
+}  // namespace detail
+
+template <class Real>
+std::vector<RowSpring<Real>> mdr_row(const Profile<Real>& profile, const Real& sigma_max, std::size_t n) {
+  if (n == 0) throw DomainError("the MDR row needs at least one spring");
+  const Real x_max = profile.x_at_sigma(sigma_max);
+  std::vector<RowSpring<Real>> row;
+  if (profile.flat_length() > 0) row.push_back({Real(0), Real(profile.flat_length() / x_max)});
+  const Real t0 = profile.t_at_sigma(Real(0)), t1 = profile.t_at_sigma(sigma_max);
+  std::vector<Real> ends{t0};
+  for (const Real& t : profile.t_breaks())
+    if (t > t0 && t < t1) ends.push_back(t);
+  ends.push_back(t1);
+  for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+    const Real len = ends[k + 1] - ends[k];
+    const std::size_t m = std::max<std::size_t>(
+        1, static_cast<std::size_t>(std::llround(static_cast<double>(len / (t1 - t0)) * static_cast<double>(n))));
+    const Real h = len / static_cast<unsigned>(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Real t = ends[k] + h * (Real(static_cast<unsigned>(i)) + Real(0.5));
+      row.push_back({profile.sigma_at_t(t), Real(profile.dx_dt(t) * h / x_max)});
+    }
+  }
+  return row;
+}
+
+template <class Real>
+RowRigResult<Real> solve_rig_row(const Waveform<Real>& w, const Real& beta, const Real& gamma,
+                                 const RigParameters<Real>& p, const std::vector<RowSpring<Real>>& row,
+                                 const Options& opt) {
+  detail::check_beta(w, beta);
+  detail::check_contact(w, gamma);
+  try {
+    const detail::RowRigEngine<Real> engine(w, beta, gamma, p, row, opt);
+    return engine.solve();
+  } catch (const SolverError& e) {
+    throw SolverError(detail::context<Real>(w, beta, &gamma) + ": " + e.what());
+  }
+}
+
+}  // namespace vibrofric
