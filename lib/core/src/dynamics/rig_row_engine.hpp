@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -166,6 +167,15 @@ class RowRigEngine {
     std::vector<Part> parts;
     std::vector<Scheduled> schedule;
   };
+  // The row's sums in the current modes: ⟨s⟩ = Ws (Y + βφ) − As + Gf − Gb + (Wf − Wb) w.
+  struct Sums {
+    Real Ws = 0, As = 0, Wf = 0, Gf = 0, Wb = 0, Gb = 0;
+    Real C = 0, D = 0;  // min over stick springs of X_c + γ_j, max of X_c − γ_j
+    bool stick = false, forward = false, backward = false;
+  };
+  // A period's state: the springs, and by mode their sums (kept as springs change mode, summed
+  // afresh at every piece of the wave against drift) and the stick springs' thresholds in order,
+  // so that an event costs O(log n) and a period O(n log n).
   struct Run {
     Real y, v;
     std::vector<Spring> s;
@@ -173,46 +183,96 @@ class RowRigEngine {
     Real retained = 0, lag = 0, stick = 0, slip = 0, back = 0, largest_back = 0;
     Real ymin = std::numeric_limits<Real>::infinity(), ymax = -std::numeric_limits<Real>::infinity();
     std::size_t events = 0;
-  };
-  // The row's sums in the current modes: ⟨s⟩ = Ws (Y + βφ) − As + Gf − Gb + (Wf − Wb) w.
-  struct Sums {
-    Real Ws = 0, As = 0, Wf = 0, Gf = 0, Wb = 0, Gb = 0;
-    Real C = 0, D = 0;  // min over stick springs of X_c + γ_j, max of X_c − γ_j
-    bool stick = false, forward = false, backward = false;
+    Sums sums;
+    std::set<std::pair<Real, std::size_t>> up, down;  // stick: X_c + γ_j, X_c − γ_j
+    std::set<std::size_t> forward, backward;
   };
 
   Real gj(std::size_t j) const { return gamma_ - row_[j].sigma; }
 
   Sums sums(const Run& r) const {
+    Sums S = r.sums;
+    S.stick = !r.up.empty();
+    S.forward = !r.forward.empty();
+    S.backward = !r.backward.empty();
+    if (S.stick) {
+      S.C = r.up.begin()->first;
+      S.D = r.down.rbegin()->first;
+    }
+    return S;
+  }
+
+  // Spring j leaves its mode (its share of the sums and its place in the ordered sets) and
+  // enters `mode` with contact point xc.
+  void set_mode(Run& r, std::size_t j, Mode mode, const Real& xc = Real(0)) const {
+    Spring& sp = r.s[j];
+    const Real& wt = row_[j].weight;
+    Sums& S = r.sums;
+    switch (sp.mode) {
+      case Mode::stick:
+        S.Ws -= wt;
+        S.As -= wt * sp.xc;
+        r.up.erase({Real(sp.xc + gj(j)), j});
+        r.down.erase({Real(sp.xc - gj(j)), j});
+        if (r.up.empty()) S.Ws = S.As = 0;
+        break;
+      case Mode::forward:
+        S.Wf -= wt;
+        S.Gf -= wt * gj(j);
+        r.forward.erase(j);
+        if (r.forward.empty()) S.Wf = S.Gf = 0;
+        break;
+      case Mode::backward:
+        S.Wb -= wt;
+        S.Gb -= wt * gj(j);
+        r.backward.erase(j);
+        if (r.backward.empty()) S.Wb = S.Gb = 0;
+        break;
+      default:
+        break;
+    }
+    sp.mode = mode;
+    switch (mode) {
+      case Mode::stick:
+        sp.xc = xc;
+        S.Ws += wt;
+        S.As += wt * xc;
+        r.up.insert({Real(xc + gj(j)), j});
+        r.down.insert({Real(xc - gj(j)), j});
+        break;
+      case Mode::forward:
+        S.Wf += wt;
+        S.Gf += wt * gj(j);
+        r.forward.insert(j);
+        break;
+      case Mode::backward:
+        S.Wb += wt;
+        S.Gb += wt * gj(j);
+        r.backward.insert(j);
+        break;
+      default:
+        break;
+    }
+  }
+
+  // The sums afresh from the springs' modes (against the drift of adding and removing).
+  void resum(Run& r) const {
     Sums S;
     for (std::size_t j = 0; j < row_.size(); ++j) {
       const Spring& sp = r.s[j];
       const Real& wt = row_[j].weight;
-      switch (sp.mode) {
-        case Mode::stick: {
-          const Real up = sp.xc + gj(j), down = sp.xc - gj(j);
-          if (!S.stick || up < S.C) S.C = up;
-          if (!S.stick || down > S.D) S.D = down;
-          S.stick = true;
-          S.Ws += wt;
-          S.As += wt * sp.xc;
-          break;
-        }
-        case Mode::forward:
-          S.forward = true;
-          S.Wf += wt;
-          S.Gf += wt * gj(j);
-          break;
-        case Mode::backward:
-          S.backward = true;
-          S.Wb += wt;
-          S.Gb += wt * gj(j);
-          break;
-        default:
-          break;
+      if (sp.mode == Mode::stick) {
+        S.Ws += wt;
+        S.As += wt * sp.xc;
+      } else if (sp.mode == Mode::forward) {
+        S.Wf += wt;
+        S.Gf += wt * gj(j);
+      } else if (sp.mode == Mode::backward) {
+        S.Wb += wt;
+        S.Gb += wt * gj(j);
       }
     }
-    return S;
+    r.sums = S;
   }
 
   Motion<Real> motion(const Run& r, const Piece& pc, const Sums& S, const Real& a) const {
@@ -365,52 +425,39 @@ class RowRigEngine {
     const Real X = r.y + beta_ * phi, dX = r.v + beta_;
     const Real Hp = X - w[0], dHp = dX - w[1], Hm = X + w[0], dHm = dX + w[1];
     const Real tol = 64 * std::numeric_limits<Real>::epsilon() * (1 + abs(X) + abs(w[0]) + abs(gamma_));
-    for (std::size_t j = 0; j < row_.size(); ++j) {
-      Spring& sp = r.s[j];
-      const Real n = std::max(Real(gj(j) + w[0]), Real(0));
-      switch (sp.mode) {
-        case Mode::forward:
-          if (dHp < 0) {
-            sp.mode = Mode::stick;
-            sp.xc = X - n;
-          }
-          break;
-        case Mode::backward:
-          if (dHm > 0) {
-            end_backward(r, j, Real(X + n));
-            sp.mode = Mode::stick;
-            sp.xc = X + n;
-          }
-          break;
-        case Mode::stick: {
-          const Real s = X - sp.xc;
-          if (s >= n - tol && dHp > 0) {
-            sp.mode = Mode::forward;
-          } else if (s <= -n + tol && dHm < 0) {
-            sp.mode = Mode::backward;
-            sp.back_start = X + n;
-          } else if (s > n) {
-            sp.xc = X - n;  // rounding beyond the bound, clipped
-          } else if (s < -n) {
-            sp.xc = X + n;
-          }
-          break;
-        }
-        default:
-          break;
+    const auto n = [&](std::size_t j) { return std::max(Real(gj(j) + w[0]), Real(0)); };
+    if (dHp < 0)
+      for (const std::size_t j : std::vector<std::size_t>(r.forward.begin(), r.forward.end()))
+        set_mode(r, j, Mode::stick, Real(X - n(j)));
+    if (dHm > 0)
+      for (const std::size_t j : std::vector<std::size_t>(r.backward.begin(), r.backward.end())) {
+        end_backward(r, j, Real(X + n(j)));
+        set_mode(r, j, Mode::stick, Real(X + n(j)));
+      }
+    // stick springs on the forward bound (s ≥ n − tol: X_c + γ_j ≤ H+ + tol) slip where H+ rises;
+    // else those beyond it by rounding are clipped onto it
+    std::vector<std::size_t> on;
+    for (auto it = r.up.begin(); it != r.up.end() && it->first <= Hp + tol; ++it)
+      if (dHp > 0 || it->first < Hp) on.push_back(it->second);
+    for (const std::size_t j : on) set_mode(r, j, dHp > 0 ? Mode::forward : Mode::stick, Real(X - n(j)));
+    on.clear();
+    for (auto it = r.down.rbegin(); it != r.down.rend() && it->first >= Hm - tol; ++it)
+      if (dHm < 0 || it->first > Hm) on.push_back(it->second);
+    for (const std::size_t j : on) {
+      if (r.s[j].mode != Mode::stick) continue;  // slipped forward just now (n = 0: on both bounds)
+      if (dHm < 0) {
+        set_mode(r, j, Mode::backward);
+        r.s[j].back_start = X + n(j);
+      } else {
+        set_mode(r, j, Mode::stick, Real(X + n(j)));
       }
     }
-    (void)Hp;
-    (void)Hm;
   }
 
-  void touch(Run& r, std::size_t j, const Real& phi) const {
-    r.s[j].mode = Mode::stick;
-    r.s[j].xc = r.y + beta_ * phi;
-  }
+  void touch(Run& r, std::size_t j, const Real& phi) const { set_mode(r, j, Mode::stick, Real(r.y + beta_ * phi)); }
   void lose(Run& r, std::size_t j, const Real& phi) const {
     end_backward(r, j, Real(r.y + beta_ * phi));
-    r.s[j].mode = Mode::out;
+    set_mode(r, j, Mode::out);
   }
 
   void piece(Run& r, const Piece& pc) const {
@@ -435,10 +482,10 @@ class RowRigEngine {
           s = -n_new;
           r.largest_back = std::max(r.largest_back, Real(X - s - before) < 0 ? Real(before - (X - s)) : Real(0));
         }
-        sp.mode = Mode::stick;
-        sp.xc = X - s;
+        set_mode(r, j, Mode::stick, Real(X - s));
       }
     }
+    resum(r);
     classify(r, pc, pc.a);
     Real a = pc.a;
     std::size_t next = 0;
@@ -517,21 +564,24 @@ class RowRigEngine {
       ++r.events;
       const Body q = at(m, pc, S, b);
       const Real tol = 64 * std::numeric_limits<Real>::epsilon() * (1 + abs(q.x) + abs(q.w[0]) + abs(gamma_));
-      for (std::size_t j = 0; j < row_.size(); ++j) {
-        Spring& sp = r.s[j];
-        const Real n = std::max(Real(gj(j) + q.w[0]), Real(0));
-        if (which == 0 && sp.mode == Mode::stick && sp.xc + gj(j) <= S.C + tol) {
-          sp.mode = Mode::forward;
-        } else if (which == 1 && sp.mode == Mode::stick && sp.xc - gj(j) >= S.D - tol) {
-          sp.mode = Mode::backward;
-          sp.back_start = q.x + n;
-        } else if (which == 2 && sp.mode == Mode::forward) {
-          sp.mode = Mode::stick;
-          sp.xc = q.x - n;
-        } else if (which == 3 && sp.mode == Mode::backward) {
-          end_backward(r, j, Real(q.x + n));
-          sp.mode = Mode::stick;
-          sp.xc = q.x + n;
+      const auto n = [&](std::size_t j) { return std::max(Real(gj(j) + q.w[0]), Real(0)); };
+      std::vector<std::size_t> change;
+      if (which == 0) {
+        for (auto it = r.up.begin(); it != r.up.end() && it->first <= S.C + tol; ++it) change.push_back(it->second);
+        for (const std::size_t j : change) set_mode(r, j, Mode::forward);
+      } else if (which == 1) {
+        for (auto it = r.down.rbegin(); it != r.down.rend() && it->first >= S.D - tol; ++it) change.push_back(it->second);
+        for (const std::size_t j : change) {
+          set_mode(r, j, Mode::backward);
+          r.s[j].back_start = q.x + n(j);
+        }
+      } else if (which == 2) {
+        for (const std::size_t j : std::vector<std::size_t>(r.forward.begin(), r.forward.end()))
+          set_mode(r, j, Mode::stick, Real(q.x - n(j)));
+      } else {
+        for (const std::size_t j : std::vector<std::size_t>(r.backward.begin(), r.backward.end())) {
+          end_backward(r, j, Real(q.x + n(j)));
+          set_mode(r, j, Mode::stick, Real(q.x + n(j)));
         }
       }
       classify(r, pc, b);

@@ -12,7 +12,8 @@
 // The events reduce to two functions of the body, H± = X ∓ w: a stick spring slips forward where H+
 // reaches its threshold X_c + γ − σ, backward where H− reaches X_c − γ + σ; every forward slip ends
 // together where H+' = 0 (X_c' = H+' for all), every backward one where H−' = 0; touch-down and
-// contact loss are known phases of the wave. So a period costs O(n) events, each found by the
+// contact loss are known phases of the wave. So a period costs O(n) events (O(n log n) work: the
+// stick springs' thresholds kept in order, the sums kept by mode), each found by the
 // rig's bracketing (a grid finer than the body's oscillation, strided by a slope bound) and toms748.
 //
 // The periodic state is taken at w's minimum, where the contact opens fully (γ + min w ≤ 0 needed:
