@@ -51,7 +51,6 @@ class RowRigEngine {
       const std::size_t i = (i0 + k) % P;
       const Real shift = i < i0 ? Real(1) : Real(0);
       Piece pc;
-      pc.index = i;
       pc.a = w.piece_begin(i) + shift;
       pc.b = w.piece_end(i) + shift;
       pc.form = rw_.form(i);
@@ -160,7 +159,6 @@ class RowRigEngine {
     bool touch;  // touch-down, else contact loss
   };
   struct Piece {
-    std::size_t index;
     Real a, b, prev_end, begin, w1, w2;  // w1, w2: bounds of |w'|, |w''| on the piece
     WaveForm<Real> form;
     bool jump;
@@ -411,7 +409,6 @@ class RowRigEngine {
   }
 
   void end_backward(Run& r, std::size_t j, const Real& xc_end) const {
-    using std::abs;
     if (r.s[j].mode == Mode::backward)
       r.largest_back = std::max(r.largest_back, Real(r.s[j].back_start - xc_end));
   }
