@@ -63,7 +63,7 @@ or 'profile:FILE' (heights in m). Numbers as for mu() (floats by their shortest 
 mass kg and k_system N/m (both; damping N s/m optional): tangential rig dynamics (model.md), a body
 of mass m on the apparatus' spring; then kappa, omega, zeta and the rig's stick, slip and flight
 fractions and Floquet multiplier follow contact_fraction. On a curved shape the body carries the
-MDR row: kappa and omega of k_x_max_N_per_m = 2 a_max G* (every spring touching), gamma <= 1.
+MDR row: kappa and omega of k_x_max_N_per_m = 2 a_max G* (every spring touching), any gamma.
 u_x, u_y (m, zero-to-peak, >= 0), phase (periods) and in_plane_wave (a catalogue wave): in-plane
 oscillation (model.md), a_l = G* u_x/(mu0 E* A) returned as longitudinal and transverse; mu is then
 the in-plane model's, with F_y_mean_N and the flat punch's fractions. wave = 'constant' with F_N: a

@@ -220,7 +220,7 @@ periodic state is found.
 
 profile: a curved contact ('sphere', 'cone', 'power:N', 'wearflat:L', 'profile:FILE'; model.md,
 "On a curved contact"): the body carries the whole MDR row, kappa and omega of k_x,max (every
-spring touching); gamma <= 1 (the contact opens once per period). The row is solved at n and 2n
+spring touching); any gamma (the centre in contact all period too). The row is solved at n and 2n
 springs: mu_over_mu0 and the fractions carry the digits the two agree on, and 'springs' is 2n.
 )doc");
 }

@@ -63,7 +63,7 @@ const char* const kRig =
     "  the sliding direction; the normal indentation follows the wave as prescribed (no normal\n"
     "  dynamics): K = k_s/k_x, W = sqrt(k_x/m)/(2 pi f),\n"
     "  Z = c/(2 sqrt(m k_s)); sine, Fourier and piecewise-linear waves. With --profile the body\n"
-    "  carries the whole MDR row (k_x: k_x,max = 2 a_max G*, every spring touching; gamma <= 1), the\n"
+    "  carries the whole MDR row (k_x: k_x,max = 2 a_max G*, every spring touching; any gamma), the\n"
     "  row solved at n and 2n springs and printed to the digits they agree on. mu prints the\n"
     "  stick, slip and flight fractions (they add to 1; backward_slip_fraction is the part of the\n"
     "  slip that goes backward), the body's amplitude, the largest backward slip and the largest\n"

@@ -193,9 +193,6 @@ Significant row_rig_value(const WaveSpec& wave, const Point& p, const RigSpec& r
   check_beta(*w, beta);
   check_contact(*w, gamma);
   const std::string where = rig_context(wave, p, rig) + "profile " + profile.name + ": ";
-  if (gamma + w->minimum() > 0)
-    throw DomainError(where + "rig dynamics on a curved contact needs the contact to open fully once per period "
-                      "(expected gamma + min w <= 0: gamma <= 1 for the catalogue waves)");
   const double sigma_max = gamma + w->maximum();
   if (sigma_max > shape->sigma_limit())
     throw DomainError(where + "the contact reaches beyond the profile's last sample");

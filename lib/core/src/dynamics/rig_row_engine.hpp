@@ -25,6 +25,13 @@ template <class Real>
 class RowRigEngine {
  public:
   using State = std::array<Real, 2>;  // Y, Y' at the section
+  enum class Mode { out, stick, forward, backward };
+  struct Spring {
+    Mode mode = Mode::out;
+    Real xc = 0;          // the contact point X_c (stick; set again where a slip ends)
+    Real back_start = 0;  // X_c where the current backward phase began
+  };
+  using Row = std::vector<Spring>;
 
   RowRigEngine(const Waveform<Real>& w, const Real& beta, const Real& gamma, const RigParameters<Real>& p,
                const std::vector<RowSpring<Real>>& row, const Options& opt)
@@ -34,10 +41,7 @@ class RowRigEngine {
     if (!(p.kappa > 0) || !(p.omega > 0) || !(p.zeta >= 0))
       throw DomainError("rig dynamics: expected kappa > 0, omega > 0, zeta >= 0");
     if (row.empty()) throw DomainError("rig dynamics on a curved contact: the row has no spring");
-    if (gamma + w.minimum() > 0)
-      throw DomainError("rig dynamics on a curved contact: gamma = " + short_str(gamma) +
-                        " keeps the centre in contact all period; the row's periodic state is taken where the "
-                        "contact opens fully (expected gamma + min w <= 0: gamma <= 1 for the catalogue waves)");
+    for (const RowSpring<Real>& sp : row) carried_ = carried_ || gamma - sp.sigma + w.minimum() > 0;
     const Real two_pi = boost::math::constants::two_pi<Real>();
     omega2_ = two_pi * p.omega * (two_pi * p.omega);
     c_ = 2 * two_pi * p.zeta * p.omega * sqrt(p.kappa);
@@ -55,7 +59,7 @@ class RowRigEngine {
       pc.b = w.piece_end(i) + shift;
       pc.form = rw_.form(i);
       if (!pc.form.a) pc.form.origin += shift;
-      pc.jump = k > 0 && w.jump_at(i);
+      pc.jump = w.jump_at(i);  // at the section too: the carried springs arrive at its left limit
       pc.prev_end = w.end_value((i + P - 1) % P);
       pc.begin = w.begin_value(i);
       pc.w1 = abs(pc.form.p1);
@@ -89,14 +93,34 @@ class RowRigEngine {
     if (!(normal_area_ > 0)) throw DomainError("rig dynamics on a curved contact: no spring of the row touches");
   }
 
-  // The one-period map of (Y, Y') from the section to the section a period later.
-  State period(const State& in, RowRigResult<Real>* record = nullptr) const {
+  // The one-period map of (Y, Y') from the section to the section a period later; where springs
+  // stay in contact through the section (carried_), also of their states (`row_in`, none: all out,
+  // so that they touch down there), each contact point relative to the drive (X_c − βφ).
+  State period(const State& in, RowRigResult<Real>* record = nullptr, const Row* row_in = nullptr,
+               Row* row_out = nullptr) const {
     Run r;
     r.y = in[0];
     r.v = in[1];
     r.s.assign(row_.size(), Spring{});
+    if (row_in) {
+      const Real X0 = beta_ * section_;
+      for (std::size_t j = 0; j < row_.size(); ++j) {
+        const Spring& sp = (*row_in)[j];
+        if (sp.mode == Mode::out) continue;
+        set_mode(r, j, sp.mode, Real(sp.xc + X0));
+        r.s[j].back_start = sp.back_start + X0;
+      }
+    }
     r.record = record != nullptr;
     for (const Piece& pc : pieces_) piece(r, pc);
+    if (row_out) {
+      const Real X1 = beta_ * (section_ + 1);
+      *row_out = r.s;
+      for (Spring& sp : *row_out) {
+        sp.xc -= X1;
+        sp.back_start -= X1;
+      }
+    }
     if (record) {
       record->retained_area = r.retained;
       record->lag_integral = r.lag;
@@ -119,12 +143,19 @@ class RowRigEngine {
     Real last1 = 0, last2 = 0;
     std::size_t steps1 = 0, steps2 = 0;
     std::array<std::array<Real, 2>, 2> J1{}, J2{};
-    const State a = shoot(State{Real(0), Real(0)}, steps1, last1, J1);
-    const State b = shoot(State{Real(0), Real(-beta_)}, steps2, last2, J2);
-    jacobian(a, J1);
+    Row ra, rb;  // the carried springs' states
+    State a, b;
+    if (carried_) {
+      a = settle(State{Real(0), Real(0)}, ra, steps1, last1);
+      b = settle(State{Real(0), Real(-beta_)}, rb, steps2, last2);
+    } else {
+      a = shoot(State{Real(0), Real(0)}, steps1, last1, J1);
+      b = shoot(State{Real(0), Real(-beta_)}, steps2, last2, J2);
+      jacobian(a, J1);
+    }
     RowRigResult<Real> res, other;
-    period(a, &res);
-    period(b, &other);
+    period(a, &res, carried_ ? &ra : nullptr);
+    period(b, &other, carried_ ? &rb : nullptr);
     res.normal_area = other.normal_area = normal_area_;
     res.mu = res.retained_area / normal_area_;
     other.mu = other.retained_area / normal_area_;
@@ -137,18 +168,13 @@ class RowRigEngine {
     res.section = section_;
     res.newton_steps = steps1;
     res.springs = row_.size();
-    res.floquet = largest(J1);
+    res.floquet = carried_ ? carried_multiplier(a, ra) : largest(J1);
     res.relative_error = (diff + abs(last1) + 16 * eps * abs(res.mu)) / std::max(abs(res.mu), eps);
     return res;
   }
 
+
  private:
-  enum class Mode { out, stick, forward, backward };
-  struct Spring {
-    Mode mode = Mode::out;
-    Real xc = 0;          // the contact point X_c (stick; set again where a slip ends)
-    Real back_start = 0;  // X_c where the current backward phase began
-  };
   struct Part {
     bool in = false, enters = false, leaves = false;
     Real c0 = 0, c1 = 0;
@@ -656,21 +682,208 @@ class RowRigEngine {
                       "transient did not converge)");
   }
 
-  // The one-period map's Jacobian at u by forward differences (its multipliers: stability).
-  void jacobian(const State& u, std::array<std::array<Real, 2>, 2>& J) const {
+  // The row moved with the body by dy, its forces held: every stick spring's contact point too.
+  static Row shift(Row R, const Real& dy) {
+    for (Spring& sp : R)
+      if (sp.mode == Mode::stick) sp.xc += dy;
+    return R;
+  }
+
+  // The one-period map's Jacobian at u by forward differences (its multipliers: stability), the
+  // carried springs' forces (if any) held at R's: a change of Y moves their contact points along.
+  void jacobian(const State& u, std::array<std::array<Real, 2>, 2>& J, const Row* R = nullptr) const {
     using std::abs;
     using std::sqrt;
     const Real eps = std::numeric_limits<Real>::epsilon();
     const Real body = sqrt(Real(omega2_ * (p_.kappa + 1)));
-    const State Pu = period(u);
+    const State Pu = period(u, nullptr, R);
     const Real h[2] = {sqrt(eps) * (1 + abs(u[0])), sqrt(eps) * (body + abs(u[1]))};
     for (int c = 0; c < 2; ++c) {
       State uh = u;
       uh[c] += h[c];
-      const State Ph = period(uh);
+      const Row shifted = R && c == 0 ? shift(*R, h[0]) : Row{};
+      const State Ph = period(uh, nullptr, R && c == 0 ? &shifted : R);
       J[0][c] = (Ph[0] - Pu[0]) / h[c];
       J[1][c] = (Ph[1] - Pu[1]) / h[c];
     }
+  }
+
+  // Spring j's force at the section in state (Y, sp): stick Y − (X_c − βφ), slip ±n, out 0 (n at
+  // the section's left limit, where the carried states are taken).
+  Real section_force(const Real& y, const Spring& sp, std::size_t j) const {
+    const Real n = std::max(Real(gj(j) + pieces_.front().prev_end), Real(0));
+    switch (sp.mode) {
+      case Mode::stick:
+        return y - sp.xc;
+      case Mode::forward:
+        return n;
+      case Mode::backward:
+        return -n;
+      default:
+        return 0;
+    }
+  }
+  // The largest change of a spring's force at the section between two states.
+  Real row_change(const Real& y0, const Row& a, const Real& y1, const Row& b) const {
+    using std::abs;
+    Real d = 0;
+    for (std::size_t j = 0; j < row_.size(); ++j)
+      d = std::max(d, Real(abs(Real(section_force(y1, b[j], j) - section_force(y0, a[j], j)))));
+    return d;
+  }
+  Real body_size(const State& d) const {
+    using std::abs;
+    using std::sqrt;
+    return abs(d[0]) + abs(d[1]) / sqrt(Real(omega2_ * (p_.kappa + 1)));
+  }
+
+  // The periodic state where springs stay in contact through the section (γ − σ + min w > 0):
+  // Newton on (Y, Y') with the row's forces held (the 2×2 Jacobian by forward differences; the
+  // stick springs' contact points move with Y, so that the row's slow shift with the body, which
+  // only the system spring restores, is Newton's), the row then carried on to the states the
+  // period ends in, moved by Newton's step. Every spring in contact slips once a period
+  // (the body advances β) and so forgets its start: the row's states follow the body's. Converged
+  // where one period returns the body to 64 ε of its scale and every spring's force to 64 ε of the
+  // row's largest bound; else, stalled (the map's kinks, rounding), the best state within √ε; else
+  // the full map's transient while it contracts (up to 4000 periods).
+  State settle(State u, Row& R, std::size_t& steps, Real& last) const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real bound = 1 + abs(gamma_) + abs(wave_.maximum());
+    const auto scale = [&](const State& x) { return 1 + body_size(x); };
+    R.assign(row_.size(), Spring{});
+    const auto advance = [&](const State& x, Row& rows) {
+      Row next;
+      const State Px = period(x, nullptr, &rows, &next);
+      rows = std::move(next);
+      return Px;
+    };
+    for (int k = 0; k < 4; ++k) u = advance(u, R);
+    State best_u = u;
+    Row best_R = R;
+    Real best = std::numeric_limits<Real>::infinity();
+    int stalled = 0;
+    for (int it = 0; it < 200; ++it) {
+      Row R1;
+      const State Pu = period(u, nullptr, &R, &R1);
+      const State res{Pu[0] - u[0], Pu[1] - u[1]};
+      const Real now = std::max(body_size(res) / scale(u), row_change(u[0], R, Pu[0], R1) / bound);
+      if (now < best) {
+        if (!(now > best / 2)) stalled = 0;
+        best = now;
+        best_u = u;
+        best_R = R;
+      }
+      if (now <= 64 * eps) {
+        last = now * scale(u);
+        return u;
+      }
+      if (++stalled > 12) break;
+      std::array<std::array<Real, 2>, 2> J;
+      jacobian(u, J, &R);
+      ++steps;
+      const Real a11 = J[0][0] - 1, a12 = J[0][1], a21 = J[1][0], a22 = J[1][1] - 1;
+      const Real det = a11 * a22 - a12 * a21;
+      const State d = det != 0 ? State{(-res[0] * a22 + res[1] * a12) / det, (-res[1] * a11 + res[0] * a21) / det}
+                               : State{res[0], res[1]};
+      u = {u[0] + d[0], u[1] + d[1]};
+      R = shift(std::move(R1), d[0]);
+    }
+    if (best <= sqrt(eps)) {
+      R = std::move(best_R);
+      last = best * scale(best_u);
+      return best_u;
+    }
+    u = best_u;
+    R = best_R;
+    Real prev = best;
+    for (int k = 0; k < 4000; ++k) {
+      Row R1 = R;
+      const State Pu = advance(u, R1);
+      const Real now = std::max(body_size(State{Pu[0] - u[0], Pu[1] - u[1]}) / scale(u), row_change(u[0], R, Pu[0], R1) / bound);
+      u = Pu;
+      R = std::move(R1);
+      if (now <= 64 * eps) {
+        last = now * scale(u);
+        return u;
+      }
+      if (k > 16 && now > prev * Real(0.999)) break;
+      prev = now;
+    }
+    throw SolverError("rig dynamics on a curved contact: no periodic state found with the row in contact through "
+                      "the section (Newton with the row carried, and 4000 periods of transient, did not converge)");
+  }
+
+  // The largest multiplier where the row is carried: of the full map's linearisation, in the
+  // state (Y, Y', each spring's force at the section; a slipping spring's force is its bound and
+  // stays), by forward differences of step √ε. Power iteration for 40 periods leaves the dominant
+  // pair (or real multiplier); two more fit v₂ = a v₁ + b v₀ (least squares), whose roots of
+  // λ² = aλ + b are it, a complex pair's modulus too. 0 where the iterate falls below what the
+  // differences resolve.
+  double carried_multiplier(const State& u, const Row& R) const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real body = sqrt(Real(omega2_ * (p_.kappa + 1)));
+    const std::size_t m = row_.size();
+    Row next;
+    const State P0 = period(u, nullptr, &R, &next);
+    std::vector<Real> z1(m);
+    for (std::size_t j = 0; j < m; ++j) z1[j] = section_force(P0[0], next[j], j);
+    const Real h = sqrt(eps) * (1 + body_size(u));
+    // the linearised map applied to v (of largest component 1)
+    const auto apply = [&](const std::vector<Real>& v) {
+      const State x{u[0] + h * v[0], u[1] + h * v[1] * body};
+      Row rx = R;
+      for (std::size_t j = 0; j < m; ++j)
+        if (rx[j].mode == Mode::stick) rx[j].xc -= h * (v[j + 2] - v[0]);  // s = Y − (X_c − βφ)
+      Row out;
+      const State Px = period(x, nullptr, &rx, &out);
+      std::vector<Real> w(m + 2, Real(0));
+      w[0] = (Px[0] - P0[0]) / h;
+      w[1] = (Px[1] - P0[1]) / h / body;
+      for (std::size_t j = 0; j < m; ++j)
+        if (out[j].mode == Mode::stick && next[j].mode == Mode::stick) w[j + 2] = (section_force(Px[0], out[j], j) - z1[j]) / h;
+      return w;
+    };
+    const auto norm = [](const std::vector<Real>& v) {
+      Real n = 0;
+      for (const Real& c : v) n = std::max(n, Real(abs(c)));
+      return n;
+    };
+    const Real floor = 1e3 * sqrt(eps);
+    std::vector<Real> v(m + 2, Real(0));
+    v[0] = 1;
+    for (int k = 0; k < 40; ++k) {
+      v = apply(v);
+      const Real size = norm(v);
+      if (!(size > floor)) return 0;
+      for (Real& c : v) c /= size;
+    }
+    std::vector<Real> v1 = apply(v);
+    const Real s1 = norm(v1);
+    if (!(s1 > floor)) return 0;
+    std::vector<Real> v2 = apply([&] {
+      std::vector<Real> t = v1;
+      for (Real& c : t) c /= s1;
+      return t;
+    }());
+    for (Real& c : v2) c *= s1;
+    Real g00 = 0, g01 = 0, g11 = 0, r0 = 0, r1 = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      g00 += v1[i] * v1[i];
+      g01 += v1[i] * v[i];
+      g11 += v[i] * v[i];
+      r0 += v1[i] * v2[i];
+      r1 += v[i] * v2[i];
+    }
+    const Real det = g00 * g11 - g01 * g01;
+    if (!(det > 1e-6 * g00 * g11)) return static_cast<double>(s1);  // one real multiplier dominates alone
+    const Real a = (r0 * g11 - r1 * g01) / det, b = (g00 * r1 - g01 * r0) / det;
+    const Real disc = a * a / 4 + b;
+    if (disc < 0) return static_cast<double>(sqrt(Real(-b)));
+    return static_cast<double>(std::max(abs(Real(a / 2 + sqrt(disc))), abs(Real(a / 2 - sqrt(disc)))));
   }
 
   static double largest(const std::array<std::array<Real, 2>, 2>& J) {
@@ -687,6 +900,7 @@ class RowRigEngine {
   RigParameters<Real> p_;
   std::vector<RowSpring<Real>> row_;
   Real omega2_, c_, K_slip_, section_, normal_area_;
+  bool carried_ = false;  // some spring in contact at the section (γ − σ + min w > 0)
   std::vector<Piece> pieces_;
   mutable RootStats stats_;
 };
@@ -723,12 +937,9 @@ RowRigResult<Real> solve_rig_row(const Waveform<Real>& w, const Real& beta, cons
                                  const Options& opt) {
   detail::check_beta(w, beta);
   detail::check_contact(w, gamma);
-  try {
-    const detail::RowRigEngine<Real> engine(w, beta, gamma, p, row, opt);
-    return engine.solve();
-  } catch (const SolverError& e) {
-    throw SolverError(detail::context<Real>(w, beta, &gamma) + ": " + e.what());
-  }
+  // Its errors name no point: the caller names it as its user typed it (the API does).
+  const detail::RowRigEngine<Real> engine(w, beta, gamma, p, row, opt);
+  return engine.solve();
 }
 
 }  // namespace vibrofric

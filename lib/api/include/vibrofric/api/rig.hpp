@@ -56,8 +56,7 @@ struct RigReport {
 // κ, Ω, ζ checked (finite decimals, κ > 0, Ω > 0, ζ ≥ 0): InputError quoting the text otherwise.
 void check_rig(const RigSpec& rig);
 
-// InputError for bad input, Ψ, a wave without a closed-form motion (power:p), or a curved profile
-// whose contact does not open fully once per period (γ + min w > 0); SolverError where no periodic
+// InputError for bad input, Ψ or a wave without a closed-form motion (power:p); SolverError where no periodic
 // state is found, two are, or the precisions (the row's sizes) do not agree.
 RigReport evaluate_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
                        const Options& solver = {}, const ProfileSpec& profile = {});

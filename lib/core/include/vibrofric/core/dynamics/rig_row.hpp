@@ -16,9 +16,12 @@
 // stick springs' thresholds kept in order, the sums kept by mode), each found by the
 // rig's bracketing (a grid finer than the body's oscillation, strided by a slope bound) and toms748.
 //
-// The periodic state is taken at w's minimum, where the contact opens fully (γ + min w ≤ 0 needed:
-// every spring out of contact, so the state is (Y, Y') alone); Newton on the one-period map from two
-// starts. The row's quadrature error (O(n⁻²)) is the caller's to estimate (the API doubles n).
+// The periodic state is taken at w's minimum. Where the contact opens fully there (γ + min w ≤ 0)
+// every spring is out, the state is (Y, Y') alone: Newton on the one-period map from two starts.
+// Else the springs still in contact carry their states through the section: Newton on (Y, Y') with
+// the row's states held, the row carried on to the states the period ends in (each spring slips
+// once a period and so follows the body), the multiplier from the full map's perturbation growth.
+// The row's quadrature error (O(n⁻²)) is the caller's to estimate (the API doubles n).
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -60,9 +63,9 @@ struct RowRigResult {
 template <class Real>
 std::vector<RowSpring<Real>> mdr_row(const Profile<Real>& profile, const Real& sigma_max, std::size_t n);
 
-// μ̄/μ0 and the periodic state. InputError for a wave without a closed-form motion; DomainError
-// where the contact does not open fully once per period; SolverError where no periodic state is
-// found, or two are from two starts.
+// μ̄/μ0 and the periodic state. InputError for a wave without a closed-form motion; SolverError
+// where no periodic state is found, or two are from two starts (the message names no point: the
+// caller's to name as typed).
 template <class Real>
 RowRigResult<Real> solve_rig_row(const Waveform<Real>& w, const Real& beta, const Real& gamma,
                                  const RigParameters<Real>& p, const std::vector<RowSpring<Real>>& row,
