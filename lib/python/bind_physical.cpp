@@ -89,7 +89,10 @@ arrays) while the others answer.
 trace=True (the tool's physical --trace, points as its --points, default 1000): one period of the
 point in SI instead, a dict of arrays t_s, F_N_N, F_x_N and u_m (the tip's indentation, negative
 off the surface), each to digits significant digits (17 by default): float64, or strings with
-strings=True. Quasi-static contacts under the normal oscillation (no rig, no in-plane drive).
+strings=True. With a rig (mass, k_system) also x_m (the body's position, the drive at v0 t) and
+F_s_N (the apparatus' force on the body, what a force sensor in the holder reads), each to the
+digits its inputs carry (on a curved shape those the row's two sizes agree on). Not with an
+in-plane drive.
 )doc";
   m.def(
       "physical",
@@ -147,7 +150,7 @@ strings=True. Quasi-static contacts under the normal oscillation (no rig, no in-
             broadcast = broadcast || (!py::isinstance<py::str>(*value) && np.attr("ndim")(*value).cast<int>() > 0);
           }
         if (trace) {
-          // One period in SI (the tool's physical --trace): t_s, F_N_N, F_x_N, u_m.
+          // One period in SI (the tool's physical --trace): t_s, F_N_N, F_x_N, u_m (a rig: x_m, F_s_N).
           if (broadcast) throw InputError("trace=True with array inputs: expected one point");
           if (!type.is_none()) throw InputError("trace=True gives digits significant digits (17 by default): expected no type");
           std::map<std::string, py::object> values;
@@ -160,15 +163,21 @@ strings=True. Quasi-static contacts under the normal oscillation (no rig, no in-
             rows = physical_trace(w, request, optional_int(points, "points").value_or(1000), d, options);
           }
           py::dict out;
-          for (const auto& [name, field] : {std::pair<const char*, mpfr PhysicalTraceRow::*>{"t_s", &PhysicalTraceRow::t_s},
-                                            {"F_N_N", &PhysicalTraceRow::F_N_N}, {"F_x_N", &PhysicalTraceRow::F_x_N},
-                                            {"u_m", &PhysicalTraceRow::u_m}}) {
-            py::list column;
+          const auto column = [&](const char* name, auto text_of) {
+            py::list values;
             for (const auto& r : rows) {
-              const std::string text = format_significant(r.*field, d);
-              column.append(strings ? py::object(py::str(text)) : py::object(py::float_(std::strtod(text.c_str(), nullptr))));
+              const std::string text = text_of(r);
+              values.append(strings ? py::object(py::str(text)) : py::object(py::float_(std::strtod(text.c_str(), nullptr))));
             }
-            out[name] = np.attr("array")(column, "dtype"_a = strings ? "object" : "float64");
+            out[name] = np.attr("array")(values, "dtype"_a = strings ? "object" : "float64");
+          };
+          for (const auto& [name, field] : {std::pair<const char*, Significant PhysicalTraceRow::*>{"t_s", &PhysicalTraceRow::t_s},
+                                            {"F_N_N", &PhysicalTraceRow::F_N_N}, {"F_x_N", &PhysicalTraceRow::F_x_N},
+                                            {"u_m", &PhysicalTraceRow::u_m}})
+            column(name, [field = field](const PhysicalTraceRow& r) { return (r.*field).text(); });
+          if (!rows.empty() && rows.front().x_m) {
+            column("x_m", [](const PhysicalTraceRow& r) { return r.x_m->text(); });
+            column("F_s_N", [](const PhysicalTraceRow& r) { return r.F_s_N->text(); });
           }
           return py::object(out);
         }

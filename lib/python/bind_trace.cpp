@@ -44,6 +44,27 @@ py::tuple rig_trace_arrays(const std::vector<RigTraceRow>& rows, int digits, boo
                         column_of(rows, &RigTraceRow::lag_rate, digits, strings), modes);
 }
 
+// rig_row_trace_rows as nine arrays: phi, n, s, lag, lag_rate and the row's shares stick, slip,
+// backward and flight, each number to its own agreed digits.
+py::tuple rig_row_trace_arrays(const std::vector<RigRowTraceRow>& rows, int digits, bool strings) {
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  const auto column = [&](const Significant RigRowTraceRow::*field) -> py::array {
+    if (strings) {
+      py::array out = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
+      for (py::ssize_t i = 0; i < n; ++i) out[py::int_(i)] = py::str((rows[static_cast<std::size_t>(i)].*field).text());
+      return out;
+    }
+    py::array_t<double> out(n);
+    double* p = out.mutable_data();
+    for (py::ssize_t i = 0; i < n; ++i) p[i] = read_decimal<double>((rows[static_cast<std::size_t>(i)].*field).text());
+    return out;
+  };
+  return py::make_tuple(column_of(rows, &RigRowTraceRow::phi, digits, strings), column(&RigRowTraceRow::n),
+                        column(&RigRowTraceRow::s), column(&RigRowTraceRow::lag), column(&RigRowTraceRow::lag_rate),
+                        column(&RigRowTraceRow::stick), column(&RigRowTraceRow::slip), column(&RigRowTraceRow::backward),
+                        column(&RigRowTraceRow::flight));
+}
+
 py::tuple inplane_trace_arrays(const std::vector<InPlaneTraceRow>& rows, int digits, bool strings) {
   const auto n = static_cast<py::ssize_t>(rows.size());
   py::array modes = py::module_::import("numpy").attr("empty")(n, "dtype"_a = "object");
@@ -57,7 +78,7 @@ py::tuple inplane_trace_arrays(const std::vector<InPlaneTraceRow>& rows, int dig
 }  // namespace
 
 void bind_trace(py::module_& m) {
-  static constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma=None, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat', longitudinal=None, transverse=None, phase=None, in_plane_wave=None) -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode), or in plane (phi, n, s_x, s_y, mode)
+  static constexpr const char* trace_doc = R"doc(trace(wave, beta, gamma=None, *, points=1000, digits=17, strings=False, kappa=None, omega=None, zeta=None, profile='flat', longitudinal=None, transverse=None, phase=None, in_plane_wave=None) -> (phi, n, s), or with kappa and omega (phi, n, s, lag, lag_rate, mode), on a curved profile (phi, n, s, lag, lag_rate, stick, slip, backward, flight), or in plane (phi, n, s_x, s_y, mode)
 
 The normal force n(phi) = max(0, gamma + w(phi)) and the tangential force s(phi) over one period
 in the periodic steady state (Fig. 2 of the paper; Eqs. 7-11), flat punch, as the tool's `trace`:
@@ -73,7 +94,10 @@ Y = X - beta phi behind the drive and Y' in units of mu0 k_z A/k_x, and the mode
 
 With a curved profile (as mu's profile=, the tool's `trace --profile P`): n and s summed over the
 half-row of MDR springs, in the units of the row (mean(s)/mean(n) over the period is mu's value),
-at the equally spaced phases and the central spring's contact boundaries.
+at the equally spaced phases and the central spring's contact boundaries. With kappa and omega
+too, the rig on the row: nine arrays (phi, n, s, lag, lag_rate, stick, slip, backward, flight),
+the lag in units mu0 E* A/G* and the row's shares in each mode; each number to the digits the
+row's two sizes agree on.
 
 With longitudinal or transverse (phase and in_plane_wave optional; wave='constant' with
 gamma=None for a constant normal force), the in-plane periodic state (model.md, "In-plane and
@@ -131,6 +155,14 @@ mode), the tangential force along and across the sliding direction, mode 'stick'
           rig.kappa = scalar_value(kappa, "kappa");
           rig.omega = scalar_value(omega, "omega");
           if (!zeta.is_none()) rig.zeta = scalar_value(zeta, "zeta");
+          if (request.profile.kind != ProfileKind::flat) {
+            std::vector<RigRowTraceRow> rows;
+            {
+              py::gil_scoped_release release;
+              rows = rig_row_trace_rows(w, request, rig);
+            }
+            return rig_row_trace_arrays(rows, request.digits, strings);
+          }
           std::vector<RigTraceRow> rows;
           {
             py::gil_scoped_release release;

@@ -180,7 +180,8 @@ const std::vector<CommandSpec>& commands() {
         {"half-angle", "DEG", "cone: angle between axis and flank, in (0, 90)", "", nullptr},
         {"flat-radius", "M", "wearflat: radius of the wear flat", "", nullptr},
         {"format", "F", "text | csv | json (a sweep: csv | json)", "text (a sweep: csv)", format_of_point},
-        {"trace", "", "one period in SI instead: CSV t_s,F_N_N,F_x_N,u_m (u_m: the tip's indentation, < 0 off the surface)", "",
+        {"trace", "", "one period in SI instead: CSV t_s,F_N_N,F_x_N,u_m (u_m: the tip's indentation, < 0 off the surface); with --mass also "
+         "x_m,F_s_N (the body's position, the drive at v0 t; the holder's force on the body)", "",
          [](Flags& f, const std::string& t) { f.trace = switch_value(t, "trace"); }},
         {"points", "N", "with --trace: N + 1 equally spaced times (0 and 1/f both), N from 2 to 1000000, plus every stick "
                         "phase's ends and the contact boundaries", "1000",
@@ -204,7 +205,11 @@ const std::vector<CommandSpec>& commands() {
            "  along and across the sliding direction (s_y = 0 for a longitudinal drive) and the mode.\n" +
            "  trace with them prints phi,n,s,lag,lag_rate,mode: the body's lag Y = X - beta phi behind the\n"
            "  drive and Y' (units mu0 k_z A/k_x), the mode (stick, slip, backward, flight), at the phases\n"
-           "  and both ends of every span (two rows at one phi where a mode ends: left and right values).\n",
+           "  and both ends of every span (two rows at one phi where a mode ends: left and right values).\n" +
+           "  With --profile too (the rig on the MDR row): phi,n,s,lag,lag_rate,stick,slip,backward,flight,\n"
+           "  n and s summed over the half-row, the lag in units mu0 E* A/G*, and the row's shares in each\n"
+           "  mode, at the phases and where the body lands and lifts off; each number to the digits the\n"
+           "  row's two sizes agree on.\n",
        run_trace},
       {"fit", "fit --wave samples:FILE --harmonics K [--output FILE]: a fourier file from samples",
        {{"harmonics", "K", "harmonics of the fit, 1 to 10000, 2K < samples (required)", "",

@@ -79,17 +79,20 @@ int run_physical(const Flags& f) {
       swept = name;
     }
   if (f.trace) {
-    // One period in SI: t_s,F_N_N,F_x_N,u_m, each to --digits (17 by default).
+    // One period in SI: t_s,F_N_N,F_x_N,u_m (with a rig also x_m,F_s_N), each to --digits (17 by
+    // default) or the fewer its inputs carry.
     if (!swept.empty()) throw InputError("--trace with a range of --" + swept + ": expected one point");
     if (f.format && *f.format != Format::csv) throw InputError("--trace writes csv: expected no --format or --format csv");
     if (f.type) throw InputError("--trace prints --digits significant digits (17 by default): expected no --type");
     const auto rows = physical_trace(wave, request_of(f, values), f.points.value_or(1000), f.digits.value_or(17),
                                      batch_options(f));
-    const int d = f.digits.value_or(17);
-    std::cout << "t_s,F_N_N,F_x_N,u_m\n";
-    for (const auto& r : rows)
-      std::cout << format_significant(r.t_s, d) << ',' << format_significant(r.F_N_N, d) << ','
-                << format_significant(r.F_x_N, d) << ',' << format_significant(r.u_m, d) << '\n';
+    const bool body = !rows.empty() && rows.front().x_m;
+    std::cout << (body ? "t_s,F_N_N,F_x_N,u_m,x_m,F_s_N\n" : "t_s,F_N_N,F_x_N,u_m\n");
+    for (const auto& r : rows) {
+      std::cout << r.t_s.text() << ',' << r.F_N_N.text() << ',' << r.F_x_N.text() << ',' << r.u_m.text();
+      if (body) std::cout << ',' << r.x_m->text() << ',' << r.F_s_N->text();
+      std::cout << '\n';
+    }
     return 0;
   }
   if (f.points) throw InputError("--points goes with --trace: expected --trace");

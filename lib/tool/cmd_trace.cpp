@@ -1,5 +1,6 @@
-// trace: n(phi) and s(phi) over one period (Fig. 2), with --kappa/--omega the rig's lag and mode, or
-// with --longitudinal the in-plane force's components and the mode.
+// trace: n(phi) and s(phi) over one period (Fig. 2), with --kappa/--omega the rig's lag and mode
+// (with --profile the row's shares in each mode), or with --longitudinal the in-plane force's
+// components and the mode.
 #include <iostream>
 #include <optional>
 
@@ -37,6 +38,15 @@ int run_trace(const Flags& f) {
     for (const auto& r : rows)
       std::cout << format_significant(r.phi, d) << ',' << format_significant(r.n, d) << ',' << format_significant(r.s_x, d)
                 << ',' << format_significant(r.s_y, d) << ',' << inplane_mode_name(r.mode) << '\n';
+    return 0;
+  }
+  if (o.rig && f.profile.kind != ProfileKind::flat) {
+    const auto rows = rig_row_trace_rows(wave, request, *o.rig, o.solver);
+    std::cout << "phi,n,s,lag,lag_rate,stick,slip,backward,flight\n";
+    for (const auto& r : rows)
+      std::cout << format_significant(r.phi, request.digits) << ',' << r.n.text() << ',' << r.s.text() << ','
+                << r.lag.text() << ',' << r.lag_rate.text() << ',' << r.stick.text() << ',' << r.slip.text() << ','
+                << r.backward.text() << ',' << r.flight.text() << '\n';
     return 0;
   }
   if (o.rig) {

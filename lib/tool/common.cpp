@@ -51,9 +51,6 @@ BatchOptions batch_options(const Flags& f) {
     o.rig->omega = f.omega;
     if (f.zeta.given()) o.rig->zeta = f.zeta;
     check_rig(*o.rig);
-    if (f.command == "trace" && o.profile.kind != ProfileKind::flat)
-      throw InputError("trace --kappa/--omega with --profile " + detail::visible(f.profile_text.value_or("")) +
-                       ": the trace of a rig is the flat punch's only (mu and sweep give the curved contact's value)");
   }
   o.inplane = inplane_options(f);
   return o;

@@ -336,5 +336,10 @@ def test_trace_is_the_tools():
     assert all(list(floats[k]) == [float(x) for x in got[k]] for k in got)
     with pytest.raises(ValueError, match="one point"):
         vibrofric.physical("sine", trace=True, **dict(kw, v0=[1e-3, 2e-3]))
-    with pytest.raises(ValueError, match="quasi-static"):
-        vibrofric.physical("sine", trace=True, mass=0.01, k_system=1e7, **dict(kw, shape="flat", R=None, radius=1e-3))
+    # with a rig, two more columns: the body's position and the holder's force, as the tool's
+    rig = dict(kw, mass="0.05", k_system="2e6")
+    lines = subprocess.run([TOOL, *args, "--mass", "0.05", "--k-system", "2e6"], check=True, stdout=subprocess.PIPE,
+                           text=True).stdout.splitlines()
+    got = vibrofric.physical("sine", trace=True, points=12, digits=12, strings=True, **rig)
+    assert list(got) == lines[0].split(",") == ["t_s", "F_N_N", "F_x_N", "u_m", "x_m", "F_s_N"]
+    assert [list(c) for c in got.values()] == [list(c) for c in zip(*(line.split(",") for line in lines[1:]))]

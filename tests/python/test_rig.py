@@ -143,6 +143,7 @@ def test_quasi_static_value_and_resonance_warning():
     assert abs(float(r["mu_over_mu0"]) / float(quasi) - 1) < 1e-4
 
 
+@pytest.mark.usefixtures("tool_path")
 def test_a_ball_on_the_rig():
     # model.md's curved rig (sphere, measured independently: 0.35215); the row's springs reported
     with pytest.warns(UserWarning, match="resonance"):
@@ -157,6 +158,13 @@ def test_a_ball_on_the_rig():
     assert abs(got[0] - r["mu_over_mu0"]) <= 5e-9
     strings = vibrofric.mu("sine", 1.37, 0.42, kappa=2.6, omega=3.3, zeta=0.3, profile="sphere", strings=True)
     assert str(strings) == "0.35214873"
+    # trace on the row: nine arrays, the tool's rows string for string
+    arrays = vibrofric.trace("sine", 1.37, 0.42, kappa=2.6, omega=3.3, zeta=0.3, profile="sphere", points=8, strings=True)
+    assert len(arrays) == 9
+    lines = subprocess.run([TOOL, "trace", "--wave", "sine", "--beta", "1.37", "--gamma", "0.42", "--kappa", "2.6",
+                            "--omega", "3.3", "--zeta", "0.3", "--profile", "sphere", "--points", "8"], check=True,
+                           stdout=subprocess.PIPE, text=True).stdout.splitlines()
+    assert [list(c) for c in arrays] == [list(c) for c in zip(*(line.split(",") for line in lines[1:]))]
     # a contact that never opens carries the row's states: the stiff, light rig is its quasi-static
     # value (measured 2e-7 apart)
     closed = vibrofric.rig("sine", 1.0, 1.5, kappa=1e6, omega=100, zeta=0.5, profile="sphere")

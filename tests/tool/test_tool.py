@@ -350,8 +350,6 @@ def bad_input_tests():
         ["sphre"], ["profile", "sphere"])
     bad("trace --profile no contact", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "-1", "--profile", "sphere"],
         ["-1"], ["gamma"])
-    bad("trace --profile with rig dynamics", ["trace", "--wave", "sine", "--beta", "1", "--gamma", "0", "--profile", "cone",
-                                              "--kappa", "1", "--omega", "2"], ["cone"], ["flat punch"])
 
     # sweep ranges and gamma lists
     sw = ["sweep", "--wave", "sine"]
@@ -1696,8 +1694,38 @@ def cli_tests():
                     raise Fail("physical --trace %s: trapezoid mean %s, %s = %s" % (shape, float(mean(k)), name, point[name]))
     case("physical --trace: forces in newtons over one period, from the indentation by Eq. 1 and Hertz", physical_trace)
     bad("physical --trace with a range", physical_args(**{"--v0": "1e-4:1e-3:3"}) + ["--trace"], ["--v0"], ["one point"])
-    bad("physical --trace with a rig", physical_args(**{"--mass": "0.01", "--k-system": "1e7"}) + ["--trace"], ["--mass"],
-        ["quasi-static"])
+    def physical_rig_trace():
+        # physical --trace with a rig, punch and ball: the normal force and the indentation are the
+        # quasi-static trace's (the normal motion is prescribed; the ball's n from its own algorithm), the friction force's and the
+        # holder's force's period means are physical's F_x_mean_N (the system spring carries the
+        # friction: mean F_s = k_s mean(v0 t - x) = mean F_x), and undamped F_s = k_s (v0 t - x)
+        # from the printed x_m, to the digits both carry.
+        for shape, extra in (("flat", ["--radius", "1e-3"]), ("sphere", ["--R", "5e-3"])):
+            base = ["physical", "--wave", "sine", "--E1", "210e9", "--nu1", "0.3", "--E2", "70e9", "--nu2", "0.33",
+                    "--F-N", "10", "--v0", "2e-3", "--f", "20000", "--A", "1.5e-6", "--mu0", "0.3", "--shape", shape] + extra
+            rig = ["--mass", "0.05", "--k-system", "2e6"]
+            point = json.loads(rig_ok_run(base + rig + ["--format", "json"]))
+            lines = rig_ok_run(base + rig + ["--trace", "--points", "400"]).splitlines()
+            if lines[0] != "t_s,F_N_N,F_x_N,u_m,x_m,F_s_N":
+                raise Fail("physical --trace with a rig: header %r" % lines[0])
+            rows = [[F(x) for x in l.split(",")] for l in lines[1:]]
+            quasi = {l.split(",")[0]: l.split(",") for l in ok_run(base + ["--trace", "--points", "400"]).splitlines()[1:]}
+            for l in lines[1:]:
+                t, fn, fx, u, x, fs = l.split(",")
+                # within a unit of the last digit printed (the ball's: those its two rows agree on)
+                if t in quasi and (abs(F(fn) - F(quasi[t][1])) > 2 * half_ulp(fn) or u != quasi[t][3]):
+                    raise Fail("physical --trace %s rig at t %s: F_N %s, u %s; quasi-static %s, %s" % (
+                        shape, t, fn, u, quasi[t][1], quasi[t][3]))
+                want = F("2e6") * (F("2e-3") * F(t) - F(x))
+                if abs(F(fs) - want) > 2 * F("2e6") * half_ulp(x) + half_ulp(fs):
+                    raise Fail("physical --trace %s rig at t %s: F_s %s, k_s (v0 t - x) = %s" % (shape, t, fs, float(want)))
+            t = [r[0] for r in rows]
+            mean = lambda k: sum((t[i + 1] - t[i]) * (rows[i][k] + rows[i + 1][k]) / 2 for i in range(len(t) - 1)) * 20000
+            for k in (2, 5):
+                if abs(mean(k) / F(point["F_x_mean_N"]) - 1) > F("1e-4"):
+                    raise Fail("physical --trace %s rig: column %d's trapezoid mean %s, F_x_mean_N %s" % (
+                        shape, k, float(mean(k)), point["F_x_mean_N"]))
+    case("physical --trace with a rig: forces and the body in SI, punch and ball", physical_rig_trace)
     bad("physical --points without --trace", physical_args() + ["--points", "10"], ["--points"], ["--trace"])
 
     def physical_plausibility():
@@ -2517,6 +2545,28 @@ def rig_tests():
                 raise Fail("rig trace: at the stick's end phi = %s, n = %s, s = %s; gamma + sin 2 pi phi = %s" % (
                     rows[i][0], rows[i][1], rows[i][2], want))
     case("rig: trace rows at the flight's ends and the stick's end against closed forms", rig_trace_boundaries)
+
+    def rig_trace_curved():
+        # trace of the rig on a ball: a stiff, light rig's n and s are the quasi-static curved trace's
+        # (its own algorithm: the flat solves of the row, curved_trace), the row's shares add to 1
+        # within their printed digits, and where the body lands and lifts off n = s = 0.
+        base = ["trace", "--wave", "sine", "--beta", "1.37", "--gamma", "0.42", "--profile", "sphere", "--points", "16"]
+        rows = [l.split(",") for l in rig_ok_run(base + ["--kappa", "1e6", "--omega", "100", "--zeta", "0.5"]).splitlines()]
+        quasi = [l.split(",") for l in ok_run(base).splitlines()]
+        if rows[0] != ["phi", "n", "s", "lag", "lag_rate", "stick", "slip", "backward", "flight"]:
+            raise Fail("rig trace on a sphere: header %r" % rows[0])
+        if [r[0] for r in rows] != [q[0] for q in quasi]:
+            raise Fail("rig trace on a sphere: phases %r, quasi-static %r" % ([r[0] for r in rows], [q[0] for q in quasi]))
+        for r, q in zip(rows[1:], quasi[1:]):
+            for k in (1, 2):
+                if abs(F(r[k]) - F(q[k])) > F("2e-6") * (1 + abs(F(q[k]))) + half_ulp(r[k]):
+                    raise Fail("rig trace on a sphere at phi %s: %s %s, quasi-static %s" % (r[0], rows[0][k], r[k], q[k]))
+            shares = sum(F(x) for x in r[5:])
+            if abs(shares - 1) > sum(half_ulp(x) for x in r[5:]) + F("1e-12"):
+                raise Fail("rig trace on a sphere at phi %s: shares %r add to %s" % (r[0], r[5:], float(shares)))
+            if q[1] == "0" and (r[1] != "0" or r[2] != "0"):
+                raise Fail("rig trace on a sphere at phi %s: n %s, s %s off contact" % (r[0], r[1], r[2]))
+    case("rig: trace on a sphere, stiff and light, is the quasi-static curved trace", rig_trace_curved)
     bad("rig: physical --mass alone", rig_physical + ["--mass", "0.01"], [], ["--k-system"])
     bad("rig: physical --damping < 0", rig_physical + ["--mass", "0.01", "--k-system", "1e7", "--damping", "-1"],
         ["-1"], ["--damping"])

@@ -223,6 +223,70 @@ TEST(RigRow, RowWeightsCoverTheContact) {
   EXPECT_EQ(mdr_row(worn, 1.4, 10).front().sigma, 0.0);  // the flat's spring
 }
 
+// The periodic state sampled over the period (trace): on a row at σ = 0 the flat rig's own closed
+// forms at the same phases (RigSolver::at and normal on its recorded spans: Y, Y', s, n, and the
+// mode as the row's share), γ ≤ 1 and γ > 1; the sampled phases in any order.
+TEST(RigRow, SamplesAreTheFlatRigsState) {
+  for (const Case& c : {kCases[0], kCases[3], kCases[5], kCarried[0], kCarried[3]}) {
+    SCOPED_TRACE(label(c));
+    const auto w = wave_named(c.wave);
+    const RigParameters<double> p{c.kappa, c.omega, c.zeta, 0};
+    const RigSolver<double> flat(*w, c.beta, c.gamma, p);
+    const RigResult<double> f = flat.solve();
+    std::vector<double> phases;
+    for (int k = 64; k >= 0; --k) phases.push_back(k / 64.0 + (k % 7 == 3 ? 1.0 / 1000 : 0.0));
+    std::vector<RowRigSample<double>> got;
+    solve_rig_row(*w, c.beta, c.gamma, p, {{0, 1}}, {}, phases, got);
+    ASSERT_EQ(got.size(), phases.size());
+    for (std::size_t k = 0; k < phases.size(); ++k) {
+      const double phi = phases[k];
+      const RigSpan<double>* span = nullptr;
+      for (const auto& sp : f.spans)
+        if (sp.end > sp.begin && sp.begin <= phi && (phi < sp.end || phi == 1)) span = &sp;
+      ASSERT_NE(span, nullptr) << phi;
+      const auto yvs = flat.at(*span, phi);
+      const double n = std::max(flat.normal(*span, phi)[0], 0.0);
+      EXPECT_EQ(got[k].phi, phi);
+      EXPECT_NEAR(got[k].y, yvs[0], 1e-10) << phi;
+      EXPECT_NEAR(got[k].v, yvs[1], 1e-9 * (1 + 2 * 3.14159265 * c.omega)) << phi;
+      EXPECT_NEAR(got[k].s, yvs[2], 1e-10) << phi;
+      EXPECT_NEAR(got[k].n, n, 1e-12) << phi;
+      const double stick = span->mode == RigMode::stick ? 1 : 0;
+      const double slip = span->mode == RigMode::forward_slip || span->mode == RigMode::backward_slip ? 1 : 0;
+      EXPECT_EQ(got[k].stick, stick) << phi;
+      EXPECT_EQ(got[k].slip, slip) << phi;
+      EXPECT_EQ(got[k].backward, span->mode == RigMode::backward_slip ? 1 : 0) << phi;
+      EXPECT_EQ(got[k].flight, span->mode == RigMode::flight ? 1 : 0) << phi;
+    }
+  }
+}
+
+// On a sphere's row the samples' mean over the period is the period's integrals (closed forms
+// over the spans): ∫⟨s⟩ and ∫⟨n⟩ by the trapezoidal rule on 4096 intervals, within 1e-6 (the rule's
+// O(h²) over ⟨s⟩'s kinks: measured below 2e-7).
+TEST(RigRow, SamplesIntegrateToThePeriod) {
+  const PowerProfile<double> sphere(2.0, "sphere");
+  const Sine<double> w;
+  for (double gamma : {0.42, 1.5}) {
+    const auto row = mdr_row(sphere, gamma + 1, 200);
+    std::vector<double> phases;
+    for (int k = 0; k <= 4096; ++k) phases.push_back(k / 4096.0);
+    std::vector<RowRigSample<double>> got;
+    const RowRigResult<double> r = solve_rig_row<double>(w, 1.37, gamma, {2.6, 3.3, 0.3, 0}, row, {}, phases, got);
+    double s = 0, n = 0, y = 0;
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      const double h = (k == 0 || k + 1 == got.size() ? 0.5 : 1.0) / 4096;
+      s += h * got[k].s;
+      n += h * got[k].n;
+      y += h * got[k].y;
+      EXPECT_NEAR(got[k].stick + got[k].slip + got[k].flight, 1, 1e-12);
+    }
+    EXPECT_NEAR(s, r.retained_area, 1e-6) << gamma;
+    EXPECT_NEAR(n, r.normal_area, 1e-6) << gamma;
+    EXPECT_NEAR(y, r.lag_integral, 1e-6) << gamma;
+  }
+}
+
 // Where the contact never opens, the springs of the centre carry their states through the
 // section (their value: the flat rig's and the peer's above). Here the row's flight share, by its
 // closed form: a spring at γ_j = γ − σ_j flies where sin 2πφ < −γ_j, a share 1/2 − asin(γ_j)/π

@@ -465,24 +465,70 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
     options.rig = rig_of(k_x_max);
   }
   if (trace) {
-    if (options.rig || inplane)
-      throw InputError("a trace in SI units is of the quasi-static contact under the normal oscillation: not with " +
-                       (options.rig ? r.mass.name : r.u_x.given() ? r.u_x.name : r.u_y.name));
+    if (inplane)
+      throw InputError("a trace in SI units under an in-plane oscillation: not with " +
+                       (r.u_x.given() ? r.u_x.name : r.u_y.name));
     TraceRequest request;
     request.beta.value = point.beta;
     request.gamma.value = point.gamma;
     request.points = trace->points;
     request.digits = trace->digits;
     request.profile = options.profile;
+    const int d = trace->digits;
     const mpfr scale = kind == "flat" ? mpfr(g.k_z * A) : mpfr(2 * g.E_star * A * length);
     // At a contact boundary γ + w = 0 by definition: its computed value, a rounding far below
     // the digits asked of A, is 0.
-    const mpfr floor_u = A * pow(mpfr(10), -trace->digits - 3);
-    for (const TraceRow& row : trace_rows(wave, request)) {
-      const auto at = [&](const mpfr& x) { return mpfr(format_significant(x, trace->digits)); };
-      const mpfr u = A * (g.gamma + (*w)(row.phi - floor(row.phi)));
-      trace->rows.push_back({at(mpfr(row.phi / in.f)), at(mpfr(scale * row.n)), at(mpfr(in.mu0 * scale * row.s)),
-                             abs(u) < floor_u ? mpfr(0) : at(u)});
+    const mpfr floor_u = A * pow(mpfr(10), -d - 3);
+    const auto at = [&](const mpfr& x) { return Significant{mpfr(format_significant(x, d)), d}; };
+    const auto indentation = [&](const mpfr& phi) {
+      const mpfr u = A * (g.gamma + (*w)(phi - floor(phi)));
+      return abs(u) < floor_u ? Significant{mpfr(0), d} : at(u);
+    };
+    if (!options.rig) {
+      for (const TraceRow& row : trace_rows(wave, request))
+        trace->rows.push_back({at(mpfr(row.phi / in.f)), at(mpfr(scale * row.n)), at(mpfr(in.mu0 * scale * row.s)),
+                               indentation(row.phi), std::nullopt, std::nullopt});
+    } else {
+      // The body: lengths in the rig's unit μ0 k_z A/k_x (μ0 E* A/G* on a curved contact), x = v0 t
+      // + Y, F_s = −k_s Y − c Y' f (Y' per period). A value's digits are those its inputs carry: each
+      // input uncertain by half a unit in its last printed digit.
+      const mpfr unit = kind == "flat" ? mpfr(in.mu0 * g.k_z * A / g.k_x) : mpfr(in.mu0 * g.E_star * A / g.G_star);
+      const mpfr ks = positive(r.k_system), c = opt(r.damping);
+      const auto half_unit = [](const Significant& v) {
+        if (v.value == 0) return mpfr(0);
+        const long e = static_cast<long>(floor(log10(abs(v.value))));
+        return mpfr(pow(mpfr(10), e - v.digits + 1) / 2);
+      };
+      const auto with_error = [&](const mpfr& v, const mpfr& error) {
+        if (v == 0 || error == 0) return at(v);
+        const int digits = static_cast<int>(std::clamp(floor(log10(abs(v) / error)).convert_to<long>(), 1L, long(d)));
+        return Significant{mpfr(format_significant(v, digits)), digits};
+      };
+      const auto scaled = [&](const mpfr& k, const Significant& v) {
+        return Significant{mpfr(format_significant(mpfr(k * v.value), std::min(d, v.digits))), std::min(d, v.digits)};
+      };
+      const auto add = [&](const mpfr& phi, const Significant& n, const Significant& s, const Significant& lag,
+                           const Significant& rate) {
+        const mpfr t = phi / in.f;
+        const mpfr x = in.v0 * t + lag.value * unit;
+        const mpfr F_s = -ks * lag.value * unit - c * rate.value * unit * in.f;
+        PhysicalTraceRow row{at(t), scaled(scale, n), scaled(in.mu0 * scale, s), indentation(phi),
+                             with_error(x, mpfr(half_unit(lag) * unit)),
+                             with_error(F_s, mpfr(ks * half_unit(lag) * unit + c * half_unit(rate) * unit * in.f))};
+        // the rig's two rows where a mode ends (left and right) are one here, with no mode column,
+        // where every printed value is the same
+        const auto text = [](const PhysicalTraceRow& q) {
+          return q.t_s.text() + q.F_N_N.text() + q.F_x_N.text() + q.u_m.text() + q.x_m->text() + q.F_s_N->text();
+        };
+        if (trace->rows.empty() || text(trace->rows.back()) != text(row)) trace->rows.push_back(std::move(row));
+      };
+      if (kind == "flat") {
+        for (const RigTraceRow& row : rig_trace_rows(wave, request, *options.rig, options.solver))
+          add(row.phi, {row.n, d}, {row.s, d}, {row.lag, d}, {row.lag_rate, d});
+      } else {
+        for (const RigRowTraceRow& row : rig_row_trace_rows(wave, request, *options.rig, options.solver))
+          add(row.phi, row.n, row.s, row.lag, row.lag_rate);
+      }
     }
   }
   // μ = μ0·(μ̄/μ0) from the ratio's value (mpfr: decided at 10 more digits), rounded once to the

@@ -145,6 +145,57 @@ void check_rig(const RigSpec& rig) {
   rig_number(rig.zeta, "zeta", true);
 }
 
+namespace {
+// A curved contact's rig solved on rows of n/2 and n springs (rig_row.hpp): doubled from n = 200
+// until the two agree to 1e-8 or n = 3200. Where `phases` is given, the periodic state at each on
+// both rows. x_max: the row's extent (profile units), its weights' scale.
+struct RowPair {
+  RowRigResult<double> a, b;
+  std::vector<RowRigSample<double>> sa, sb;
+  double x_max = 0, largest_weight = 0;  // of b's row
+};
+RowPair row_pair(const WaveSpec& wave, const Point& p, const RigSpec& rig, const ProfileSpec& profile,
+                 const Options& opt, const std::vector<double>* phases = nullptr) {
+  using std::abs;
+  check_rig(rig);
+  const auto w = make_waveform<double>(wave);
+  const auto shape = make_profile<double>(profile);
+  const double beta = p.beta.to<double>(), gamma = p.gamma.to<double>();
+  detail::check_beta(*w, beta);
+  detail::check_contact(*w, gamma);
+  const std::string where = rig_context(wave, p, rig) + "profile " + profile.name + ": ";
+  const double sigma_max = gamma + w->maximum();
+  if (sigma_max > shape->sigma_limit())
+    throw DomainError(where + "the contact reaches beyond the profile's last sample");
+  const RigParameters<double> params{rig.kappa.to<double>(), rig.omega.to<double>(), rig.zeta.to<double>(),
+                                     resonance(rig)};
+  RowPair out;
+  out.x_max = shape->x_at_sigma(sigma_max);
+  const auto solve = [&](std::size_t n, std::vector<RowRigSample<double>>& samples) {
+    try {
+      const auto row = mdr_row(*shape, sigma_max, n);
+      out.largest_weight = 0;  // of the quadrature's cells (a wear flat's spring at σ = 0 is exact)
+      for (const auto& sp : row)
+        if (sp.sigma > 0) out.largest_weight = std::max(out.largest_weight, sp.weight);
+      return phases ? solve_rig_row(*w, beta, gamma, params, row, opt, *phases, samples)
+                    : solve_rig_row(*w, beta, gamma, params, row, opt);
+    } catch (const SolverError& e) {
+      throw SolverError(where + e.what());
+    }
+  };
+  // The row's quadrature error shrinks about as n^-2.5 (sphere and sine: 4.3e-8, 7.2e-9, 1.3e-9
+  // from n = 200 to 1600): the difference of n and 2n bounds the larger's error.
+  out.a = solve(100, out.sa);
+  out.b = solve(200, out.sb);
+  for (std::size_t n = 400; n <= 3200 && !(abs(out.a.mu - out.b.mu) <= 1e-8 * abs(out.b.mu)); n *= 2) {
+    out.a = out.b;
+    out.sa = std::move(out.sb);
+    out.b = solve(n, out.sb);
+  }
+  return out;
+}
+}  // namespace
+
 namespace detail {
 
 mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const Precision& precision,
@@ -184,34 +235,9 @@ mpfr rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const P
 Significant row_rig_value(const WaveSpec& wave, const Point& p, const RigSpec& rig, const ProfileSpec& profile,
                           const Precision& precision, const Options& opt, RigReport* report) {
   using std::abs;
-  check_rig(rig);
-  const int digits = output_digits(precision);
-  const int most = std::min(digits, 17);
-  const auto w = make_waveform<double>(wave);
-  const auto shape = make_profile<double>(profile);
-  const double beta = p.beta.to<double>(), gamma = p.gamma.to<double>();
-  check_beta(*w, beta);
-  check_contact(*w, gamma);
-  const std::string where = rig_context(wave, p, rig) + "profile " + profile.name + ": ";
-  const double sigma_max = gamma + w->maximum();
-  if (sigma_max > shape->sigma_limit())
-    throw DomainError(where + "the contact reaches beyond the profile's last sample");
-  const RigParameters<double> params{rig.kappa.to<double>(), rig.omega.to<double>(), rig.zeta.to<double>(),
-                                     resonance(rig)};
-  const auto solve = [&](std::size_t n) {
-    try {
-      return solve_rig_row(*w, beta, gamma, params, mdr_row(*shape, sigma_max, n), opt);
-    } catch (const SolverError& e) {
-      throw SolverError(where + e.what());
-    }
-  };
-  // The row's quadrature error shrinks about as n^-2.5 (sphere and sine: 4.3e-8, 7.2e-9, 1.3e-9
-  // from n = 200 to 1600): the difference of n and 2n bounds the larger's error.
-  RowRigResult<double> a = solve(100), b = solve(200);
-  for (std::size_t n = 400; n <= 3200 && !(abs(a.mu - b.mu) <= 1e-8 * abs(b.mu)); n *= 2) {
-    a = b;
-    b = solve(n);
-  }
+  const int most = std::min(output_digits(precision), 17);
+  const RowPair pair = row_pair(wave, p, rig, profile, opt);
+  const RowRigResult<double>&a = pair.a, &b = pair.b;
   const Significant mu = agreed(mpfr(a.mu), mpfr(b.mu), most);
   if (report) {
     report->mu = mu.text();
@@ -259,8 +285,8 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
   check_trace_request(request);
   check_rig(rig);
   if (request.profile.kind != ProfileKind::flat)
-    throw InputError("trace with rig dynamics on profile " + request.profile.name +
-                     ": the trace of a rig is the flat punch's only (mu and sweep give the curved contact's value)");
+    throw InputError("the rig's trace rows with modes on profile " + request.profile.name +
+                     ": a curved contact's row is in several modes at once (its rows: rig_row_trace_rows)");
   const Point p{request.beta.value, request.gamma.value};
   detail::ContactCheck check(wave, Quantity::mu);
   check(p);
@@ -299,6 +325,77 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
     for (; next <= points && mpfr(next) / points < span.end; ++next)
       if (mpfr(next) / points > span.begin) add(span, mpfr(next) / points);
     add(span, span.end);
+  }
+  return rows;
+}
+
+std::vector<RigRowTraceRow> rig_row_trace_rows(const WaveSpec& wave, const TraceRequest& request, const RigSpec& rig,
+                                               const Options& opt) {
+  check_trace_request(request);
+  check_rig(rig);
+  if (request.profile.kind == ProfileKind::flat)
+    throw InputError("the row's trace on the flat punch: its rows are rig_trace_rows'");
+  const Point p{request.beta.value, request.gamma.value};
+  detail::ContactCheck check(wave, Quantity::mu);
+  check(p);
+  const int digits = request.digits, most = std::min(digits, 17);
+  // The phases: equally spaced, and where the body lands and lifts off (the central spring's
+  // contact boundaries, n = s = 0 there by definition), at the request's digits.
+  std::vector<mpfr> phis, edges;
+  {
+    PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
+    const auto w = make_waveform<mpfr>(wave);
+    const Contact<mpfr> contact = make_contact(*w, p.gamma.to<mpfr>());
+    for (const auto& g : contact.segments())
+      if (g.contact) {
+        if (g.nu == 0) edges.push_back(g.u);
+        if (g.nv == 0) edges.push_back(g.v);
+      }
+    phis = edges;
+    for (int i = 0; i <= request.points; ++i) phis.push_back(mpfr(i) / request.points);
+    std::sort(phis.begin(), phis.end());
+    phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+  }
+  std::vector<double> phases;
+  for (const mpfr& phi : phis) phases.push_back(phi.convert_to<double>());
+  const RowPair pair = row_pair(wave, p, rig, request.profile, opt, &phases);
+  const auto agree = [&](double a, double b) { return detail::agreed(mpfr(a), mpfr(b), most); };
+  // b with the digits above `error`.
+  const auto within = [&](double b, double error) {
+    using std::abs;
+    if (b == 0) return Significant{mpfr(0), 1};
+    if (!(error > 0)) return Significant{mpfr(b), most};
+    const int d = static_cast<int>(std::floor(std::log10(abs(b) / error)));
+    return Significant{mpfr(b), std::clamp(d, 1, most)};
+  };
+  // A sample of the row is a midpoint rule at one phase: where n or s has a kink or a jump across
+  // the row (the contact's edge, a mode's boundary) the cell holding it errs by up to its weight
+  // times the change across it, and the two rows can agree by chance; so each is uncertain by the
+  // rows' difference plus two cells' weight times the largest change between neighbours. A share
+  // counts whole springs: the difference plus two springs' weight.
+  const auto force = [&](double a, double b, double step) {
+    using std::abs;
+    return within(pair.x_max * b, pair.x_max * (abs(a - b) + 2 * pair.largest_weight * step));
+  };
+  const auto share = [&](double a, double b) {
+    using std::abs;
+    return within(b, abs(a - b) + 2 * pair.largest_weight);
+  };
+  std::vector<RigRowTraceRow> rows;
+  for (std::size_t k = 0; k < phis.size(); ++k) {
+    const RowRigSample<double>&a = pair.sa[k], &b = pair.sb[k];
+    const bool edge = std::find(edges.begin(), edges.end(), phis[k]) != edges.end();
+    RigRowTraceRow row;
+    row.phi = phis[k];
+    row.n = edge ? Significant{mpfr(0), 1} : force(a.n, b.n, b.n_step);
+    row.s = edge ? Significant{mpfr(0), 1} : force(a.s, b.s, b.s_step);
+    row.lag = agree(a.y, b.y);
+    row.lag_rate = agree(a.v, b.v);
+    row.stick = share(a.stick, b.stick);
+    row.slip = share(a.slip, b.slip);
+    row.backward = share(a.backward, b.backward);
+    row.flight = share(a.flight, b.flight);
+    rows.push_back(std::move(row));
   }
   return rows;
 }

@@ -6,4 +6,7 @@ template std::vector<RowSpring<double>> mdr_row(const Profile<double>&, const do
 template RowRigResult<double> solve_rig_row(const Waveform<double>&, const double&, const double&,
                                             const RigParameters<double>&, const std::vector<RowSpring<double>>&,
                                             const Options&);
+template RowRigResult<double> solve_rig_row(const Waveform<double>&, const double&, const double&,
+                                            const RigParameters<double>&, const std::vector<RowSpring<double>>&,
+                                            const Options&, const std::vector<double>&, std::vector<RowRigSample<double>>&);
 }  // namespace vibrofric

@@ -91,10 +91,15 @@ PhysicalOutputs physical_point(const WaveSpec& wave, const PhysicalRequest& requ
 // the contact boundaries), as the time t = φ/f, the normal and friction forces F_N = k n,
 // F_x = μ0 k s (k = k_z A for the punch, 2 E* A L for a curved shape's row) and the indenter
 // tip's indentation u = A (γ + w(φ)) (negative while the body is off the surface), each to
-// `digits` significant digits. Quasi-static contacts with the normal oscillation: InputError
-// with a rig, an in-plane drive or a constant normal force.
+// `digits` significant digits. With a rig (mass, k_system), the rows of rig_trace_rows (the
+// punch) or rig_row_trace_rows (a curved shape), F_x the contact's force on the body, and also
+// the body's position x = v0 t + Y (the drive at v0 t; the apparatus' spring relaxed at x = v0 t)
+// and the apparatus' force on it F_s = k_s (v0 t − x) + c (v0 − ẋ) (what a force sensor in the
+// holder reads), each to the digits its inputs carry (a curved row's: those its two sizes agree
+// on). InputError with an in-plane drive or a constant normal force.
 struct PhysicalTraceRow {
-  mpfr t_s, F_N_N, F_x_N, u_m;
+  Significant t_s, F_N_N, F_x_N, u_m;
+  std::optional<Significant> x_m, F_s_N;  // with a rig
 };
 std::vector<PhysicalTraceRow> physical_trace(const WaveSpec& wave, const PhysicalRequest& request, int points, int digits,
                                              const BatchOptions& options = {});

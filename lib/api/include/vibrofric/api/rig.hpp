@@ -78,6 +78,24 @@ struct TraceRequest;
 std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest& request, const RigSpec& rig,
                                         const Options& solver = {});
 
+// One row of a curved contact's rig trace (core/dynamics/rig_row.hpp, model.md "On a curved
+// contact"): φ; n and s summed over the half-row (units of the row, as trace_rows' curved rows:
+// mean(s)/mean(n) over the period is μ̄/μ0); the body's lag Y = X − βφ and its rate Y' (units
+// μ0 E* A/G*, per period); the row's shares (weights) in stick, in slip (backward included), in
+// backward slip and out of contact. Each number to the digits the row's two sizes agree on (at
+// most the request's and 17); φ at the request's digits plus guard digits (exact where the body
+// lands and lifts off, to the working precision).
+struct RigRowTraceRow {
+  mpfr phi;
+  Significant n, s, lag, lag_rate, stick, slip, backward, flight;
+};
+
+// Rows over one period, φ ascending: `points` + 1 equally spaced phases and where the body lands
+// and lifts off (the central spring's contact boundaries: n = s = 0 there); at an event the
+// value after it, at φ = 1 the period's end. InputError on the flat punch (rig_trace_rows).
+std::vector<RigRowTraceRow> rig_row_trace_rows(const WaveSpec& wave, const TraceRequest& request, const RigSpec& rig,
+                                               const Options& solver = {});
+
 namespace detail {
 // The value evaluate() prints for `precision` under options.rig: correctly rounded to the type (or
 // to the digits for mpfr) wherever the two precisions' difference is a true bound of the error.

@@ -71,9 +71,33 @@ RowRigResult<Real> solve_rig_row(const Waveform<Real>& w, const Real& beta, cons
                                  const RigParameters<Real>& p, const std::vector<RowSpring<Real>>& row,
                                  const Options& opt = {});
 
+// The periodic state at a phase φ ∈ [0, 1]: the row's mean forces ⟨n⟩ and ⟨s⟩ (weights summing to
+// 1), the body's lag Y = X − βφ and its rate Y', and the row's shares (weights) in stick, in slip
+// (backward included), in backward slip and out of contact. At an event the value after it (the
+// span that begins there); at φ = 1 the period's end. n_step, s_step: the largest change of a
+// spring's n, s to its neighbour in the row (the quadrature's cells; where n or s has a kink or a
+// jump across the row, the midpoint rule errs by up to a cell's weight times that).
+template <class Real>
+struct RowRigSample {
+  Real phi, n, s, y, v, stick, slip, backward, flight;
+  Real n_step = 0, s_step = 0;
+};
+
+// As solve_rig_row, and the periodic state at each of `phases` (each in [0, 1], any order) into
+// `samples`, in that order.
+template <class Real>
+RowRigResult<Real> solve_rig_row(const Waveform<Real>& w, const Real& beta, const Real& gamma,
+                                 const RigParameters<Real>& p, const std::vector<RowSpring<Real>>& row,
+                                 const Options& opt, const std::vector<Real>& phases,
+                                 std::vector<RowRigSample<Real>>& samples);
+
 extern template std::vector<RowSpring<double>> mdr_row(const Profile<double>&, const double&, std::size_t);
 extern template RowRigResult<double> solve_rig_row(const Waveform<double>&, const double&, const double&,
                                                    const RigParameters<double>&, const std::vector<RowSpring<double>>&,
                                                    const Options&);
+extern template RowRigResult<double> solve_rig_row(const Waveform<double>&, const double&, const double&,
+                                                   const RigParameters<double>&, const std::vector<RowSpring<double>>&,
+                                                   const Options&, const std::vector<double>&,
+                                                   std::vector<RowRigSample<double>>&);
 
 }  // namespace vibrofric
