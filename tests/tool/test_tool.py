@@ -2547,9 +2547,10 @@ def rig_tests():
     case("rig: trace rows at the flight's ends and the stick's end against closed forms", rig_trace_boundaries)
 
     def rig_trace_curved():
-        # trace of the rig on a ball: a stiff, light rig's n and s are the quasi-static curved trace's
-        # (its own algorithm: the flat solves of the row, curved_trace), the row's shares add to 1
-        # within their printed digits, and where the body lands and lifts off n = s = 0.
+        # trace of the rig on a ball: a stiff, light rig's s is the quasi-static curved trace's (its
+        # own algorithm: the flat solves of the row, curved_trace; n is the profile's closed form in
+        # both), the row's shares add to 1 within their printed digits, and where the body lands
+        # and lifts off n = s = 0.
         base = ["trace", "--wave", "sine", "--beta", "1.37", "--gamma", "0.42", "--profile", "sphere", "--points", "16"]
         rows = [l.split(",") for l in rig_ok_run(base + ["--kappa", "1e6", "--omega", "100", "--zeta", "0.5"]).splitlines()]
         quasi = [l.split(",") for l in ok_run(base).splitlines()]

@@ -499,9 +499,12 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
         const long e = static_cast<long>(floor(log10(abs(v.value))));
         return mpfr(pow(mpfr(10), e - v.digits + 1) / 2);
       };
+      // v to the most digits (at most d) whose half unit in the last place covers the error
       const auto with_error = [&](const mpfr& v, const mpfr& error) {
         if (v == 0 || error == 0) return at(v);
-        const int digits = static_cast<int>(std::clamp(floor(log10(abs(v) / error)).convert_to<long>(), 1L, long(d)));
+        const long e = static_cast<long>(floor(log10(abs(v))));
+        int digits = d;
+        while (digits > 1 && error > pow(mpfr(10), e - digits + 1) / 2) --digits;
         return Significant{mpfr(format_significant(v, digits)), digits};
       };
       const auto scaled = [&](const mpfr& k, const Significant& v) {
@@ -522,11 +525,15 @@ PhysicalOutputs physical_at(const WaveSpec& wave, const PhysicalRequest& r, cons
         };
         if (trace->rows.empty() || text(trace->rows.back()) != text(row)) trace->rows.push_back(std::move(row));
       };
+      // the body's columns from the lag and its rate at 3 guard digits (x and F_s each derive from
+      // one of them, and would lose a digit to its rounding at d)
+      TraceRequest body = request;
+      body.digits = std::min(d + 3, max_digits);
       if (kind == "flat") {
-        for (const RigTraceRow& row : rig_trace_rows(wave, request, *options.rig, options.solver))
-          add(row.phi, {row.n, d}, {row.s, d}, {row.lag, d}, {row.lag_rate, d});
+        for (const RigTraceRow& row : rig_trace_rows(wave, body, *options.rig, options.solver))
+          add(row.phi, {row.n, body.digits}, {row.s, body.digits}, {row.lag, body.digits}, {row.lag_rate, body.digits});
       } else {
-        for (const RigRowTraceRow& row : rig_row_trace_rows(wave, request, *options.rig, options.solver))
+        for (const RigRowTraceRow& row : rig_row_trace_rows(wave, body, *options.rig, options.solver))
           add(row.phi, row.n, row.s, row.lag, row.lag_rate);
       }
     }

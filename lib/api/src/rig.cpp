@@ -341,11 +341,15 @@ std::vector<RigRowTraceRow> rig_row_trace_rows(const WaveSpec& wave, const Trace
   const int digits = request.digits, most = std::min(digits, 17);
   // The phases: equally spaced, and where the body lands and lifts off (the central spring's
   // contact boundaries, n = s = 0 there by definition), at the request's digits.
-  std::vector<mpfr> phis, edges;
+  // n is prescribed (the normal motion does not see the rig): exactly, from the profile, the
+  // half-row's c X − ∫₀^X σ dx with c = γ + w(φ), σ(X) = c (as the quasi-static curved trace).
+  std::vector<mpfr> phis, edges, normal;
   {
     PrecisionScope scope(static_cast<unsigned>(digits + guard_digits(digits)));
     const auto w = make_waveform<mpfr>(wave);
-    const Contact<mpfr> contact = make_contact(*w, p.gamma.to<mpfr>());
+    const auto shape = make_profile<mpfr>(request.profile);
+    const mpfr gamma = p.gamma.to<mpfr>();
+    const Contact<mpfr> contact = make_contact(*w, gamma);
     for (const auto& g : contact.segments())
       if (g.contact) {
         if (g.nu == 0) edges.push_back(g.u);
@@ -355,6 +359,16 @@ std::vector<RigRowTraceRow> rig_row_trace_rows(const WaveSpec& wave, const Trace
     for (int i = 0; i <= request.points; ++i) phis.push_back(mpfr(i) / request.points);
     std::sort(phis.begin(), phis.end());
     phis.erase(std::unique(phis.begin(), phis.end()), phis.end());
+    for (const mpfr& phi : phis) {
+      const mpfr c = gamma + (*w)(phi - floor(phi));
+      const bool edge = std::find(edges.begin(), edges.end(), phi) != edges.end();
+      if (edge || !(c > 0)) {
+        normal.push_back(mpfr(0));
+      } else {
+        const mpfr X = shape->x_at_sigma(c);
+        normal.push_back(mpfr(c * X - shape->sigma_integral(X)));
+      }
+    }
   }
   std::vector<double> phases;
   for (const mpfr& phi : phis) phases.push_back(phi.convert_to<double>());
@@ -368,11 +382,11 @@ std::vector<RigRowTraceRow> rig_row_trace_rows(const WaveSpec& wave, const Trace
     const int d = static_cast<int>(std::floor(std::log10(abs(b) / error)));
     return Significant{mpfr(b), std::clamp(d, 1, most)};
   };
-  // A sample of the row is a midpoint rule at one phase: where n or s has a kink or a jump across
-  // the row (the contact's edge, a mode's boundary) the cell holding it errs by up to its weight
-  // times the change across it, and the two rows can agree by chance; so each is uncertain by the
-  // rows' difference plus two cells' weight times the largest change between neighbours. A share
-  // counts whole springs: the difference plus two springs' weight.
+  // A sample of the row is a midpoint rule at one phase: where s has a kink or a jump across the
+  // row (the contact's edge, a mode's boundary) the cell holding it errs by up to its weight times
+  // the change across it, and the two rows can agree by chance; so s is uncertain by the rows'
+  // difference plus two cells' weight times the largest change between neighbours. A share counts
+  // whole springs: the difference plus two springs' weight.
   const auto force = [&](double a, double b, double step) {
     using std::abs;
     return within(pair.x_max * b, pair.x_max * (abs(a - b) + 2 * pair.largest_weight * step));
@@ -387,7 +401,7 @@ std::vector<RigRowTraceRow> rig_row_trace_rows(const WaveSpec& wave, const Trace
     const bool edge = std::find(edges.begin(), edges.end(), phis[k]) != edges.end();
     RigRowTraceRow row;
     row.phi = phis[k];
-    row.n = edge ? Significant{mpfr(0), 1} : force(a.n, b.n, b.n_step);
+    row.n = normal[k] == 0 ? Significant{mpfr(0), 1} : Significant{normal[k], digits};
     row.s = edge ? Significant{mpfr(0), 1} : force(a.s, b.s, b.s_step);
     row.lag = agree(a.y, b.y);
     row.lag_rate = agree(a.v, b.v);

@@ -33,6 +33,7 @@ class RowRigEngine : public RowRigPeriod<Real> {
   using Base::period;
   using Base::row_;
   using Base::row_change;
+  using Base::row_of_forces;
   using Base::section_;
   using Base::section_force;
   using Base::shift;
@@ -176,8 +177,8 @@ class RowRigEngine : public RowRigPeriod<Real> {
   // period ends in, moved by Newton's step. Every spring in contact slips once a period
   // (the body advances β) and so forgets its start: the row's states follow the body's. Converged
   // where one period returns the body to 64 ε of its scale and every spring's force to 64 ε of the
-  // row's largest bound; else, stalled (the map's kinks, rounding), the best state within √ε; else
-  // the full map's transient while it contracts (up to 4000 periods).
+  // row's largest bound; else, stalled (the map's kinks, rounding, or a slow mode of the row that
+  // Newton on the body does not reach), the best state within √ε; else Newton–GMRES on the full map.
   State settle(State u, Row& R, std::size_t& steps, Real& last) const {
     using std::abs;
     using std::sqrt;
@@ -227,24 +228,154 @@ class RowRigEngine : public RowRigPeriod<Real> {
       last = best * scale(best_u);
       return best_u;
     }
-    u = best_u;
-    R = best_R;
-    Real prev = best;
-    for (int k = 0; k < 4000; ++k) {
-      Row R1 = R;
-      const State Pu = advance(u, R1);
-      const Real now = std::max(body_size(State{Pu[0] - u[0], Pu[1] - u[1]}) / scale(u), row_change(u[0], R, Pu[0], R1) / bound);
-      u = Pu;
-      R = std::move(R1);
-      if (now <= 64 * eps) {
-        last = now * scale(u);
-        return u;
+    R = std::move(best_R);
+    return newton_krylov(best_u, R, steps, last);
+  }
+
+  // The full map's fixed point by Newton–GMRES, where Newton on the body leaves a slow mode of the
+  // row (a heavy body on a contact that stays closed: multipliers near 1). The state is z = (Y, Y',
+  // every spring's force at the section), scaled as settle measures it; a force maps back to a
+  // stick spring at it (on its bound the period's start rules slip, as the sweeping process does),
+  // the map to the forces its period ends with. Each step solves (J − I) d = z − P(z) by GMRES on
+  // J's products by forward differences (a period each; the row forgets, so few directions
+  // matter), to 1e-4 of the residual or 40 products, caps d at 64 residuals and halves it until
+  // the residual falls by a tenth; where none does (the map is near a translation where the row
+  // sticks all period), 32 plain periods (at most eight times) and Newton again.
+  // Accepted at 64 ε, or within √ε where Newton can bring it no lower.
+  State newton_krylov(const State& u0, Row& R, std::size_t& steps, Real& last) const {
+    using std::abs;
+    using std::sqrt;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    const Real bound = 1 + abs(gamma_) + abs(wave_.maximum());
+    const Real body = sqrt(Real(omega2_ * (p_.kappa + 1)));
+    const Real sc = 1 + body_size(u0);
+    const std::size_t m = row_.size(), size = m + 2;
+    using Vec = std::vector<Real>;
+    const auto to_z = [&](const State& u, const Row& rows) {
+      Vec z(size);
+      z[0] = u[0] / sc;
+      z[1] = u[1] / (body * sc);
+      for (std::size_t j = 0; j < m; ++j) z[j + 2] = section_force(u[0], rows[j], j) / bound;
+      return z;
+    };
+    const auto rows_of = [&](const Vec& z) {
+      Vec forces(m);
+      for (std::size_t j = 0; j < m; ++j) forces[j] = z[j + 2] * bound;
+      return row_of_forces(z[0] * sc, forces);
+    };
+    const auto map = [&](const Vec& z) {
+      const Row rows = rows_of(z);
+      Row next;
+      const State Pu = period(State{z[0] * sc, z[1] * body * sc}, nullptr, &rows, &next);
+      return to_z(Pu, next);
+    };
+    const auto largest = [](const Vec& v) {
+      Real n = 0;
+      for (const Real& c : v) n = std::max(n, Real(abs(c)));
+      return n;
+    };
+    const auto dot = [](const Vec& a, const Vec& b) {
+      Real t = 0;
+      for (std::size_t i = 0; i < a.size(); ++i) t += a[i] * b[i];
+      return t;
+    };
+    Vec z = to_z(u0, R), g = map(z), r(size);
+    for (std::size_t i = 0; i < size; ++i) r[i] = g[i] - z[i];
+    Real now = largest(r);
+    int plain_runs = 0;
+    for (int it = 0; it < 40 && now > 64 * eps; ++it) {
+      ++steps;
+      // GMRES on A d = r, A v = v − J v (so that d is the step: z + d)
+      const Real h = Real(1e-7);
+      const Real beta = sqrt(dot(r, r));
+      std::vector<Vec> V{Vec(size)};
+      for (std::size_t i = 0; i < size; ++i) V[0][i] = r[i] / beta;
+      std::vector<Vec> H;  // H[k]: column k, k + 2 entries
+      std::vector<Real> cs, sn, e{beta};
+      std::size_t k = 0;
+      for (; k < 40; ++k) {
+        Vec zh(size);
+        for (std::size_t i = 0; i < size; ++i) zh[i] = z[i] + h * V[k][i];
+        const Vec gh = map(zh);
+        Vec w(size);
+        for (std::size_t i = 0; i < size; ++i) w[i] = V[k][i] - (gh[i] - g[i]) / h;
+        Vec col(k + 2, Real(0));
+        for (std::size_t q = 0; q <= k; ++q) {
+          col[q] = dot(w, V[q]);
+          for (std::size_t i = 0; i < size; ++i) w[i] -= col[q] * V[q][i];
+        }
+        col[k + 1] = sqrt(dot(w, w));
+        for (std::size_t q = 0; q < k; ++q) {  // the earlier rotations
+          const Real t = cs[q] * col[q] + sn[q] * col[q + 1];
+          col[q + 1] = -sn[q] * col[q] + cs[q] * col[q + 1];
+          col[q] = t;
+        }
+        const Real rho = sqrt(col[k] * col[k] + col[k + 1] * col[k + 1]);
+        cs.push_back(rho > 0 ? col[k] / rho : Real(1));
+        sn.push_back(rho > 0 ? col[k + 1] / rho : Real(0));
+        const Real next_norm = col[k + 1];
+        col[k] = rho;
+        col[k + 1] = 0;
+        e.push_back(-sn[k] * e[k]);
+        e[k] = cs[k] * e[k];
+        H.push_back(col);
+        if (!(next_norm > 0) || abs(e[k + 1]) <= Real(1e-4) * beta) {
+          ++k;
+          break;
+        }
+        Vec v(size);
+        for (std::size_t i = 0; i < size; ++i) v[i] = w[i] / next_norm;
+        V.push_back(std::move(v));
       }
-      if (k > 16 && now > prev * Real(0.999)) break;
-      prev = now;
+      // back substitution for the k coefficients, the step d = V y
+      std::vector<Real> y(k, Real(0));
+      for (std::size_t a = k; a-- > 0;) {
+        Real t = e[a];
+        for (std::size_t b = a + 1; b < k; ++b) t -= H[b][a] * y[b];
+        y[a] = H[a][a] != 0 ? t / H[a][a] : Real(0);
+      }
+      Vec d(size, Real(0));
+      for (std::size_t a = 0; a < k; ++a)
+        for (std::size_t i = 0; i < size; ++i) d[i] += y[a] * V[a][i];
+      // a step far beyond the residual is the linear model's, not the map's (its kinks): capped at
+      // 64 residuals (a slow mode of multiplier 0.98 needs 50)
+      if (const Real dmax = largest(d); dmax > 64 * now)
+        for (Real& c : d) c *= 64 * now / dmax;
+      bool better = false;
+      for (int halve = 0; halve < 10 && !better; ++halve) {
+        Vec zn(size);
+        for (std::size_t i = 0; i < size; ++i) zn[i] = z[i] + d[i];
+        const Vec gn = map(zn);
+        Vec rn(size);
+        for (std::size_t i = 0; i < size; ++i) rn[i] = gn[i] - zn[i];
+        const Real nn = largest(rn);
+        if (nn < Real(0.9) * now) {
+          z = std::move(zn);
+          g = gn;
+          r = std::move(rn);
+          now = nn;
+          better = true;
+        }
+        for (Real& c : d) c /= 2;
+      }
+      if (!better) {
+        // no step of the linear model lowers it: 32 periods of the map itself, then Newton again
+        if (++plain_runs > 8) break;
+        for (int q = 0; q < 32; ++q) {
+          z = g;
+          g = map(z);
+        }
+        for (std::size_t i = 0; i < size; ++i) r[i] = g[i] - z[i];
+        now = largest(r);
+      }
     }
-    throw SolverError("rig dynamics on a curved contact: no periodic state found with the row in contact through "
-                      "the section (Newton with the row carried, and 4000 periods of transient, did not converge)");
+    if (!(now <= sqrt(eps)))
+      throw SolverError("rig dynamics on a curved contact: no periodic state found with the row in contact through "
+                        "the section (Newton with the row carried, then Newton-GMRES on the full map: residual " +
+                        short_str(now) + " of the state's scale)");
+    R = rows_of(z);
+    last = now * sc;
+    return State{z[0] * sc, z[1] * body * sc};
   }
 
   // The largest multiplier where the row is carried: of the full map's linearisation, in the

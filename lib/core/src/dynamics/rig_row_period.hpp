@@ -178,6 +178,19 @@ class RowRigPeriod {
         return 0;
     }
   }
+  // The row at the section with these forces, the body at Y = y: each spring in contact there
+  // sticking at its force clamped to its bound (on the bound the period's start rules slip, as the
+  // sweeping process does), the others out.
+  Row row_of_forces(const Real& y, const std::vector<Real>& forces) const {
+    Row R(row_.size());
+    for (std::size_t j = 0; j < row_.size(); ++j) {
+      const Real n = std::max(Real(gj(j) + pieces_.front().prev_end), Real(0));
+      if (!(n > 0)) continue;
+      R[j].mode = Mode::stick;
+      R[j].xc = y - std::clamp(forces[j], Real(-n), n);
+    }
+    return R;
+  }
   // The largest change of a spring's force at the section between two states.
   Real row_change(const Real& y0, const Row& a, const Real& y1, const Row& b) const {
     using std::abs;
@@ -238,9 +251,9 @@ class RowRigPeriod {
     std::vector<RowRigSample<Real>>* samples = nullptr;
   };
 
-  // The samples of r.want in [a, b) of a span under motion m (the right values), and at b those
-  // of side 0 (the left values) and where b ends the period.
-  void sample(Run& r, const Piece& pc, const Sums& S, const Motion<Real>& m, const Real& a, const Real& b) const {
+  // The samples of r.want up to b, the end of a span under motion m, from where the last span ended:
+  // before b the right values, at b those of side 0 (the left values) and where b ends the period.
+  void sample(Run& r, const Piece& pc, const Sums& S, const Motion<Real>& m, const Real& b) const {
     const Real end = section_ + 1;
     for (; r.next_sample < r.want->size(); ++r.next_sample) {
       const Real& phi = (*r.want)[r.next_sample].phi;
@@ -647,7 +660,7 @@ class RowRigPeriod {
         r.slip += (S.Wf + S.Wb) * (b - a);
         r.back += S.Wb * (b - a);
         if (r.record) track(r, m, a, b, rate);
-        if (r.want) sample(r, pc, S, m, a, b);
+        if (r.want) sample(r, pc, S, m, b);
       }
       const auto yb = m(b);
       r.y = yb[0];

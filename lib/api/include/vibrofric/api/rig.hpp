@@ -82,9 +82,10 @@ std::vector<RigTraceRow> rig_trace_rows(const WaveSpec& wave, const TraceRequest
 // contact"): φ; n and s summed over the half-row (units of the row, as trace_rows' curved rows:
 // mean(s)/mean(n) over the period is μ̄/μ0); the body's lag Y = X − βφ and its rate Y' (units
 // μ0 E* A/G*, per period); the row's shares (weights) in stick, in slip (backward included), in
-// backward slip and out of contact. Each number to the digits the row's two sizes agree on (at
-// most the request's and 17); φ at the request's digits plus guard digits (exact where the body
-// lands and lifts off, to the working precision).
+// backward slip and out of contact. n exactly (the profile's closed form: the normal motion is
+// prescribed) to the request's digits; the others to the digits the row's two sizes agree on (at
+// most the request's and 17; s and the shares fewer, by the midpoint rule's cell at a kink); φ at
+// the request's digits plus guard digits (exact where the body lands and lifts off).
 struct RigRowTraceRow {
   mpfr phi;
   Significant n, s, lag, lag_rate, stick, slip, backward, flight;
