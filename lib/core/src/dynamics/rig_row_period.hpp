@@ -262,7 +262,7 @@ class RowRigPeriod {
       const auto yv = m(phi);
       const Real w = wave_derivatives(pc.form, phi)[0];
       const Real X = yv[0] + beta_ * phi;
-      Real n = 0, flight = 0, n_step = 0, s_step = 0, n_prev = 0, s_prev = 0;
+      Real n = 0, flight = 0, s_step = 0, s_prev = 0;
       for (std::size_t j = 0; j < row_.size(); ++j) {
         const Real nj = std::max(Real(gj(j) + w), Real(0));
         const Mode mode = r.s[j].mode;
@@ -273,15 +273,12 @@ class RowRigPeriod {
         // neighbours of the quadrature (a wear flat's spring at σ = 0 stands for its flat exactly)
         if (j > 0 && row_[j - 1].sigma > 0) {
           using std::abs;
-          n_step = std::max(n_step, Real(abs(Real(nj - n_prev))));
           s_step = std::max(s_step, Real(abs(Real(sj - s_prev))));
         }
-        n_prev = nj;
         s_prev = sj;
       }
       RowRigSample<Real>& out = (*r.samples)[k];
       out.flight = flight;
-      out.n_step = n_step;
       out.s_step = s_step;
       out.n = n;
       out.s = S.Ws * (yv[0] + beta_ * phi) - S.As + S.Gf - S.Gb + (S.Wf - S.Wb) * w;

@@ -74,13 +74,13 @@ RowRigResult<Real> solve_rig_row(const Waveform<Real>& w, const Real& beta, cons
 // The periodic state at a phase φ ∈ [0, 1]: the row's mean forces ⟨n⟩ and ⟨s⟩ (weights summing to
 // 1), the body's lag Y = X − βφ and its rate Y', and the row's shares (weights) in stick, in slip
 // (backward included), in backward slip and out of contact. At an event the value after it (the
-// span that begins there); at φ = 1 the period's end. n_step, s_step: the largest change of a
-// spring's n, s to its neighbour in the row (the quadrature's cells; where n or s has a kink or a
-// jump across the row, the midpoint rule errs by up to a cell's weight times that).
+// span that begins there); at φ = 1 the period's end. s_step: the largest change of a spring's s
+// to its neighbour in the row (the quadrature's cells; where s has a kink or a jump across the
+// row, the midpoint rule errs by up to a cell's weight times that).
 template <class Real>
 struct RowRigSample {
   Real phi, n, s, y, v, stick, slip, backward, flight;
-  Real n_step = 0, s_step = 0;
+  Real s_step = 0;
 };
 
 // As solve_rig_row, and the periodic state at each of `phases` (each in [0, 1], any order) into
