@@ -76,25 +76,34 @@ std::unique_ptr<Waveform<mpfr>> wave_named(const std::string& name) {
 
 // a_l = 0 is the paper's model spring by spring: the row of in-plane springs, whose kinks the
 // structure search must find, equals solve_curved's row, whose breakpoints come from the flat
-// solver's event structure (gamma_breakpoints). At 30 digits both integrate to ~1e-27.
+// solver's event structure (gamma_breakpoints). At 30 digits both integrate to ~1e-27. The wear
+// flat adds the flat part's spring, its own term of every area (the lateral one 0 like the rest).
 TEST(InPlaneCurved, ZeroAmplitudeIsThePapersCurvedModel) {
   PrecisionScope scope(30);
   struct Case {
     const char* wave;
-    int exponent;
+    const char* profile;  // power:N or wearflat:λ
     const char *beta, *gamma;
   };
-  for (const Case& c : {Case{"sine", 2, "0.5", "0.2"}, Case{"sine", 2, "0.3", "-0.3"}, Case{"sine", 1, "0.5", "0.2"},
-                        Case{"triangle", 2, "0.4", "0"}, Case{"square", 2, "0.7", "-0.5"}}) {
-    SCOPED_TRACE(std::string(c.wave) + " power:" + std::to_string(c.exponent) + " beta " + c.beta + " gamma " + c.gamma);
+  for (const Case& c : {Case{"sine", "power:2", "0.5", "0.2"}, Case{"sine", "power:2", "0.3", "-0.3"},
+                        Case{"sine", "power:1", "0.5", "0.2"}, Case{"triangle", "power:2", "0.4", "0"},
+                        Case{"square", "power:2", "0.7", "-0.5"}, Case{"sine", "wearflat:0.5", "0.5", "0.2"},
+                        Case{"triangle", "wearflat:2", "0.4", "-0.3"}}) {
+    SCOPED_TRACE(std::string(c.wave) + " " + c.profile + " beta " + c.beta + " gamma " + c.gamma);
     const auto w = wave_named(c.wave);
     const auto p = wave_named("sine");
-    const PowerProfile<mpfr> profile{mpfr(c.exponent), "power:" + std::to_string(c.exponent)};
+    const std::string name(c.profile);
+    const mpfr parameter(name.substr(name.find(':') + 1));
+    std::unique_ptr<Profile<mpfr>> profile;
+    if (name.rfind("wearflat:", 0) == 0)
+      profile = std::make_unique<WearFlatProfile<mpfr>>(parameter, name);
+    else
+      profile = std::make_unique<PowerProfile<mpfr>>(parameter, name);
     const mpfr beta(c.beta), gamma(c.gamma);
     const PlanarDrive<mpfr> drive{mpfr(0), mpfr(0), mpfr(0)};
     const auto row = solve_inplane_curved<mpfr>(
-        *w, profile, gamma, [&](const mpfr& g) { return inplane_spring<mpfr>(*w, g, *p, beta, drive); }, mpfr("1e-27"));
-    const auto paper = solve_curved(*w, profile, beta, gamma, Options{}, mpfr("1e-28"));
+        *w, *profile, gamma, [&](const mpfr& g) { return inplane_spring<mpfr>(*w, g, *p, beta, drive); }, mpfr("1e-27"));
+    const auto paper = solve_curved(*w, *profile, beta, gamma, Options{}, mpfr("1e-28"));
     EXPECT_LE(abs(mpfr(row.mu - paper.mu)), mpfr("1e-24")) << row.mu << " against " << paper.mu;
     EXPECT_LE(abs(mpfr(row.normal_integral - paper.normal_integral)), mpfr("1e-24"));
     EXPECT_EQ(row.mean_lateral, 0);
