@@ -100,9 +100,11 @@ TEST(RigRow, ARowAtSigmaZeroIsTheFlatRig) {
 // The independent peer: the body by the semi-implicit Euler step and every spring by the
 // catching-up (Moreau) projection of its own stop operator, s ← clamp(s + ΔX, −n, n), with n at the
 // step's end (out of contact n = 0, so a spring touches down stress free within a step). First
-// order in the step; the periodic state by running periods until they repeat to 1e-12.
+// order in the step; the periodic state by running periods until they repeat to 1e-12. A
+// spring's contact point X − s moves backward by s − (s + ΔX) in a step clamped at −n; its
+// backward phase ends when the spring sticks, slips forward or leaves the plate.
 struct PeerValue {
-  double mu, stick, flight;
+  double mu, stick, flight, backward, largest_backward_slip;
 };
 PeerValue row_peer(const Waveform<double>& w, const Case& c, const std::vector<RowSpring<double>>& row,
                    std::size_t steps) {
@@ -110,12 +112,12 @@ PeerValue row_peer(const Waveform<double>& w, const Case& c, const std::vector<R
   const double a = (2 * pi * c.omega) * (2 * pi * c.omega), b = 4 * pi * c.zeta * c.omega * std::sqrt(c.kappa);
   // lag Y = X − βφ and its rate, so that a period ends where it began
   double Y = 0, U = 0;
-  std::vector<double> s(row.size(), 0.0);
+  std::vector<double> s(row.size(), 0.0), run(row.size(), 0.0);
   PeerValue out{};
   for (int period = 0; period < 4000; ++period) {
     const double Y0 = Y, U0 = U;
     const std::vector<double> s0 = s;  // springs in contact through the period's end carry their force
-    double sum_s = 0, sum_n = 0, stick = 0, flight = 0;
+    double sum_s = 0, sum_n = 0, stick = 0, flight = 0, backward = 0, largest = 0;
     for (std::size_t k = 0; k < steps; ++k) {
       const double phi1 = static_cast<double>(k + 1) * h;
       double mean = 0;
@@ -132,9 +134,17 @@ PeerValue row_peer(const Waveform<double>& w, const Case& c, const std::vector<R
         sum_n += row[j].weight * n;
         if (n <= 0) flight += row[j].weight;
         else if (s[j] == free) stick += row[j].weight;
+        if (n > 0 && free < -n) {
+          backward += row[j].weight;
+          run[j] += s[j] - free;
+        } else {
+          largest = std::max(largest, run[j]);
+          run[j] = 0;
+        }
       }
     }
-    out = {sum_s / sum_n, stick * h, flight * h};
+    for (double r : run) largest = std::max(largest, r);  // a phase still open at the period's end
+    out = {sum_s / sum_n, stick * h, flight * h, backward * h, largest};
     double moved = std::abs(Y - Y0) + std::abs(U - U0) / (2 * pi * c.omega);
     for (std::size_t j = 0; j < row.size(); ++j) moved += std::abs(s[j] - s0[j]);
     if (period > 10 && moved < 1e-12) return out;
@@ -147,12 +157,15 @@ PeerValue row_peer(const Waveform<double>& w, const Case& c, const std::vector<R
 // sphere (the same row for both), its error at 2^12, 2^14 and 2^16 steps a period shrinks, and at
 // 2^16 it is within 4 h (measured 0.12–0.60 h over the three cases and steps: the catching-up
 // step's O(h) at the row's touch-downs and slip starts, which fall between its steps); the
-// fractions, counted per step, within 4 h (measured at most 0.68 h).
+// fractions, counted per step, within 4 h (stick and flight measured at most 0.68 h), and so the
+// largest backward slip. In the triangle and the last case springs slip backward until they lose
+// contact as the row unloads (a backward phase that contact loss ends).
 TEST(RigRow, TimeSteppingPeerConvergesToTheRowSolver) {
   const PowerProfile<double> sphere(2.0, "sphere");
+  int backward = 0;
   for (const Case& c : {Case{"sine", 1.37, 0.42, 2.6, 3.3, 0.3}, Case{"triangle", 0.8, 0.44, 0.1, 9.3, 0.08},
                         Case{"sawtooth-left", 0.3, 0.2, 2, 2, 0.2}, Case{"sine", 0.5, 1.5, 1, 2, 0.1},
-                        Case{"square", 1.2, 1.25, 0.6, 3, 0.05}}) {
+                        Case{"square", 1.2, 1.25, 0.6, 3, 0.05}, Case{"sine", 1.37, 0.42, 0.6, 1.3, 0.05}}) {
     SCOPED_TRACE(label(c));
     const auto w = wave_named(c.wave);
     const auto row = mdr_row(sphere, c.gamma + 1, 16);
@@ -167,9 +180,13 @@ TEST(RigRow, TimeSteppingPeerConvergesToTheRowSolver) {
         EXPECT_LT(err, 4 * h);
         EXPECT_NEAR(p.flight, r.flight_fraction, 4 * h);
         EXPECT_NEAR(p.stick, r.stick_fraction, 4 * h);
+        EXPECT_NEAR(p.backward, r.backward_fraction, 4 * h);
+        EXPECT_NEAR(p.largest_backward_slip, r.largest_backward_slip, 4 * h);
+        if (r.backward_fraction > 0) ++backward;
       }
     }
   }
+  EXPECT_GE(backward, 1);
 }
 
 // A heavy body on a ball that never leaves the plate (Ω = 0.06, undamped, γ = 4: the review's
