@@ -6,7 +6,9 @@
 //   rows away from an event, Y = X − βφ and Y' differenced from the printed lag and rate;
 // - the period's means: ⟨s⟩ = κ⟨βφ − X⟩ (the system spring carries the friction), ∫s/∫n = μ̄/μ0,
 //   the shares' integrals and the lag's extremes: evaluate_rig's fields;
-// - in SI: F_s = k_s (v0 t − x) + c (v0 − ẋ) and m ẍ = F_s − F_x, ẋ and ẍ from the printed x.
+// - in SI: F_s = k_s (v0 t − x) + c (v0 − ẋ) and m ẍ = F_s − F_x, ẋ and ẍ from the printed x;
+// - and a curved rig's report: its row's size by the doubling rule, its error estimate against a
+//   row of 12800 springs.
 // Each tolerance adds the printed digits' half units, carried through the formula, to the
 // differences' and the trapezoid's own error.
 #include <gtest/gtest.h>
@@ -21,6 +23,9 @@
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/api/rig.hpp"
+#include "vibrofric/core/curved/curved.hpp"
+#include "vibrofric/core/dynamics/rig_row.hpp"
+#include "vibrofric/core/waves/waveform.hpp"
 
 namespace vibrofric {
 namespace {
@@ -239,6 +244,57 @@ TEST_P(RigTrace, PeriodMeansAreTheReportsFields) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, RigTrace, ::testing::ValuesIn(kCases));
+
+// A curved rig's relative_error_estimate (the rows of n/2 and n springs apart, rig.cpp row_pair)
+// against the true error of the row of n springs (report.springs, its μ̄ recomputed here on that
+// row): μ̄ on a row of 12800 springs, whose own error is about 1e-11 (the quadrature's n^-2.5 from
+// 1.3e-9 at 1600). The estimate must hold the true error, and not by more than 64 times (the
+// difference of n/2 and n is about five times the error of n at n^-2.5), so that neither a term
+// dropped nor one inflated passes.
+TEST(RigReport, CurvedErrorEstimateHoldsTheRowsErrorTightly) {
+  for (const Case& c : {kCases[0], kCases[1], kCases[2]}) {
+    SCOPED_TRACE(::testing::PrintToString(c));
+    const RigReport report = evaluate_rig(parse_wave(c.wave), Point(c.beta, c.gamma), rig_of(c),
+                                          {NumberType::float64, 17}, {}, parse_profile(c.profile));
+    const PowerProfile<double> sphere(2.0, "sphere");
+    const Sine<double> w;
+    const double gamma = std::stod(c.gamma);
+    const RigParameters<double> p{std::stod(c.kappa), std::stod(c.omega), std::stod(c.zeta), 0};
+    const auto solve = [&](std::size_t n) { return solve_rig_row<double>(w, std::stod(c.beta), gamma, p, mdr_row(sphere, gamma + 1, n), {}).mu; };
+    const double printed = solve(report.springs), fine = solve(12800);
+    const double error = std::abs(printed - fine) / std::abs(fine);
+    const double estimate = static_cast<double>(report.relative_error.value);
+    EXPECT_NEAR(printed, std::stod(report.mu), half_unit(mpfr(report.mu), report.mu_digits));
+    EXPECT_LE(error, estimate) << report.springs << " springs: " << printed << ", 12800: " << fine;
+    EXPECT_GE(error, estimate / 64) << report.springs << " springs: " << printed << ", 12800: " << fine;
+  }
+}
+
+// The row is doubled from 200 springs until the rows of n/2 and n agree to 1e-8 of μ̄ or n = 3200
+// (rig.cpp row_pair): the number of springs reported is the rule's, from μ̄ on each row here. The
+// cone's row converges slowest (n^-2 at its tip): it needs the largest row.
+TEST(RigReport, CurvedRowDoubledUntilTwoSizesAgree) {
+  struct Row {
+    const char* profile;
+    double exponent;
+  };
+  for (const Row& shape : {Row{"sphere", 2.0}, Row{"cone", 1.0}}) {
+    SCOPED_TRACE(shape.profile);
+    const Case c{"sine", shape.profile, "1.37", "0.42", "2.6", "3.3", "0.3"};
+    const RigReport report = evaluate_rig(parse_wave(c.wave), Point(c.beta, c.gamma), rig_of(c),
+                                          {NumberType::float64, 17}, {}, parse_profile(c.profile));
+    const PowerProfile<double> profile(shape.exponent, shape.profile);
+    const Sine<double> w;
+    const RigParameters<double> p{2.6, 3.3, 0.3, 0};
+    const auto mu = [&](std::size_t n) { return solve_rig_row<double>(w, 1.37, 0.42, p, mdr_row(profile, 1.42, n), {}).mu; };
+    std::size_t n = 200;
+    for (double lower = mu(100), higher = mu(200); n < 3200 && std::abs(lower - higher) > 1e-8 * std::abs(higher); n *= 2) {
+      lower = higher;
+      higher = mu(2 * n);
+    }
+    EXPECT_EQ(report.springs, n);
+  }
+}
 
 // physical --trace with a damped rig (the damper's force c (v0 − ẋ) a few per cent of F_s), on the
 // punch and on a ball: F_s = k_s (v0 t − x) + c (v0 − ẋ) at every equally spaced row away from the
