@@ -292,6 +292,29 @@ TEST(Physical, InPlaneOutputsInSIUnits) {
     EXPECT_EQ(z.at("stick_fraction").text(), n.at("stick_fraction").text());
     EXPECT_EQ(n.count("longitudinal"), 0u);
   }
+  {  // normal and transverse oscillation a quarter period apart: the lateral force μ0 F_N ∫s_y/∫n,
+     // with μ0 = 0.3 apart from 1 (in double: the planar solver at 20 digits takes seconds)
+    PhysicalRequest r;
+    auto values = solids;
+    values.insert({{"v0", "2e-3"}, {"f", "20000"}, {"A", "1e-6"}, {"u_mean", "2e-7"}, {"u_y", "1e-6"}, {"phase", "0.25"}});
+    set_inputs(r, values);
+    const WaveSpec sine = parse_wave("sine");
+    std::map<std::string, PhysicalOutput> out;
+    for (const PhysicalOutput& o : physical_point(sine, r, {NumberType::float64, 17})) out.emplace(o.name, o);
+    const mpfr a_t = groups.G_star * mpfr("1e-6") / (in.mu0 * groups.E_star * in.A);
+    InPlaneSpec spec;
+    spec.longitudinal = InputValue::read("0", "longitudinal");
+    spec.transverse = computed(a_t);
+    spec.phase = InputValue::read("0.25", "phase");
+    const InPlaneReport want =
+        evaluate_inplane(sine, Point(computed(groups.beta), computed(groups.gamma)), spec, {NumberType::float64, 17});
+    EXPECT_TRUE(close(out.at("transverse"), a_t, 15)) << out.at("transverse").text();
+    const mpfr F_N = out.at("F_N_mean_N").number.value;
+    ASSERT_GT(abs(want.mean_lateral.value), mpfr("0.1"));
+    EXPECT_TRUE(close(out.at("F_y_mean_N"), mpfr(want.mean_lateral.value * in.mu0 * F_N), want.mean_lateral.digits - 1))
+        << out.at("F_y_mean_N").text() << " against " << want.mean_lateral.text();
+    EXPECT_TRUE(close(out.at("F_x_mean_N"), mpfr(mpfr(want.mu) * in.mu0 * F_N), 14)) << out.at("F_x_mean_N").text();
+  }
   {  // a constant normal load with both in-plane drives
     PhysicalRequest r;
     auto values = solids;
