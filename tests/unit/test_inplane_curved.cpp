@@ -111,6 +111,29 @@ TEST(InPlaneCurved, ZeroAmplitudeIsThePapersCurvedModel) {
   }
 }
 
+// A drive whose springs change their event structure where an event crosses a segment's end (the
+// triangle's kinks, the square in-plane wave's jumps at P = 0.3) without changing their sequence of
+// modes: each such change a breakpoint of the row integral, found by the structure search from the
+// spans' modes and segments. At 30 digits (1e-27) against the same row at 40 (1e-37); without
+// those breakpoints the quadrature cannot converge over the kinks.
+TEST(InPlaneCurved, EventsCrossingSegmentEndsAreBreakpoints) {
+  const auto integrate = [](unsigned digits, const char* tol) {
+    PrecisionScope scope(digits);
+    const auto w = wave_named("triangle");
+    const auto p = wave_named("square");
+    const PowerProfile<mpfr> sphere{mpfr(2), "power:2"};
+    const mpfr beta("0.4"), gamma("0.2");
+    const PlanarDrive<mpfr> drive{mpfr("0.7"), mpfr(0), mpfr("0.3")};
+    return solve_inplane_curved<mpfr>(
+        *w, sphere, gamma, [&](const mpfr& g) { return inplane_spring<mpfr>(*w, g, *p, beta, drive); }, mpfr(tol));
+  };
+  const auto coarse = integrate(30, "1e-27");
+  const auto fine = integrate(40, "1e-37");
+  PrecisionScope scope(40);
+  EXPECT_LE(abs(mpfr(coarse.mu - fine.mu)), mpfr("1e-25")) << coarse.mu << " against " << fine.mu;
+  EXPECT_LE(abs(mpfr(coarse.normal_integral - fine.normal_integral)), mpfr("1e-25"));
+}
+
 // A transverse drive on the sphere against the row of catching-up springs (reference/row_catchup.py,
 // written from model.md alone: 512 springs, Richardson in the phase step; mu 0.17947517378 and
 // mean_lateral 0.96655729112, each within 6e-11). Double: the planar springs to ~1e-12, the row to 1e-10.
