@@ -68,11 +68,11 @@ def read_index():
         if line.startswith("#"):
             section = line.strip("# \n").lower()
             continue
-        m = re.match(r"\|\s*(m\d\d-[a-z0-9-]+)\s*\|\s*([a-z-]+)\s*\|(.*)\|(.*)\|\s*$", line)
+        m = re.match(r"\|\s*(m\d{2,3}-[a-z0-9-]+)\s*\|\s*([a-z-]+)\s*\|(.*)\|(.*)\|\s*$", line)
         if m and section.startswith("mutants"):
             rows.append({"id": m.group(1), "area": m.group(2), "breaks": m.group(3).strip(),
                          "regime": m.group(4).strip()})
-        m = re.match(r"-\s*`?(m\d\d-[a-z0-9-]+)`?:\s*(.*)", line)
+        m = re.match(r"-\s*`?(m\d{2,3}-[a-z0-9-]+)`?:\s*(.*)", line)
         if m and section.startswith("equivalent"):
             equivalent[m.group(1)] = m.group(2).strip()
     ids = [r["id"] for r in rows]
