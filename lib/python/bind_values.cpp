@@ -72,7 +72,8 @@ returns (lo, hi) as fractions.Fraction (arrays of them for array arguments), an 
 exact value narrowed until it proves that the value computed at type/digits is its correct
 rounding (a value that is not raises vibrofric.SolverError). For the piecewise-linear waves
 lo == hi, the exact rational, and float(lo) is the correctly rounded double; for the others
-lo < hi are the ends of an interval computation. Curved profiles raise ValueError.
+lo < hi are the ends of an interval computation. Curved profiles raise ValueError. With
+longitudinal= (piecewise-linear waves, or wave='constant'), the in-plane drive's exact value.
 )doc";
 
 }  // namespace
@@ -103,7 +104,6 @@ Flat punch only (Psi does not exist for curved profiles).
                              " without longitudinal or transverse: give the in-plane amplitude");
           if (!kappa.is_none() || !omega.is_none())
             throw InputError("kappa/omega with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
-          if (certify) throw InputError("certify: certified values exist for the normal oscillation only, not with an in-plane drive");
           if (!escalate) throw InputError("escalate=False: in-plane oscillation is always computed in mpfr at two precisions");
           e.inplane = inplane_spec(constant, longitudinal, transverse, phase, in_plane_wave);
         }

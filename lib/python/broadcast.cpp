@@ -222,12 +222,14 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
     throw InputError("certify=True gives exact values or raises, nan_on_error=True gives NaN for a failure: give one of them");
   if (!options.escalate)
     throw InputError("certify=True proves the guaranteed value, escalate=False gives one that is not guaranteed: give one of them");
+  // An in-plane drive: the longitudinal drive's exact values (certify_inplane), point by point.
+  const std::optional<InPlaneSpec>& inplane = options.inplane;
   try {
-    certifier.emplace(wave, options.profile);
+    if (!inplane) certifier.emplace(wave, options.profile);
   } catch (const InputError& err) {
     throw InputError(std::string("certify=True: ") + err.what());
   }
-  const bool with_gamma = e.quantity == Quantity::mu;
+  const bool with_gamma = e.quantity == Quantity::mu && !(inplane && inplane->constant_normal);
   auto point = [&](std::size_t i) {
     const auto at = index(i);
     return Point{InputValue::read(betas.text(at[0]), "beta"),
@@ -238,7 +240,13 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
     py::gil_scoped_release release;
     evaluate_stream(wave, e.quantity, n, point, precision, options, [&](std::size_t i, const StreamValue& value) {
       if (value.error) rethrow_at_index(dims, i, value.error);
-      const Certificate c = (*certifier)(e.quantity, point(i), precision, value.text);
+      Certificate c;
+      try {
+        c = inplane ? certify_inplane(wave, point(i), *inplane, precision, value.text).mu
+                    : (*certifier)(e.quantity, point(i), precision, value.text);
+      } catch (const InputError& err) {
+        rethrow_at_index(dims, i, std::make_exception_ptr(InputError(std::string("certify=True: ") + err.what())));
+      }
       if (!c.correctly_rounded)
         rethrow_at_index(dims, i, std::make_exception_ptr(SolverError(
             "certify=True: the value " + value.text + " is not the correct rounding of the exact value " + c.exact +

@@ -80,11 +80,30 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
   if (r.curved) fields.erase(fields.begin() + 1, fields.end() - 1);
   // Combined normal and longitudinal oscillation: the ratchet's free velocity, or none.
   if (r.free_velocity_searched) fields.emplace_back("free_velocity", r.free_velocity ? r.free_velocity->text() : "none");
+  // --certify: the exact rationals of the longitudinal drive, and the proof of the printed value.
+  std::optional<InPlaneCertificate> cert;
+  if (f.certify) {
+    try {
+      cert = certify_inplane(wave, p, spec, precision, r.mu);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--certify: ") + e.what());
+    }
+    if (!cert->mu.correctly_rounded)
+      throw SolverError("--certify: the printed " + r.mu + " is not the correct rounding of the exact value " + cert->mu.exact +
+                        " (that is " + cert->mu.nearest.front() + "): a solver bug, please report it");
+    fields.insert(fields.end(), {{"exact", cert->mu.exact},
+                                 {"exact_stick_fraction", cert->stick_fraction},
+                                 {"exact_slip_fraction", cert->slip_fraction},
+                                 {"exact_backward_slip_fraction", cert->backward_fraction},
+                                 {"exact_flight_fraction", cert->flight_fraction}});
+  }
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
+    if (cert) std::cout << "proven: " << r.mu << " is the exact value rounded " << rounding_name(precision) << '\n';
     return 0;
   }
+  if (cert) fields.emplace_back("correctly_rounded", "proven");
   std::vector<std::string> names{"wave",  "beta",          "gamma", "longitudinal", "transverse",
                                  "phase", "in_plane_wave", "mu_over_mu0"};
   std::vector<std::string> values{wave.name,

@@ -72,8 +72,11 @@ std::optional<InPlaneSpec> inplane_options(const Flags& f) {
                      " without --longitudinal or --transverse: give the in-plane amplitude");
   if (f.kappa.given() || f.omega.given() || f.zeta.given())
     throw InputError("--kappa/--omega with an in-plane oscillation: rig dynamics with an in-plane drive is not modelled");
-  if (f.certify)
-    throw InputError("--certify: certified values exist for the normal oscillation only, not with an in-plane drive");
+  if (f.certify && f.command != "mu")
+    throw InputError("--certify with an in-plane drive: certified values are given point by point, by mu");
+  if (f.certify && f.profile.kind != ProfileKind::flat)
+    throw InputError("--certify --profile " + detail::visible(f.profile_text.value_or("")) +
+                     ": certified values exist for the flat punch only (a curved contact integrates over springs)");
   if (f.no_escalate) throw InputError("--no-escalate: in-plane oscillation is always computed in mpfr at two precisions");
   if (f.profile.kind != ProfileKind::flat && constant)
     throw InputError("--wave constant with --profile " + detail::visible(f.profile_text.value_or("")) +

@@ -64,6 +64,30 @@ def test_refusals(args, kw, words):
         assert w in str(e.value)
 
 
+def test_certify_gives_the_exact_values_worked_out_by_hand():
+    # tests/unit/test_inplane_exact.cpp has the working: the ratchet on triangles -1/3; n = 1 with
+    # a triangle drive, 5/6 at a_l = 1/2 and always slipping (1) at beta = 4 a_l = 2.
+    from fractions import Fraction
+    assert vibrofric.mu("triangle", 0, 0.5, longitudinal=1, phase=0.25, in_plane_wave="triangle",
+                        certify=True) == (Fraction(-1, 3), Fraction(-1, 3))
+    lo, hi = vibrofric.mu("constant", np.array([1, 2]), None, longitudinal=0.5, in_plane_wave="triangle",
+                          certify=True, type="double")
+    assert list(lo) == [Fraction(5, 6), Fraction(1)] and list(hi) == list(lo)
+
+
+@pytest.mark.parametrize("args, kw, words", [
+    (("sine", 1, 0.5), dict(longitudinal=1), ["certify=True", "normal wave 'sine'", "piecewise-linear"]),
+    (("triangle", 1, 0.5), dict(longitudinal=1), ["certify=True", "in-plane wave 'sine'"]),
+    (("triangle", 1, 0.5), dict(transverse=1, in_plane_wave="triangle"), ["certify=True", "transverse"]),
+    (("triangle", 1, 0.5), dict(longitudinal=1, in_plane_wave="triangle", profile="sphere"), ["flat punch"]),
+])
+def test_certify_refusals(args, kw, words):
+    with pytest.raises(ValueError) as e:
+        vibrofric.mu(*args, certify=True, **kw)
+    for w in words:
+        assert w in str(e.value)
+
+
 def test_sticking_through_the_period_is_a_solver_error():
     with pytest.raises(vibrofric.SolverError, match="no unique periodic state"):
         vibrofric.mu("constant", 0, None, longitudinal=0.5)

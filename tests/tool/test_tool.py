@@ -19,6 +19,7 @@ import math
 import os
 import shutil
 import json
+import random
 import re
 import subprocess
 import tempfile
@@ -2122,6 +2123,20 @@ def nearest_double_text(x):
     return "%.16e" % float(x)
 
 
+def nearest_binary(x, mantissa):
+    """The binary number of `mantissa` bits nearest the Fraction x (ties to even)."""
+    if x == 0:
+        return Fraction(0)
+    a = abs(x)
+    e = a.numerator.bit_length() - a.denominator.bit_length()
+    while Fraction(2) ** e > a:
+        e -= 1
+    while Fraction(2) ** (e + 1) <= a:
+        e += 1
+    ulp = Fraction(2) ** (e - mantissa + 1)
+    return (1 if x > 0 else -1) * round(a / ulp) * ulp
+
+
 def certify_tests():
     points = [("triangle", "0.5", "0.2"), ("sawtooth-right", "1.25", "-0.75"), ("sawtooth-left", "0.7", "3"),
               ("square", "0.3", "0.2"), ("square", "2.9", "0.1"), ("power:1", "3", "0.9"), ("triangle", "1e-9", "1.5")]
@@ -2604,7 +2619,78 @@ def inplane_tests():
         ["mu", "--wave", "constant", "--beta", "1", "--gamma", "0.5", "--longitudinal", "1"], ["0.5"], ["gamma", "constant"])
     bad("in-plane: negative beta", sine[:4] + ["-1", "--gamma", "0.5", "--longitudinal", "1"], ["-1"], ["beta", ">= 0"])
     bad("in-plane: with --kappa", sine + ["--longitudinal", "1", "--kappa", "1", "--omega", "2"], [], ["--kappa", "in-plane"])
-    bad("in-plane: with --certify", sine + ["--longitudinal", "1", "--certify"], [], ["--certify"])
+    bad("in-plane: --certify with a sine", sine + ["--longitudinal", "1", "--certify"], ["sine"],
+        ["--certify", "piecewise-linear"])
+    bad("in-plane: --certify with a sine in-plane wave",
+        ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0.5", "--longitudinal", "1", "--certify"], ["sine"],
+        ["--certify", "in-plane wave", "piecewise-linear"])
+    bad("in-plane: --certify on a sweep", ["sweep", "--wave", "tri", "--beta", "1:2:2", "--gamma", "0.5",
+                                           "--longitudinal", "1", "--in-plane-wave", "tri", "--certify"], [],
+        ["--certify", "mu"])
+    bad("in-plane: --certify on a curved profile", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0.5",
+                                                    "--longitudinal", "1", "--in-plane-wave", "tri", "--profile",
+                                                    "sphere", "--certify"], ["sphere"], ["--certify", "flat punch"])
+
+    def certify_exact():
+        # The longitudinal drive's exact rationals (core/inplane/inplane_exact.hpp) against periodic
+        # states worked out by hand (tests/unit/test_inplane_exact.cpp has the working): n = 1 with a
+        # triangle drive, 5/6 (a_l = 1/2) and 4/63 (a_l = 2, a backward slip); the ratchet on triangles,
+        # -1/3. Each printed value is its exact value correctly rounded in every number type.
+        cases = (
+            (["--wave", "constant", "--beta", "1", "--longitudinal", "0.5", "--phase", "0.3"],
+             Fraction(5, 6), (Fraction(2, 3), Fraction(1, 3), 0, 0)),
+            (["--wave", "constant", "--beta", "1", "--longitudinal", "2"], Fraction(4, 63), (Fraction(32, 63), Fraction(31, 63), Fraction(3, 14), 0)),
+            (["--wave", "triangle", "--gamma", "0.5", "--beta", "0", "--longitudinal", "1", "--phase", "0.25"],
+             Fraction(-1, 3), (Fraction(3, 8), Fraction(3, 8), Fraction(1, 4), Fraction(1, 4))))
+        for args, mu, (stick, slip, backward, flight) in cases:
+            args = ["mu"] + args + ["--in-plane-wave", "triangle", "--certify"]
+            for prec, digits in ((["--type", "double"], 17), (["--type", "long-double"], 21),
+                                 (["--type", "cpp_bin_float_50"], None), ([], 50), (["--digits", "30"], 30)):
+                out = json.loads(ok_run(args + prec + ["--format", "json"]))
+                want = {"exact": mu, "exact_stick_fraction": stick, "exact_slip_fraction": slip,
+                        "exact_backward_slip_fraction": backward, "exact_flight_fraction": flight}
+                if any(Fraction(out[k]) != v for k, v in want.items()) or out["correctly_rounded"] != "proven":
+                    raise Fail("%s: %r, expected %r" % (cmd(args + prec), out, want))
+                if prec[:1] == ["--type"] and prec[1] in ("double", "long-double"):
+                    want_binary = nearest_binary(mu, {"double": 53, "long-double": 64}[prec[1]])
+                    if abs(F(out["mu_over_mu0"]) - want_binary) > half_ulp(out["mu_over_mu0"]):
+                        raise Fail("%s: %s is not the %s nearest %s" % (cmd(args + prec), out["mu_over_mu0"], prec[1], mu))
+                elif digits is None:  # binary: its nearest value printed to 50 digits
+                    if abs(F(out["mu_over_mu0"]) - mu) > abs(mu) * Fraction(1, 10 ** 49):
+                        raise Fail("%s: %s, exact %s" % (cmd(args + prec), out["mu_over_mu0"], mu))
+                else:
+                    expect_digits(out["mu_over_mu0"], mu, digits, cmd(args + prec))
+        text = ok_run(["mu", "--wave", "triangle", "--gamma", "0.5", "--beta", "1.5", "--longitudinal", "1",
+                       "--in-plane-wave", "triangle", "--phase", "0.25", "--certify"]).splitlines()
+        if text[-1] != "proven: %s is the exact value rounded to 50 significant digits" % text[0] or \
+                "exact: -21/247" not in text:
+            raise Fail("mu --certify with a longitudinal drive, text: %r" % text)
+    case("in-plane: --certify gives the exact rationals worked out by hand, in every number type", certify_exact)
+
+    def certify_random():
+        # Random piecewise-linear drives: the in-plane value printed in double, long double and at
+        # 30 digits is proven the exact rational's correct rounding (exit 1 where it is not), or
+        # both solvers find no unique state (beta = 0 on a closed contact: exit 1, said so).
+        rng = random.Random(61)
+        waves = ["triangle", "square", "sawtooth-right", "sawtooth-left", "power:1"]
+        proven = 0
+        for _ in range(40):
+            w = rng.choice(waves + ["constant"])
+            args = ["mu", "--wave", w, "--beta", rng.choice(["0", "%.3f" % rng.uniform(0, 5)]),
+                    "--longitudinal", "%.2f" % rng.uniform(0, 3), "--phase", "%.3f" % rng.uniform(-1, 2),
+                    "--in-plane-wave", rng.choice(waves), "--certify"]
+            if w != "constant":
+                args += ["--gamma", "%.2f" % rng.uniform(-0.95, 3)]
+            for prec in (["--type", "double"], ["--type", "long-double"], ["--digits", "30"]):
+                rc, out, err = run(args + prec)
+                if rc == 1 and "no unique periodic state" in err:
+                    continue
+                if rc != 0 or not out.splitlines()[-1].startswith("proven: "):
+                    raise Fail("%s: exit %d, %r %r" % (cmd(args + prec), rc, out, err))
+                proven += 1
+        if proven < 90:
+            raise Fail("only %d of 120 random drives proven" % proven)
+    case("in-plane: --certify proves random piecewise-linear drives in three precisions", certify_random)
     bad("in-plane: a constant normal force on a curved profile",
         ["mu", "--wave", "constant", "--beta", "1", "--longitudinal", "1", "--profile", "sphere"], ["sphere"],
         ["constant", "normal oscillation"])

@@ -9,6 +9,7 @@
 
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
+#include "vibrofric/core/inplane/inplane_exact.hpp"
 
 namespace vibrofric {
 
@@ -121,6 +122,12 @@ namespace {
 
 // The texts of the correctly rounded value(s) of x at the precision.
 std::vector<std::string> rounded_texts(const Rational& x, const Precision& precision) {
+  // Rounding to nearest is symmetric: a negative value (an in-plane drive's) is its magnitude's, negated.
+  if (x < 0) {
+    std::vector<std::string> out = rounded_texts(Rational(-x), precision);
+    for (std::string& t : out) t.insert(0, "-");
+    return out;
+  }
   const int digits = output_digits(precision);
   return visit_number_type(precision.type, [&](auto tag) {
     using Real = typename decltype(tag)::type;
@@ -259,6 +266,46 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
       }
   }
   for (const std::string& t : c.nearest) c.correctly_rounded = c.correctly_rounded || t == printed;
+  return c;
+}
+
+InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
+                                   const Precision& precision, const std::string& printed) {
+  if (!spec.transverse.decimal() || rational(*spec.transverse.decimal(), "transverse amplitude") != 0)
+    throw InputError("transverse amplitude " + spec.transverse.text() +
+                     ": certified in-plane values exist for the longitudinal drive only (a transverse drive slips on a "
+                     "circle: its events are not roots of linear functions)");
+  const auto exact_input = [](const InputValue& in, const char* name) {
+    if (!in.decimal()) throw InputError(std::string(name) + " " + in.text() + " is computed: it has no exact value to certify");
+    return rational(*in.decimal(), name);
+  };
+  const auto piecewise_linear = [](const WaveSpec& w, const char* role, const char* waves) {
+    try {
+      return exact_wave(w);
+    } catch (const InputError&) {
+      throw InputError(std::string(role) + " '" + detail::visible(w.name) +
+                       "' has no certified in-plane values: they exist for the piecewise-linear waves (" + waves + ")");
+    }
+  };
+  const char* const catalogue = "triangle, sawtooth-right, sawtooth-left, square, power:1";
+  const std::optional<exact::Wave> w =
+      spec.constant_normal ? std::nullopt
+                           : std::optional<exact::Wave>(piecewise_linear(
+                                 normal, "normal wave", "triangle, sawtooth-right, sawtooth-left, square, power:1, samples:FILE"));
+  const exact::Wave p = piecewise_linear(spec.wave, "in-plane wave", catalogue);
+  const Rational gamma = spec.constant_normal ? Rational(0) : exact_input(point.gamma, "gamma");
+  const exact::InPlaneResult r =
+      exact::solve_inplane(w ? &*w : nullptr, gamma, p, exact_input(point.beta, "beta"),
+                           exact_input(spec.longitudinal, "longitudinal amplitude"), exact_input(spec.phase, "phase"));
+  InPlaneCertificate c;
+  c.mu.lower = c.mu.upper = r.mu;
+  c.mu.exact = text_of(r.mu);
+  c.mu.nearest = rounded_texts(r.mu, precision);
+  for (const std::string& t : c.mu.nearest) c.mu.correctly_rounded = c.mu.correctly_rounded || t == printed;
+  c.stick_fraction = text_of(r.stick_fraction);
+  c.slip_fraction = text_of(r.slip_fraction);
+  c.backward_fraction = text_of(r.backward_fraction);
+  c.flight_fraction = text_of(r.flight_fraction);
   return c;
 }
 

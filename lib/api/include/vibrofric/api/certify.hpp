@@ -13,6 +13,7 @@
 
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/api/evaluate.hpp"
+#include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
@@ -66,6 +67,18 @@ class Certifier {
   std::shared_ptr<Shapes> shapes_ = std::make_shared<Shapes>();
   std::shared_ptr<const certified::FourierShape> shape(mpfr_prec_t bits) const;
 };
+
+// The longitudinal drive's certificate (core/inplane/inplane_exact.hpp): a piecewise-linear normal
+// wave (or a constant normal force) and in-plane wave at decimal β, γ, a_l and P give μ̄/μ0 and the
+// mode fractions as exact rationals ("p/q"); `mu` proves `printed`, the text evaluate_inplane gave
+// at `precision`, as for Certifier. InputError for a transverse drive, a wave that is not piecewise
+// linear, or a computed input; SolverError where no unique periodic state exists.
+struct InPlaneCertificate {
+  Certificate mu;
+  std::string stick_fraction, slip_fraction, backward_fraction, flight_fraction;
+};
+InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
+                                   const Precision& precision, const std::string& printed);
 
 inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;
 
