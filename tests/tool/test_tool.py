@@ -2875,6 +2875,18 @@ def inplane_tests():
             raise Fail("mu --wave constant --beta 1 --transverse 1: %r" % out)
     case("in-plane: a transverse drive's value, no lateral mean, no backward slip", transverse_value)
 
+    def transverse_small():
+        # A small transverse drive slips at a small angle: mu = 1 - pi^2 a^2/(beta^2 + 4 pi^2) + O(a^4)
+        # (tests/unit/test_planar.cpp); at beta = pi a the one-period map contracts by only 1 - beta.
+        for a in ("1e-3", "1e-5"):
+            beta = repr(math.pi * float(a))
+            args = ["mu", "--wave", "constant", "--beta", beta, "--transverse", a, "--type", "double"]
+            got = float(ok_run(args).splitlines()[0])
+            want = 1 - math.pi ** 2 * float(a) ** 2 / (float(beta) ** 2 + 4 * math.pi ** 2)
+            if abs(got - want) > float(a) ** 4 + 2e-16:
+                raise Fail("%s: %r, the linearised angle gives %r" % (cmd(args), got, want))
+    case("in-plane: a small transverse drive in double, the map contracting weakly", transverse_small)
+
     def transverse_mirror():
         # p(phi + 1/2) = -p(phi): half a period later the transverse drive is its mirror image
         args = ["mu", "--wave", "sine", "--gamma", "1.2", "--beta", "0.7", "--transverse", "0.8", "--digits", "12"]

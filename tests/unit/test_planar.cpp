@@ -226,6 +226,44 @@ TEST(Planar, NumberTypesAgree) {
   }
 }
 
+// A small transverse drive (n ≡ 1, sine) slips throughout with a small angle: linearised,
+// θ' = −βθ + 2πa cos 2πφ, so θ = Re C e^{2πiφ} with |C| = 2πa/√(β² + 4π²), and μ̄ = ⟨cos θ⟩ =
+// 1 − π²a²/(β² + 4π²) + O(a⁴) (the O(a³) part of θ has no mean forcing: its coefficient is below 1,
+// 0.08 measured at a = 1e-3). At β = πa the angle relaxes by only βφ a period: the one-period map
+// contracts by 1 − β, and from the opposite start the state is first reached across the disc.
+TEST(Planar, SmallAmplitudeSlipsAtTheLinearisedAngle) {
+  const auto p = std::make_unique<Sine<mpfr>>();
+  struct Point {
+    int digits;  // 27 and 39: the API's two precisions for a double
+    const char* a;
+    bool slow;
+  };
+  for (const Point& c : {Point{27, "1e-3", true}, Point{27, "1e-5", true}, Point{39, "1e-4", true}, Point{27, "1e-3", false}}) {
+    PrecisionScope scope(c.digits);
+    const mpfr a(c.a), pi = boost::math::constants::pi<mpfr>();
+    const mpfr beta = c.slow ? mpfr(pi * a) : mpfr(1);
+    const auto r = solve_planar<mpfr>(nullptr, mpfr(0), *p, beta, PlanarDrive<mpfr>{mpfr(0), a, mpfr(0)});
+    const mpfr linear = 1 - pi * pi * a * a / (beta * beta + 4 * pi * pi);
+    EXPECT_LE(mpfr(abs(mpfr(r.mu - linear))), mpfr(a * a * a * a)) << c.digits << " digits, a " << c.a << ", beta " << beta;
+    EXPECT_EQ(r.stick_fraction, 0) << c.digits << " digits, a " << c.a;
+    // 0 by the drive's symmetry, to the state's accuracy: the solver's noise 2^(24 − bits) over the
+    // map's contraction 1 − e^−β ≈ β.
+    const mpfr noise = ldexp(mpfr(1), 24 - static_cast<int>(mpfr_get_default_prec()));
+    EXPECT_LE(mpfr(abs(r.mean_lateral)), mpfr(64 * noise / beta)) << c.digits << " digits, a " << c.a;
+  }
+}
+
+// β = 0 with a drive too small to slip: every state of a band is periodic, and the two starts say so.
+TEST(Planar, StickingThroughThePeriodHasNoUniqueState) {
+  PrecisionScope scope(30);
+  const auto p = std::make_unique<Sine<mpfr>>();
+  EXPECT_THROW(solve_planar<mpfr>(nullptr, mpfr(0), *p, mpfr(0), PlanarDrive<mpfr>{mpfr("0.05"), mpfr("0.05"), mpfr(0)}),
+               SolverError);
+  const auto w = std::make_unique<Sine<mpfr>>();
+  EXPECT_THROW(solve_planar<mpfr>(w.get(), mpfr(3), *p, mpfr(0), PlanarDrive<mpfr>{mpfr(0), mpfr("0.1"), mpfr("0.3")}),
+               SolverError);
+}
+
 TEST(Planar, BadInputIsRefused) {
   const auto p = std::make_unique<Sine<double>>();
   const auto w = std::make_unique<Sine<double>>();
