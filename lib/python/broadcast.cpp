@@ -225,7 +225,8 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
   // An in-plane drive: the longitudinal drive's exact values (certify_inplane), point by point.
   const std::optional<InPlaneSpec>& inplane = options.inplane;
   try {
-    if (!inplane) certifier.emplace(wave, options.profile);
+    if (inplane) check_certifiable(wave, *inplane);
+    else certifier.emplace(wave, options.profile);
   } catch (const InputError& err) {
     throw InputError(std::string("certify=True: ") + err.what());
   }

@@ -69,6 +69,15 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
   if (spec.constant_normal && f.gamma.given())
     throw InputError("--gamma " + detail::visible(f.gamma.text()) + " with --wave constant: the normal force is constant (give no --gamma)");
   const Point p{need(f, f.beta, "beta"), spec.constant_normal ? InputValue() : need(f, f.gamma, "gamma")};
+  // --certify's refusals before the value is computed (a transverse value costs seconds).
+  const auto certify_error = [](const InputError& e) { return InputError(std::string("--certify: ") + e.what()); };
+  if (f.certify) {
+    try {
+      check_certifiable(wave, spec);
+    } catch (const InputError& e) {
+      throw certify_error(e);
+    }
+  }
   const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver, f.profile);
   // A transverse drive slips in every direction: backward slip is the longitudinal drive's alone.
   std::vector<std::pair<std::string, std::string>> fields{
@@ -86,7 +95,7 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
     try {
       cert = certify_inplane(wave, p, spec, precision, r.mu);
     } catch (const InputError& e) {
-      throw InputError(std::string("--certify: ") + e.what());
+      throw certify_error(e);
     }
     if (!cert->mu.correctly_rounded)
       throw SolverError("--certify: the printed " + r.mu + " is not the correct rounding of the exact value " + cert->mu.exact +

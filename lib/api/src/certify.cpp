@@ -269,16 +269,14 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
   return c;
 }
 
-InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
-                                   const Precision& precision, const std::string& printed) {
+namespace {
+
+// The drive's waves as exact piecewise-linear waves; InputError for a transverse drive or another wave.
+std::pair<std::optional<exact::Wave>, exact::Wave> inplane_waves(const WaveSpec& normal, const InPlaneSpec& spec) {
   if (!spec.transverse.decimal() || rational(*spec.transverse.decimal(), "transverse amplitude") != 0)
     throw InputError("transverse amplitude " + spec.transverse.text() +
                      ": certified in-plane values exist for the longitudinal drive only (a transverse drive slips on a "
                      "circle: its events are not roots of linear functions)");
-  const auto exact_input = [](const InputValue& in, const char* name) {
-    if (!in.decimal()) throw InputError(std::string(name) + " " + in.text() + " is computed: it has no exact value to certify");
-    return rational(*in.decimal(), name);
-  };
   const auto piecewise_linear = [](const WaveSpec& w, const char* role, const char* waves) {
     try {
       return exact_wave(w);
@@ -287,12 +285,23 @@ InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, c
                        "' has no certified in-plane values: they exist for the piecewise-linear waves (" + waves + ")");
     }
   };
-  const char* const catalogue = "triangle, sawtooth-right, sawtooth-left, square, power:1";
-  const std::optional<exact::Wave> w =
-      spec.constant_normal ? std::nullopt
-                           : std::optional<exact::Wave>(piecewise_linear(
-                                 normal, "normal wave", "triangle, sawtooth-right, sawtooth-left, square, power:1, samples:FILE"));
-  const exact::Wave p = piecewise_linear(spec.wave, "in-plane wave", catalogue);
+  std::optional<exact::Wave> w;
+  if (!spec.constant_normal)
+    w = piecewise_linear(normal, "normal wave", "triangle, sawtooth-right, sawtooth-left, square, power:1, samples:FILE");
+  return {std::move(w), piecewise_linear(spec.wave, "in-plane wave", "triangle, sawtooth-right, sawtooth-left, square, power:1")};
+}
+
+}  // namespace
+
+void check_certifiable(const WaveSpec& normal, const InPlaneSpec& spec) { inplane_waves(normal, spec); }
+
+InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
+                                   const Precision& precision, const std::string& printed) {
+  const auto [w, p] = inplane_waves(normal, spec);
+  const auto exact_input = [](const InputValue& in, const char* name) {
+    if (!in.decimal()) throw InputError(std::string(name) + " " + in.text() + " is computed: it has no exact value to certify");
+    return rational(*in.decimal(), name);
+  };
   const Rational gamma = spec.constant_normal ? Rational(0) : exact_input(point.gamma, "gamma");
   const exact::InPlaneResult r =
       exact::solve_inplane(w ? &*w : nullptr, gamma, p, exact_input(point.beta, "beta"),

@@ -79,6 +79,9 @@ struct InPlaneCertificate {
 };
 InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
                                    const Precision& precision, const std::string& printed);
+// certify_inplane's refusals that need no solve (a transverse drive, a wave that is not piecewise
+// linear), for a caller to give before it computes the value.
+void check_certifiable(const WaveSpec& normal, const InPlaneSpec& spec);
 
 inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;
 
