@@ -9,15 +9,6 @@ namespace {
 Rational lower(const Vertex& v) { return v.left < v.right ? v.left : v.right; }
 Rational upper(const Vertex& v) { return v.left < v.right ? v.right : v.left; }
 
-// Vertices sorted, x ∈ [0, 1), the first at 0: a malformed list is a bug of the caller.
-void check(const Wave& w) {
-  const auto& v = w.vertices;
-  if (v.empty() || v.front().x != 0) throw SolverError("exact wave " + w.name + ": no vertex at phase 0");
-  for (std::size_t k = 1; k < v.size(); ++k)
-    if (!(v[k - 1].x < v[k].x) || !(v[k].x < 1))
-      throw SolverError("exact wave " + w.name + ": vertex phases not increasing in [0, 1)");
-}
-
 // The clipped n = max(γ + w, 0), with a vertex (value 0) where γ + w changes sign inside a piece.
 std::vector<Vertex> clipped(const Wave& w, const Rational& gamma, Result& r) {
   const auto& v = w.vertices;
@@ -42,6 +33,14 @@ std::vector<Vertex> clipped(const Wave& w, const Rational& gamma, Result& r) {
 }
 
 }  // namespace
+
+void check(const Wave& w) {
+  const auto& v = w.vertices;
+  if (v.empty() || v.front().x != 0) throw SolverError("exact wave " + w.name + ": no vertex at phase 0");
+  for (std::size_t k = 1; k < v.size(); ++k)
+    if (!(v[k - 1].x < v[k].x) || !(v[k].x < 1))
+      throw SolverError("exact wave " + w.name + ": vertex phases not increasing in [0, 1)");
+}
 
 Rational Wave::minimum() const {
   Rational m = lower(vertices.at(0));

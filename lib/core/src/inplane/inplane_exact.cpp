@@ -41,14 +41,6 @@ Line line_of(const Wave& w, std::size_t k) {
   return {v[k].x, v[k].right, (y1 - v[k].right) / (x1 - v[k].x)};
 }
 
-void check_wave(const Wave& w) {
-  const auto& v = w.vertices;
-  if (v.empty() || v.front().x != 0) throw SolverError("exact wave " + w.name + ": no vertex at phase 0");
-  for (std::size_t k = 1; k < v.size(); ++k)
-    if (!(v[k - 1].x < v[k].x) || !(v[k].x < 1))
-      throw SolverError("exact wave " + w.name + ": vertex phases not increasing in [0, 1)");
-}
-
 // One segment [u, v]: n and D linear on it (n ≡ 0 in flight).
 struct Segment {
   Rational u, v;
@@ -178,8 +170,8 @@ std::string text(const Rational& x) { return x.str(); }
 
 InPlaneResult solve_inplane(const Wave* normal, const Rational& gamma, const Wave& in_plane, const Rational& beta,
                             const Rational& longitudinal, const Rational& phase) {
-  if (normal) check_wave(*normal);
-  check_wave(in_plane);
+  if (normal) check(*normal);
+  check(in_plane);
   if (beta < 0) throw InputError("exact in-plane solve: beta = " + text(beta) + ": expected a number >= 0");
   if (longitudinal < 0)
     throw InputError("exact in-plane solve: longitudinal amplitude = " + text(longitudinal) + ": expected a number >= 0");

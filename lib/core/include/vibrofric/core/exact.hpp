@@ -58,6 +58,10 @@ struct Result {
   std::size_t contact_boundaries = 0;  // phases where n leaves or re-enters 0 inside a piece
 };
 
+// Vertices sorted, x ∈ [0, 1), the first at 0: SolverError otherwise (a malformed list is a bug of
+// the caller).
+void check(const Wave& w);
+
 // The catalogue's piecewise-linear waves (model.md's table) and power:1 (the triangle shifted by
 // 1/4), exactly.
 Wave triangle();
