@@ -2691,6 +2691,27 @@ def inplane_tests():
         if proven < 90:
             raise Fail("only %d of 120 random drives proven" % proven)
     case("in-plane: --certify proves random piecewise-linear drives in three precisions", certify_random)
+
+    def free_velocity_exact():
+        # The printed free velocity against the exact longitudinal drive (another algorithm: the exact
+        # walk of core/inplane/inplane_exact.hpp, through --certify's exact field): mu < 0 at 40 betas
+        # from 0 up to it and at it (1 - 1e-12), mu > 0 just past it (1 + 1e-12).
+        def exact_mu(args, beta):
+            out = json.loads(ok_run(args + ["--beta", beta, "--certify", "--format", "json"]))
+            return Fraction(out["exact"])
+        for wave, gamma, p, a, phase in (("triangle", "0.5", "triangle", "1", "0.25"),
+                                         ("sawtooth-right", "0.3", "triangle", "1.5", "0.3")):
+            args = ["mu", "--wave", wave, "--gamma", gamma, "--in-plane-wave", p, "--longitudinal", a, "--phase", phase,
+                    "--type", "double"]
+            fields = dict(line.split(": ") for line in ok_run(args + ["--beta", "0"]).splitlines()[1:])
+            fv = F(fields["free_velocity"])
+            below = [fv * k / 40 for k in range(40)] + [fv * (1 - Fraction(1, 10 ** 12))]
+            for b in below:
+                if exact_mu(args, dec(b, 25)) >= 0:
+                    raise Fail("%s: exact mu >= 0 at beta %s, below the free velocity %s" % (cmd(args), dec(b, 25), fv))
+            if exact_mu(args, dec(fv * (1 + Fraction(1, 10 ** 12)), 25)) <= 0:
+                raise Fail("%s: exact mu <= 0 just past the free velocity %s" % (cmd(args), fv))
+    case("in-plane: the free velocity is where the exact mu first changes sign", free_velocity_exact)
     bad("in-plane: a constant normal force on a curved profile",
         ["mu", "--wave", "constant", "--beta", "1", "--longitudinal", "1", "--profile", "sphere"], ["sphere"],
         ["constant", "normal oscillation"])
