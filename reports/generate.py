@@ -422,8 +422,8 @@ def inplane_section(w, figs, claims_table, inplane, tool):
       "step bound, closed forms, symmetries, the paper's model at A = 0) and by an independent mpmath implementation "
       "(`tests/reference/inplane_mpmath.py`, 43 cases at 30 digits). `--transverse A` adds the drive across the "
       "sliding direction (`core/inplane/planar.hpp`): Moreau's sweeping process in the disc |s| ≤ n, slip's angle "
-      "equation made linear by tan(θ/2) and integrated by Gauss–Legendre collocation with step doubling, checked "
-      "against an independent catching-up reference (`tests/reference/planar_catchup.py`). `--profile P` takes "
+      "equation integrated by Radau IIA collocation (L-stable: the rigid limit is reached at a = 10^6) with step "
+      "doubling, checked against an independent catching-up reference (`tests/reference/planar_catchup.py`). `--profile P` takes "
       "either drive to a curved contact, the MDR row of in-plane springs (`core/inplane/inplane_curved.hpp`), "
       "checked against a direct simulation of the spring row (`tests/reference/row_catchup.py`, 1e-10).")
     w("")

@@ -157,6 +157,33 @@ TEST(Planar, RigidTransverseLimitWithItsOrder) {
   }
 }
 
+// The same limit from a = 10^4 to 10^6, where slip is stiff (|D'|/n ≈ 2πa√(ξ² + cos²)): the angle
+// relaxes onto D''s within 10^-7 of a period, and the distance still falls as 1/a² (a² D ≈ 0.766 at
+// ξ = 1/2, the catching-up reference's 0.764 at a = 100 being the same law), up to ξ = 4.
+TEST(Planar, RigidTransverseLimitAtLargeAmplitudes) {
+  PrecisionScope scope(25);
+  const mpfr pi = boost::math::constants::pi<mpfr>();
+  for (const char* xi_text : {"0.5", "4"}) {
+    const mpfr xi(xi_text);
+    const mpfr k = 1 / sqrt(1 + xi * xi);
+    const mpfr limit = 2 / pi * xi * k * boost::math::ellint_1(k);
+    std::vector<mpfr> d;
+    for (const char* a_text : {"1e4", "1e5", "1e6"}) {
+      const mpfr a(a_text);
+      const auto p = std::make_unique<Sine<mpfr>>();
+      const auto r = solve_planar<mpfr>(nullptr, mpfr(0), *p, 2 * pi * a * xi, PlanarDrive<mpfr>{mpfr(0), a, mpfr(0)});
+      EXPECT_GT(r.mu, limit) << "xi " << xi_text << ", a = " << a_text;
+      EXPECT_EQ(r.stick_fraction, 0) << "xi " << xi_text << ", a = " << a_text;
+      d.push_back(mpfr(r.mu - limit));
+    }
+    for (std::size_t i = 1; i < d.size(); ++i) {
+      const double order = static_cast<double>(log10(mpfr(d[i - 1] / d[i])));
+      EXPECT_NEAR(order, 2.0, 0.01) << "xi " << xi_text << ", decade " << i;
+    }
+    EXPECT_LT(d.back(), mpfr("1e-11")) << "xi " << xi_text << ": a = 1e6";
+  }
+}
+
 // n ≡ 1 and a wave with p(φ + 1/2) = −p(φ): the lateral force's mean vanishes; and with a_l = 0,
 // shifting the drive by half a period mirrors it across the sliding direction (s_y → −s_y).
 TEST(Planar, SymmetriesOfTheDrive) {
@@ -232,7 +259,6 @@ TEST(Planar, NumberTypesAgree) {
 // 0.08 measured at a = 1e-3). At β = πa the angle relaxes by only βφ a period: the one-period map
 // contracts by 1 − β, and from the opposite start the state is first reached across the disc.
 TEST(Planar, SmallAmplitudeSlipsAtTheLinearisedAngle) {
-  const auto p = std::make_unique<Sine<mpfr>>();
   struct Point {
     int digits;  // 27 and 39: the API's two precisions for a double
     const char* a;
@@ -240,6 +266,8 @@ TEST(Planar, SmallAmplitudeSlipsAtTheLinearisedAngle) {
   };
   for (const Point& c : {Point{27, "1e-3", true}, Point{27, "1e-5", true}, Point{39, "1e-4", true}, Point{27, "1e-3", false}}) {
     PrecisionScope scope(c.digits);
+    // The wave at the working precision, as the API makes it (its 2π at 20 digits rounds D' there).
+    const auto p = std::make_unique<Sine<mpfr>>();
     const mpfr a(c.a), pi = boost::math::constants::pi<mpfr>();
     const mpfr beta = c.slow ? mpfr(pi * a) : mpfr(1);
     const auto r = solve_planar<mpfr>(nullptr, mpfr(0), *p, beta, PlanarDrive<mpfr>{mpfr(0), a, mpfr(0)});

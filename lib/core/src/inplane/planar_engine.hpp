@@ -12,7 +12,7 @@
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
-#include "gauss_collocation.hpp"
+#include "radau_collocation.hpp"
 #include "inplane_engine.hpp"
 #include "vibrofric/core/inplane/planar.hpp"
 
@@ -48,8 +48,8 @@ class PlanarEngine {
     segs_ = inplane_segments(contact_ ? &*contact_ : nullptr, p_, phase_);
   }
 
-  // Order 2s with s = (decimal digits)/4 + 3: the step that reaches the working precision stays near 1/L.
-  static int stages_for(int bits) { return std::clamp(bits / 13 + 3, 4, 64); }
+  // Order 2s − 1 with s = (decimal digits)/4 + 4: the step that reaches the working precision stays near 1/L.
+  static int stages_for(int bits) { return std::clamp(bits / 13 + 4, 4, 64); }
 
   Vec period(const Vec& s_in, PlanarResult<Real>* record) const {
     Pass pass{*this, record};
@@ -306,6 +306,13 @@ class PlanarEngine {
     const Real half = atan2(sy, sx) / 2;
     return {sin(half), cos(half)};
   }
+  // An angle difference into (−π, π].
+  static Real wrap(Real d) {
+    const Real pi = boost::math::constants::pi<Real>();
+    while (d > pi) d -= 2 * pi;
+    while (d <= -pi) d += 2 * pi;
+    return d;
+  }
   static Real angle(const Uv& y) {
     using std::atan2;
     return 2 * atan2(y.u, y.v);
@@ -322,51 +329,71 @@ class PlanarEngine {
            (max(abs(dx.lo), abs(dx.hi)) + max(abs(dy.lo), abs(dy.hi)) + max(abs(dnr.lo), abs(dnr.hi)));
   }
 
-  // One Gauss–Legendre step of length h from (t, y); false where its linear system is singular.
-  bool gauss(const Seg& g, const Real& t, const Uv& y, const Real& h, Step& out) const {
-    const int s = tableau_.s, m = 2 * s;
-    std::vector<std::array<Real, 4>> M(static_cast<std::size_t>(s));
-    std::vector<Real> nn(static_cast<std::size_t>(s));
+  // One Radau IIA step of length h from (t, y) on the angle equation θ' = (D'·e⊥)/n = (|D'|/n) sin(ψ − θ)
+  // (ψ the angle of D'): the stage system by Newton's method from θ(t), each update at most π/4
+  // (the stages stay on the branch that θ follows); false where n vanishes at a stage, the Jacobian
+  // is singular or Newton does not converge. Where |D'|/n ≫ 1/h the angle relaxes onto ψ within the
+  // step, and the L-stable method follows that in steps as long as ψ's own variation allows.
+  bool radau(const Seg& g, const Real& t, const Uv& y, const Real& h, Step& out) const {
+    using std::abs;
+    using std::cos;
+    using std::ldexp;
+    using std::max;
+    using std::sin;
+    const int s = tableau_.s;
+    std::vector<Real> nn(static_cast<std::size_t>(s)), dx(static_cast<std::size_t>(s)), dy(static_cast<std::size_t>(s));
     for (int i = 0; i < s; ++i) {
       const Real ti = t + tableau_.c[static_cast<std::size_t>(i)] * h;
       const Real ni = n(g, ti);
       if (!(ni > 0)) return false;
       const Vec d = dD(g, ti);
-      const Real k = 1 / (2 * ni);
-      M[static_cast<std::size_t>(i)] = {-d[0] * k, d[1] * k, d[1] * k, d[0] * k};
       nn[static_cast<std::size_t>(i)] = ni;
+      dx[static_cast<std::size_t>(i)] = d[0] / ni;
+      dy[static_cast<std::size_t>(i)] = d[1] / ni;
     }
-    std::vector<Real> K(static_cast<std::size_t>(m * m), Real(0)), r(static_cast<std::size_t>(m));
-    for (int i = 0; i < s; ++i) {
-      r[static_cast<std::size_t>(2 * i)] = y.u;
-      r[static_cast<std::size_t>(2 * i + 1)] = y.v;
+    const Real theta0 = angle(y);
+    const Real pi = boost::math::constants::pi<Real>();
+    const Real tol = ldexp(Real(8), -bits_) * (1 + abs(theta0));
+    std::vector<Real> th(static_cast<std::size_t>(s), theta0), sn(static_cast<std::size_t>(s)), cs(static_cast<std::size_t>(s));
+    std::vector<Real> K(static_cast<std::size_t>(s * s)), r(static_cast<std::size_t>(s));
+    Real last = std::numeric_limits<Real>::infinity();
+    for (int iter = 0;; ++iter) {
+      if (iter == 60) return false;
+      std::vector<Real> f(static_cast<std::size_t>(s)), df(static_cast<std::size_t>(s));
       for (int j = 0; j < s; ++j) {
-        const Real ha = h * tableau_.A(i, j);
-        const auto& Mj = M[static_cast<std::size_t>(j)];
-        for (int p = 0; p < 2; ++p)
-          for (int q = 0; q < 2; ++q)
-            K[static_cast<std::size_t>((2 * i + p) * m + 2 * j + q)] =
-                (i == j && p == q ? Real(1) : Real(0)) - ha * Mj[static_cast<std::size_t>(2 * p + q)];
+        const std::size_t J = static_cast<std::size_t>(j);
+        sn[J] = sin(th[J]);
+        cs[J] = cos(th[J]);
+        f[J] = dy[J] * cs[J] - dx[J] * sn[J];
+        df[J] = -(dx[J] * cs[J] + dy[J] * sn[J]);
       }
+      for (int i = 0; i < s; ++i) {
+        Real sum = 0;
+        for (int j = 0; j < s; ++j) {
+          const Real ha = h * tableau_.A(i, j);
+          sum += ha * f[static_cast<std::size_t>(j)];
+          K[static_cast<std::size_t>(i * s + j)] = (i == j ? Real(1) : Real(0)) - ha * df[static_cast<std::size_t>(j)];
+        }
+        r[static_cast<std::size_t>(i)] = theta0 + sum - th[static_cast<std::size_t>(i)];
+      }
+      if (!solve_linear(K, r, s)) return false;
+      Real big = 0;
+      for (const Real& d : r) big = max(big, Real(abs(d)));
+      const Real scale = big > pi / 4 ? Real(pi / 4 / big) : Real(1);
+      for (int i = 0; i < s; ++i) th[static_cast<std::size_t>(i)] += scale * r[static_cast<std::size_t>(i)];
+      if (big <= tol) break;
+      // Past the quadratic phase the updates stall at the rounding of the stage sums.
+      if (big < ldexp(Real(1), -bits_ / 2) && !(big < last / 2)) break;
+      last = big;
     }
-    if (!solve_linear(K, r, m)) return false;
-    Real du = 0, dv = 0, ix = 0, iy = 0;
+    Real ix = 0, iy = 0;
     for (int i = 0; i < s; ++i) {
-      const auto& Mi = M[static_cast<std::size_t>(i)];
-      const Real& ui = r[static_cast<std::size_t>(2 * i)];
-      const Real& vi = r[static_cast<std::size_t>(2 * i + 1)];
-      const Real& bi = tableau_.b[static_cast<std::size_t>(i)];
-      du += bi * (Mi[0] * ui + Mi[1] * vi);
-      dv += bi * (Mi[2] * ui + Mi[3] * vi);
-      const Vec e = unit(Uv{ui, vi});
-      ix += bi * nn[static_cast<std::size_t>(i)] * e[0];
-      iy += bi * nn[static_cast<std::size_t>(i)] * e[1];
+      const std::size_t I = static_cast<std::size_t>(i);
+      ix += tableau_.b[I] * nn[I] * cos(th[I]);
+      iy += tableau_.b[I] * nn[I] * sin(th[I]);
     }
-    using std::hypot;
-    Real u1 = y.u + h * du, v1 = y.v + h * dv;
-    const Real norm = hypot(u1, v1);
-    if (!(norm > 0)) return false;
-    out.y = Uv{u1 / norm, v1 / norm};
+    const Real half = th.back() / 2;
+    out.y = Uv{sin(half), cos(half)};
     out.ix = h * ix;
     out.iy = h * iy;
     return true;
@@ -380,7 +407,7 @@ class PlanarEngine {
     using std::pow;
     Step full, a, b;
     const Real half = h / 2;
-    if (!gauss(g, t, y, h, full) || !gauss(g, t, y, half, a) || !gauss(g, Real(t + half), a.y, half, b)) {
+    if (!radau(g, t, y, h, full) || !radau(g, t, y, half, a) || !radau(g, Real(t + half), a.y, half, b)) {
       next_h = h / 4;
       return false;
     }
@@ -391,7 +418,7 @@ class PlanarEngine {
     const Real n_max = max(n(g, t), n(g, Real(t + h)));
     const Real err = max(n_max * max(abs(full.y.u - sign * b.y.u), abs(full.y.v - sign * b.y.v)),
                          abs(full.ix - a.ix - b.ix) + abs(full.iy - a.iy - b.iy));
-    const Real order = 2 * tableau_.s + 1;
+    const Real order = 2 * tableau_.s;  // the local error of an order 2s − 1 method
     Real factor = err == 0 ? Real(4) : Real(Real(0.9) * pow(step_tol_ / err, 1 / order));
     factor = std::clamp(factor, Real(0.2), Real(4));
     next_h = h * factor;
@@ -410,19 +437,37 @@ class PlanarEngine {
     using std::min;
     const Real pi = boost::math::constants::pi<Real>();
     const Real w = b - a;
-    // λ's range: D' and n' from the pieces' ends, e from θ's range (|θ'| ≤ |D'|/n).
+    // λ's range: D' and n' from the pieces' ends, e from θ's range, the narrower of two enclosures:
+    // |θ'| ≤ |D'|/n from both ends; and, θ' = (|D'|/n) sin(ψ − θ) turning θ towards D''s angle ψ,
+    // the hull of θ(a) and ψ's range (invariant while it is narrower than π), which stays narrow
+    // where |D'|/n is large (the stiff slip of a large amplitude).
     const Iv dx = dD_range(g, a, b, 0), dy = dD_range(g, a, b, 1), dnr = dn_range(g, a, b);
     const Iv nr = n_range(g, a, b);
     bool excluded = false;
     if (nr.lo > 0) {
+      const Real ta = angle(ya);
+      std::optional<Iv> range;  // θ − θ(a)
       const Real speed = max(abs(dx.lo), abs(dx.hi)) + max(abs(dy.lo), abs(dy.hi));
       const Real sweep = speed / nr.lo * w;
       if (sweep < pi) {
-        const Real ta = angle(ya);
-        Real d = angle(yb) - ta;
-        while (d > pi) d -= 2 * pi;
-        while (d <= -pi) d += 2 * pi;
-        const Real lo = ta + (d - sweep) / 2, hi = ta + (d + sweep) / 2;
+        const Real d = wrap(Real(angle(yb) - ta));
+        range = Iv{(d - sweep) / 2, (d + sweep) / 2};
+      }
+      if (dx.lo > 0 || dx.hi < 0 || dy.lo > 0 || dy.hi < 0) {  // the box of D' excludes 0
+        using std::atan2;
+        const Real mid = wrap(Real(atan2((dy.lo + dy.hi) / 2, (dx.lo + dx.hi) / 2) - ta));
+        Iv psi{mid, mid};
+        for (const Real& cx : {dx.lo, dx.hi})
+          for (const Real& cy : {dy.lo, dy.hi}) {
+            const Real q = mid + wrap(Real(atan2(cy, cx) - ta - mid));
+            psi = {std::min(psi.lo, q), max(psi.hi, q)};
+          }
+        const Iv inv{std::min(psi.lo, Real(0)), max(psi.hi, Real(0))};
+        if (inv.hi - inv.lo < pi)
+          range = range ? Iv{max(range->lo, inv.lo), std::min(range->hi, inv.hi)} : inv;
+      }
+      if (range) {
+        const Real lo = ta + range->lo, hi = ta + range->hi;
         const Iv c = cos_range(lo, hi), s = cos_range(Real(lo - pi / 2), Real(hi - pi / 2));
         const Iv lam = add(mul(dx, c), mul(dy, s));
         excluded = lam.lo - dnr.hi >= -tol;
@@ -442,7 +487,7 @@ class PlanarEngine {
       const auto f = [&](const Real& t) -> Real {
         if (t == x0) return lambda(g, t, unit(y0)) + tol;
         Step st;
-        if (!gauss(g, x0, y0, Real(t - x0), st))
+        if (!radau(g, x0, y0, Real(t - x0), st))
           throw SolverError("in-plane oscillation: the slip integrator failed at phase " + short_str(t) + " from " + short_str(x0) + " n " + short_str(n(g, t)));
         return lambda(g, t, unit(st.y)) + tol;
       };
@@ -464,7 +509,7 @@ class PlanarEngine {
     }
     const Real m = a + w / 2;
     Step sm;
-    if (!gauss(g, x0, y0, Real(m - x0), sm))
+    if (!radau(g, x0, y0, Real(m - x0), sm))
       throw SolverError("in-plane oscillation: the slip integrator failed at phase " + short_str(m) + " from " + short_str(x0) + " n " + short_str(n(g, m)) + " b " + short_str(b) + " x0 " + short_str(x0) + " a " + short_str(a) + " seg " + short_str(g.u) + " " + short_str(g.v));
     if (auto r = slip_end(g, x0, y0, a, ya, m, sm.y, tol, step, budget)) return r;
     return slip_end(g, x0, y0, m, sm.y, b, yb, tol, step, budget);
@@ -651,7 +696,7 @@ class PlanarEngine {
             end = e.slip_end(g, t, y, t, y, t1, st.y, lam_tol, hh, budget);
             if (end) {
               Step part;
-              if (*end != t && !e.gauss(g, t, y, Real(*end - t), part))
+              if (*end != t && !e.radau(g, t, y, Real(*end - t), part))
                 throw SolverError("in-plane oscillation: the slip integrator failed at phase " + short_str(*end) + " from " + short_str(t));
               if (*end != t) {
                 y = part.y;
@@ -737,7 +782,7 @@ class PlanarEngine {
   const Waveform<Real>* w_;
   const Waveform<Real>& p_;
   Real gamma_, beta_, al_, at_, phase_;
-  GaussTableau<Real> tableau_;
+  RadauTableau<Real> tableau_;
   std::optional<Contact<Real>> contact_;
   std::vector<Seg> segs_;
   std::uintmax_t root_iterations_ = 200;

@@ -14,14 +14,16 @@
 // Method. Stick is exact (s = s0 + D − D0); its end, the first φ where |s|² − n² > 0 to rounding, is
 // found by bisection with a mean-value enclosure whose derivative bound comes from the monotone
 // pieces of p, p', n and n' (waveform.hpp's contract) on each segment of inplane_segments.
-// Slip: with z = tan(θ/2) = u/v the angle equation is a Riccati equation, so (u, v) solves the
-// linear system (u, v)' = (1/2n) [[−D_x', D_y'], [D_y', D_x']] (u, v); it is integrated by the
-// s-stage Gauss–Legendre collocation method (order 2s, s growing with the precision; A-stable, so
-// the stiffness where n → 0 costs steps, not stability) with step-doubling error control to a few
-// ulps of the working precision; ∫ s_x and ∫ s_y are quadratures on the same stages (order 2s).
+// Slip: the angle equation θ' = (|D'|/n) sin(ψ − θ) (ψ the angle of D') is integrated by the
+// s-stage Radau IIA collocation method (order 2s − 1, s growing with the precision), its stage
+// system solved by Newton's method, with step-doubling error control to a few ulps of the working
+// precision. The method is L-stable: where |D'|/n is large (a large amplitude, or n → 0) θ relaxes
+// onto ψ within a fraction of a step and the step follows ψ, not the relaxation. ∫ s_x and ∫ s_y
+// are quadratures on the same stages (the method applied to them, order 2s − 1).
 // Slip ends at the first φ where λ < 0 beyond its rounding: each step's range of λ is enclosed from
-// the pieces' end values and the step's range of θ (|θ'| ≤ |D'|/n); where the enclosure does not
-// exclude an end, the step is bisected and the crossing refined by toms748. Before contact is
+// the pieces' end values and the step's range of θ (|θ'| ≤ |D'|/n, or the hull of θ and ψ's
+// range); where the enclosure does not exclude an end, the step is bisected and the crossing
+// refined by toms748. Before contact is
 // lost (n → 0 at a segment's end) slip is integrated to where ∫ n over the rest is below 2^-bits;
 // the rest adds at most that to ∫ s. An event that cannot be separated, an integrator that does
 // not converge or a state that is not reached is a SolverError.
@@ -78,7 +80,7 @@ struct PlanarResult {
   std::size_t events = 0;     // mode changes and jumps per period
   std::size_t periods = 0;    // one-period maps evaluated to find and check the state
   std::size_t steps = 0;      // accepted integration steps in the recorded period
-  int stages = 0;             // of the Gauss–Legendre method
+  int stages = 0;             // of the Radau IIA method
   std::vector<PlanarSpan<Real>> spans;
 };
 

@@ -1,23 +1,27 @@
-// The s-stage Gauss–Legendre collocation method (order 2s) for the linear slip system of
-// core/inplane/planar.hpp, y' = M(t) y with y = (u, v), and the quadratures on its stages.
+// The s-stage Radau IIA collocation method (order 2s − 1, stiffly accurate and L-stable) for the
+// slip equation of core/inplane/planar.hpp, built with the s-point Gauss–Legendre rule, and a
+// dense linear solve for its Newton steps.
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <boost/math/special_functions/legendre.hpp>
+#include <boost/math/tools/precision.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
 
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric::detail {
 
-// Nodes c_i, weights b_i on [0, 1] and A_ij = ∫₀^{c_i} ℓ_j (ℓ_j the Lagrange basis of the nodes).
+// The s-point Gauss–Legendre rule on [0, 1]: nodes c_i ascending, weights b_i.
 template <class Real>
 struct GaussTableau {
   int s = 0;
-  std::vector<Real> c, b, a;  // a row-major s × s
+  std::vector<Real> c, b;
 
   explicit GaussTableau(int stages) : s(stages) {
     using std::abs;
@@ -34,20 +38,48 @@ struct GaussTableau {
       c.push_back((1 + z) / 2);
       b.push_back(1 / ((1 - z * z) * d * d));
     }
-    // ∫₀^{c_i} ℓ_j = c_i Σ_k b_k ℓ_j(c_i c_k): the s-point rule is exact for the degree s − 1 of ℓ_j.
+  }
+};
+
+// Radau IIA: nodes c_i = (1 + x_i)/2 with x_i the zeros of P_s − P_{s−1} (x_s = 1; one zero
+// between each two neighbouring zeros of P_s, where P_s − P_{s−1} = −P_{s−1} alternates in sign),
+// A_ij = ∫₀^{c_i} ℓ_j by the s-point Gauss rule (exact for the degree s − 1 of ℓ_j), b_j = A_sj.
+template <class Real>
+struct RadauTableau {
+  int s = 0;
+  std::vector<Real> c, b, a;  // a row-major s × s
+
+  explicit RadauTableau(int stages) : s(stages) {
+    const GaussTableau<Real> gauss(s);
+    const auto f = [&](const Real& x) {
+      return boost::math::legendre_p<Real>(s, x) - boost::math::legendre_p<Real>(s - 1, x);
+    };
+    const int bits = boost::math::tools::digits<Real>();
+    for (int k = 0; k + 1 < s; ++k) {
+      const Real lo = 2 * gauss.c[static_cast<std::size_t>(k)] - 1, hi = 2 * gauss.c[static_cast<std::size_t>(k + 1)] - 1;
+      std::uintmax_t it = 400;
+      const auto r = boost::math::tools::toms748_solve(f, lo, hi, f(lo), f(hi),
+                                                       boost::math::tools::eps_tolerance<Real>(static_cast<unsigned>(bits)), it);
+      if (it >= 400) throw SolverError("Radau node " + std::to_string(k) + " of " + std::to_string(s) + " did not converge");
+      using std::abs;
+      const Real x = abs(f(r.first)) <= abs(f(r.second)) ? r.first : r.second;
+      c.push_back((1 + x) / 2);
+    }
+    c.push_back(Real(1));
     a.assign(static_cast<std::size_t>(s * s), Real(0));
     for (int i = 0; i < s; ++i)
       for (int j = 0; j < s; ++j) {
         Real sum = 0;
         for (int k = 0; k < s; ++k) {
-          const Real t = c[i] * c[k];
+          const Real t = c[static_cast<std::size_t>(i)] * gauss.c[static_cast<std::size_t>(k)];
           Real l = 1;
           for (int m = 0; m < s; ++m)
-            if (m != j) l *= (t - c[m]) / (c[j] - c[m]);
-          sum += b[k] * l;
+            if (m != j) l *= (t - c[static_cast<std::size_t>(m)]) / (c[static_cast<std::size_t>(j)] - c[static_cast<std::size_t>(m)]);
+          sum += gauss.b[static_cast<std::size_t>(k)] * l;
         }
-        a[static_cast<std::size_t>(i * s + j)] = c[i] * sum;
+        a[static_cast<std::size_t>(i * s + j)] = c[static_cast<std::size_t>(i)] * sum;
       }
+    b.assign(a.end() - s, a.end());
   }
   const Real& A(int i, int j) const { return a[static_cast<std::size_t>(i * s + j)]; }
 };
