@@ -2908,6 +2908,31 @@ def inplane_tests():
                 raise Fail("%s: %r, the linearised angle gives %r" % (cmd(args), got, want))
     case("in-plane: a small transverse drive in double, the map contracting weakly", transverse_small)
 
+    def rigid_limits():
+        # model.md's rigid limits (n = 1, sine, a -> oo at xi = beta/(2 pi a)), at a = 1e6 in double:
+        # longitudinal (2/pi) arcsin xi, approached as 0.1416/a at xi = 1/2 (tests/unit/test_claims.cpp);
+        # transverse (2/pi) xi/sqrt(1 + xi^2) K(1/sqrt(1 + xi^2)), as 0.766/a^2 (test_planar.cpp), so
+        # within 1e-12 of it; K by the arithmetic-geometric mean, K(k) = pi/(2 agm(1, sqrt(1 - k^2))).
+        def agm(x, y):
+            for _ in range(60):
+                x, y = (x + y) / 2, math.sqrt(x * y)
+            return x
+        a = "1000000"
+        for xi in (0.5, 2.0):
+            beta = repr(2 * math.pi * 1e6 * xi)
+            args = ["mu", "--wave", "constant", "--beta", beta, "--transverse", a, "--type", "double"]
+            got = float(ok_run(args).splitlines()[0])
+            k = 1 / math.sqrt(1 + xi * xi)
+            limit = 2 / math.pi * xi * k * math.pi / (2 * agm(1.0, math.sqrt(1 - k * k)))
+            if not 0 < got - limit < 1e-12 + 4e-16:
+                raise Fail("%s: %r, the rigid limit %r" % (cmd(args), got, limit))
+        beta = repr(2 * math.pi * 1e6 * 0.5)
+        args = ["mu", "--wave", "constant", "--beta", beta, "--longitudinal", a, "--type", "double"]
+        got = float(ok_run(args).splitlines()[0])
+        if not 1.3e-7 < got - 1 / 3 < 1.5e-7:
+            raise Fail("%s: %r, the rigid limit 1/3 + 0.1416/a" % (cmd(args), got))
+    case("in-plane: the rigid limits at a = 1e6, longitudinal and transverse", rigid_limits)
+
     def transverse_mirror():
         # p(phi + 1/2) = -p(phi): half a period later the transverse drive is its mirror image
         args = ["mu", "--wave", "sine", "--gamma", "1.2", "--beta", "0.7", "--transverse", "0.8", "--digits", "12"]
