@@ -354,18 +354,16 @@ class PlanarEngine {
     const Real theta0 = angle(y);
     const Real pi = boost::math::constants::pi<Real>();
     const Real tol = ldexp(Real(8), -bits_) * (1 + abs(theta0));
-    std::vector<Real> th(static_cast<std::size_t>(s), theta0), sn(static_cast<std::size_t>(s)), cs(static_cast<std::size_t>(s));
+    std::vector<Real> th(static_cast<std::size_t>(s), theta0), f(static_cast<std::size_t>(s)), df(static_cast<std::size_t>(s));
     std::vector<Real> K(static_cast<std::size_t>(s * s)), r(static_cast<std::size_t>(s));
     Real last = std::numeric_limits<Real>::infinity();
     for (int iter = 0;; ++iter) {
       if (iter == 60) return false;
-      std::vector<Real> f(static_cast<std::size_t>(s)), df(static_cast<std::size_t>(s));
       for (int j = 0; j < s; ++j) {
         const std::size_t J = static_cast<std::size_t>(j);
-        sn[J] = sin(th[J]);
-        cs[J] = cos(th[J]);
-        f[J] = dy[J] * cs[J] - dx[J] * sn[J];
-        df[J] = -(dx[J] * cs[J] + dy[J] * sn[J]);
+        const Real sn = sin(th[J]), cs = cos(th[J]);
+        f[J] = dy[J] * cs - dx[J] * sn;
+        df[J] = -(dx[J] * cs + dy[J] * sn);
       }
       for (int i = 0; i < s; ++i) {
         Real sum = 0;
