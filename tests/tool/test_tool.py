@@ -2933,6 +2933,20 @@ def inplane_tests():
             raise Fail("%s: %r, the rigid limit 1/3 + 0.1416/a" % (cmd(args), got))
     case("in-plane: the rigid limits at a = 1e6, longitudinal and transverse", rigid_limits)
 
+    def riding_the_edge():
+        # beta = 0, the in-plane wave the normal one in phase, from touch-down: s = a n, on the disc's
+        # edge where |a| = 1 with a slip rate of 0 throughout (slip, as model.md's lambda >= 0 says):
+        # mu = a_l, mean_lateral = a_t, the contact (2/3 at gamma = 1/2) slipping (test_planar.cpp).
+        for al, at in (("0", "1"), ("0.6", "0.8")):
+            args = ["mu", "--wave", "sine", "--beta", "0", "--gamma", "0.5", "--longitudinal", al, "--transverse", at,
+                    "--type", "double"]
+            out = ok_run(args).splitlines()
+            fields = dict(line.split(": ") for line in out[1:])
+            if float(out[0]) != float(al) or float(fields["mean_lateral"]) != float(at) or \
+                    abs(float(fields["slip_fraction"]) - 2 / 3) > 1e-16 or float(fields["stick_fraction"]) != 0:
+                raise Fail("%s: %r" % (cmd(args), out))
+    case("in-plane: a force riding the disc's edge at a tie of the slip rate", riding_the_edge)
+
     def transverse_mirror():
         # p(phi + 1/2) = -p(phi): half a period later the transverse drive is its mirror image
         args = ["mu", "--wave", "sine", "--gamma", "1.2", "--beta", "0.7", "--transverse", "0.8", "--digits", "12"]

@@ -281,6 +281,52 @@ TEST(Planar, SmallAmplitudeSlipsAtTheLinearisedAngle) {
   }
 }
 
+// β = 0 and the in-plane wave the normal one in phase, from touch-down: D − D(touch-down) = a n with
+// a = (a_l, a_t), so s = a n inside the disc for |a| < 1 (stick), and on its edge for |a| = 1, where
+// the slip rate |D'| − n' = (|a| − 1) n' is 0 throughout: slip (λ ≥ 0, model.md), as the stop operator
+// decides at a_t = 0. So μ̄ = a_l, ∫s_y/∫n = a_t, and the contact's fraction (2/3 for the sine at
+// γ = 1/2, 3/4 for the triangle) is slip or stick. Before, the tie stopped the solver ("cannot be
+// separated"): the slip rate's enclosure took n' and p' as independent.
+TEST(Planar, ForceRidingTheCircleAtATie) {
+  PrecisionScope scope(30);
+  struct Tie {
+    const char* wave;
+    const char *al, *at;
+    int num, den;  // the contact's fraction
+    bool edge;     // |a| = 1
+  };
+  for (const Tie& t : {Tie{"sine", "0", "1", 2, 3, true}, Tie{"sine", "0.6", "0.8", 2, 3, true},
+                       Tie{"sine", "0", "0.8", 2, 3, false}, Tie{"triangle", "0.6", "0.8", 3, 4, true},
+                       Tie{"triangle", "0", "1", 3, 4, true}}) {
+    const Case c{t.wave, t.wave, 0.5, 0, std::stod(t.al), std::stod(t.at), 0};
+    const auto check = [&](const auto& r, const mpfr& tol, const char* type) {
+      const std::string where = describe(c) + ", " + type;
+      const mpfr contact = mpfr(t.num) / t.den;
+      // in double the amplitudes are the doubles nearest a_l and a_t (|a| = 1 to their rounding)
+      const bool dbl = std::string(type) == "double";
+      const mpfr al = dbl ? mpfr(c.al) : mpfr(t.al), at = dbl ? mpfr(c.at) : mpfr(t.at);
+      EXPECT_LE(abs(mpfr(r.mu) - al), tol) << where;
+      EXPECT_LE(abs(mpfr(r.mean_lateral) - at), tol) << where;
+      EXPECT_LE(abs(mpfr(t.edge ? r.slip_fraction : r.stick_fraction) - contact), tol) << where;
+      EXPECT_LE(abs(mpfr(r.flight_fraction) - (1 - contact)), tol) << where;
+    };
+    try {
+      // the decimal amplitudes at the working precision: 0.6² + 0.8² = 1 to its rounding (with the
+      // doubles nearest them |a| = 1 + 2e-17, and the force rightly sticks where n falls)
+      const auto w = wave_named<mpfr>(t.wave), p = wave_named<mpfr>(t.wave);
+      check(solve_planar<mpfr>(w.get(), mpfr("0.5"), *p, mpfr(0), PlanarDrive<mpfr>{mpfr(t.al), mpfr(t.at), mpfr(0)}),
+            mpfr("1e-25"), "mpfr");
+    } catch (const SolverError& e) {
+      ADD_FAILURE() << describe(c) << ", mpfr: " << e.what();
+    }
+    try {
+      check(solve_case<double>(c), mpfr("1e-13"), "double");
+    } catch (const SolverError& e) {
+      ADD_FAILURE() << describe(c) << ", double: " << e.what();
+    }
+  }
+}
+
 // β = 0 with a drive too small to slip: every state of a band is periodic, and the two starts say so.
 TEST(Planar, StickingThroughThePeriodHasNoUniqueState) {
   PrecisionScope scope(30);

@@ -46,6 +46,8 @@ class PlanarEngine {
     step_tol_ = ldexp(Real(1), 12 - bits_);
     if (w) contact_.emplace(*w, gamma, opt);
     segs_ = inplane_segments(contact_ ? &*contact_ : nullptr, p_, phase_);
+    // One catalogue wave for both, in phase: n' and p' are one function where the contact holds.
+    in_phase_ = w && phase_ == 0 && w->name() == p.name();
   }
 
   // Order 2s − 1 with s = (decimal digits)/4 + 4: the step that reaches the working precision stays near 1/L.
@@ -451,16 +453,15 @@ class PlanarEngine {
         const Real d = wrap(Real(angle(yb) - ta));
         range = Iv{(d - sweep) / 2, (d + sweep) / 2};
       }
-      if (dx.lo > 0 || dx.hi < 0 || dy.lo > 0 || dy.hi < 0) {  // the box of D' excludes 0
+      // D' = (β + a_l q, a_t q) with q = p' in its range: a segment, whose angle is monotone along it.
+      const Iv q = hull(dp(g, a), dp(g, b));
+      const Vec d0{beta_ + al_ * q.lo, at_ * q.lo}, d1{beta_ + al_ * q.hi, at_ * q.hi};
+      const Real cross = d0[0] * d1[1] - d0[1] * d1[0], dot = d0[0] * d1[0] + d0[1] * d1[1];
+      if ((d0[0] != 0 || d0[1] != 0) && (d1[0] != 0 || d1[1] != 0) && (cross != 0 || dot > 0)) {  // 0 not on it
         using std::atan2;
-        const Real mid = wrap(Real(atan2((dy.lo + dy.hi) / 2, (dx.lo + dx.hi) / 2) - ta));
-        Iv psi{mid, mid};
-        for (const Real& cx : {dx.lo, dx.hi})
-          for (const Real& cy : {dy.lo, dy.hi}) {
-            const Real q = mid + wrap(Real(atan2(cy, cx) - ta - mid));
-            psi = {std::min(psi.lo, q), max(psi.hi, q)};
-          }
-        const Iv inv{std::min(psi.lo, Real(0)), max(psi.hi, Real(0))};
+        const Real p0 = wrap(Real(atan2(d0[1], d0[0]) - ta));
+        const Real p1 = p0 + wrap(Real(atan2(d1[1], d1[0]) - ta - p0));
+        const Iv inv{std::min({p0, p1, Real(0)}), max({p0, p1, Real(0)})};
         if (inv.hi - inv.lo < pi)
           range = range ? Iv{max(range->lo, inv.lo), std::min(range->hi, inv.hi)} : inv;
       }
@@ -469,6 +470,15 @@ class PlanarEngine {
         const Iv c = cos_range(lo, hi), s = cos_range(Real(lo - pi / 2), Real(hi - pi / 2));
         const Iv lam = add(mul(dx, c), mul(dy, s));
         excluded = lam.lo - dnr.hi >= -tol;
+        if (!excluded && in_phase_ && g.contact_segment != npos && on_contact(g)) {
+          // n' = p' here: λ = β e_x + p' (|a| cos(θ − ψ_a) − 1) with a = (a_l, a_t), whose enclosure
+          // keeps the tie |a| cos(θ − ψ_a) = 1 (the force riding the circle at the rate the disc grows) at 0.
+          using std::atan2;
+          using std::hypot;
+          const Real psi_a = atan2(at_, al_);
+          const Iv k = affine(Real(-1), hypot(al_, at_), cos_range(Real(lo - psi_a), Real(hi - psi_a)));
+          excluded = add(mul(Iv{beta_, beta_}, c), mul(q, k)).lo >= -tol;
+        }
       }
     }
     if (excluded) return std::nullopt;
@@ -531,7 +541,15 @@ class PlanarEngine {
     const Iv nr = n_range(g, a, b);
     const Iv dg = add(add(mul(sx, dD_range(g, a, b, 0)), mul(sy, dD_range(g, a, b, 1))),
                       mul(Iv{-nr.hi, -nr.lo}, dn_range(g, a, b)));
-    const Real slope = 2 * max(abs(dg.lo), abs(dg.hi));
+    Real slope = 2 * max(abs(dg.lo), abs(dg.hi));
+    if (in_phase_ && g.contact_segment != npos && on_contact(g)) {
+      // n = γ + p and n' = p' here: G'/2 = β s_x + p' (c·a + β a_l φ + (|a|² − 1) p − γ), which
+      // keeps a force that follows the disc's edge (|a| = 1, s ∥ a) at G' = 0.
+      const Iv k = add(Iv{c[0] * al_ + c[1] * at_ - gamma_ + beta_ * al_ * a, c[0] * al_ + c[1] * at_ - gamma_ + beta_ * al_ * b},
+                       mul(Iv{al_ * al_ + at_ * at_ - 1, al_ * al_ + at_ * at_ - 1}, q));
+      const Iv dg2 = add(mul(Iv{beta_, beta_}, sx), mul(hull(dp(g, a), dp(g, b)), k));
+      slope = std::min(slope, Real(2 * max(abs(dg2.lo), abs(dg2.hi))));
+    }
     if (G(m) + slope * w / 2 <= tol) return std::nullopt;
     if (w <= resolution_ * max(Real(1), abs(b))) {
       if (G(b) > tol) return b;
@@ -622,11 +640,12 @@ class PlanarEngine {
       }
       const Real nn = e.n(g, phi), r = hypot(s[0], s[1]);
       if (nn == 0) {
-        // Touch-down (s = 0 = n): slip at once where the drive outruns the growing disc.
+        // Touch-down (s = 0 = n): slip at once where the drive keeps up with the growing disc (its
+        // rate λ = |D'| − n' not below its rounding, as on the circle below).
         s = {Real(0), Real(0)};
         const Vec d = e.dD(g, phi);
         const Real speed = hypot(d[0], d[1]);
-        if (speed > 0 && speed - e.dn(g, phi) > e.lambda_tol(g)) {
+        if (speed > 0 && speed - e.dn(g, phi) >= -e.lambda_tol(g)) {
           return PlanarMode::slip;
         }
         return PlanarMode::stick;
@@ -785,6 +804,7 @@ class PlanarEngine {
   std::vector<Seg> segs_;
   std::uintmax_t root_iterations_ = 200;
   int bits_ = 0;
+  bool in_phase_ = false;
   Real resolution_, step_tol_;
 };
 
