@@ -33,7 +33,7 @@ class PlanarEngine {
         beta_(beta),
         al_(d.longitudinal),
         at_(d.transverse),
-        tableau_(stages_for(boost::math::tools::digits<Real>())) {
+        tableau_(radau_tableau<Real>(stages_for(boost::math::tools::digits<Real>()))) {
     using std::floor;
     using std::ldexp;
     phase_ = d.phase - floor(d.phase);

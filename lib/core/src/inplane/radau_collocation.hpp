@@ -4,6 +4,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,51 +13,29 @@
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
+#include "vibrofric/core/detail/gauss_legendre.hpp"
 #include "vibrofric/core/errors.hpp"
 #include "vibrofric/core/numbers.hpp"
 
 namespace vibrofric::detail {
 
-// The s-point Gauss–Legendre rule on [0, 1]: nodes c_i ascending, weights b_i.
-template <class Real>
-struct GaussTableau {
-  int s = 0;
-  std::vector<Real> c, b;
-
-  explicit GaussTableau(int stages) : s(stages) {
-    using std::abs;
-    // The zeros of P_s on [0, 1] and their weights 2 / ((1 − x²) P_s'(x)²), mapped to [0, 1].
-    const std::vector<Real> zeros = boost::math::legendre_p_zeros<Real>(s);
-    std::vector<Real> x;
-    for (auto it = zeros.rbegin(); it != zeros.rend(); ++it)
-      if (*it != 0) x.push_back(-*it);
-    for (const Real& z : zeros) x.push_back(z);
-    if (static_cast<int>(x.size()) != s) throw SolverError("Gauss-Legendre nodes: " + std::to_string(x.size()) +
-                                                           " zeros of P_" + std::to_string(s));
-    for (const Real& z : x) {
-      const Real d = boost::math::legendre_p_prime<Real>(s, z);
-      c.push_back((1 + z) / 2);
-      b.push_back(1 / ((1 - z * z) * d * d));
-    }
-  }
-};
-
 // Radau IIA: nodes c_i = (1 + x_i)/2 with x_i the zeros of P_s − P_{s−1} (x_s = 1; one zero
 // between each two neighbouring zeros of P_s, where P_s − P_{s−1} = −P_{s−1} alternates in sign),
 // A_ij = ∫₀^{c_i} ℓ_j by the s-point Gauss rule (exact for the degree s − 1 of ℓ_j), b_j = A_sj.
+// Built once per thread, precision and s (radau_tableau below).
 template <class Real>
 struct RadauTableau {
   int s = 0;
   std::vector<Real> c, b, a;  // a row-major s × s
 
   explicit RadauTableau(int stages) : s(stages) {
-    const GaussTableau<Real> gauss(s);
+    const GaussRule<Real>& gauss = gauss_legendre<Real>(static_cast<std::size_t>(s));  // nodes ascending
     const auto f = [&](const Real& x) {
       return boost::math::legendre_p<Real>(s, x) - boost::math::legendre_p<Real>(s - 1, x);
     };
     const int bits = boost::math::tools::digits<Real>();
     for (int k = 0; k + 1 < s; ++k) {
-      const Real lo = 2 * gauss.c[static_cast<std::size_t>(k)] - 1, hi = 2 * gauss.c[static_cast<std::size_t>(k + 1)] - 1;
+      const Real lo = 2 * gauss.nodes[static_cast<std::size_t>(k)] - 1, hi = 2 * gauss.nodes[static_cast<std::size_t>(k + 1)] - 1;
       std::uintmax_t it = 400;
       const auto r = boost::math::tools::toms748_solve(f, lo, hi, f(lo), f(hi),
                                                        boost::math::tools::eps_tolerance<Real>(static_cast<unsigned>(bits)), it);
@@ -71,11 +50,11 @@ struct RadauTableau {
       for (int j = 0; j < s; ++j) {
         Real sum = 0;
         for (int k = 0; k < s; ++k) {
-          const Real t = c[static_cast<std::size_t>(i)] * gauss.c[static_cast<std::size_t>(k)];
+          const Real t = c[static_cast<std::size_t>(i)] * gauss.nodes[static_cast<std::size_t>(k)];
           Real l = 1;
           for (int m = 0; m < s; ++m)
             if (m != j) l *= (t - c[static_cast<std::size_t>(m)]) / (c[static_cast<std::size_t>(j)] - c[static_cast<std::size_t>(m)]);
-          sum += gauss.b[static_cast<std::size_t>(k)] * l;
+          sum += gauss.weights[static_cast<std::size_t>(k)] * l;
         }
         a[static_cast<std::size_t>(i * s + j)] = c[static_cast<std::size_t>(i)] * sum;
       }
@@ -83,6 +62,14 @@ struct RadauTableau {
   }
   const Real& A(int i, int j) const { return a[static_cast<std::size_t>(i * s + j)]; }
 };
+
+template <class Real>
+const RadauTableau<Real>& radau_tableau(int stages) {
+  thread_local std::map<std::pair<int, int>, RadauTableau<Real>> cache;
+  const std::pair<int, int> key{working_digits10<Real>(), stages};
+  if (const auto hit = cache.find(key); hit != cache.end()) return hit->second;
+  return cache.emplace(key, RadauTableau<Real>(stages)).first->second;
+}
 
 // Solves K x = r in place (K n × n row-major, partial pivoting); false where K is singular.
 template <class Real>
