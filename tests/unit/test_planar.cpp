@@ -327,6 +327,107 @@ TEST(Planar, ForceRidingTheCircleAtATie) {
   }
 }
 
+// No sliding and no longitudinal drive (β = 0, a_l = 0): a state that slips settles on the drive's
+// axis (s_x' = −λ cos θ in slip, planar.hpp), where the one-period map's fixed point may be reached
+// only algebraically. Closed forms: n ≡ 1 with a sine of amplitude 2 sticks and slips a quarter
+// period each half (s_y = 2 sin 2πφ ∓ 1 in stick, ±1 in slip: ∫s_y = 0); of amplitude 1 a quarter
+// period late, s_y = cos 2πφ touches the circle twice and sticks throughout; the square normal
+// wave at γ = 3/2 (n = 5/2, then 1/2) with a_t = 1/2 a quarter period late fits s_y = cos(2πφ)/2
+// into the narrow half exactly. Before, the last three stopped with an error (periods or bisections
+// run out, or a band of states reported). The others
+// against the catching-up scheme, and the 2-D map from a start off the axis: |s_x| never grows and
+// falls where the force slips.
+TEST(Planar, WithoutSlidingTheForceSettlesOnTheDriveAxis) {
+  PrecisionScope scope(30);
+  struct Closed {
+    Case c;
+    double stick, slip;
+  };
+  for (const Closed& k : {Closed{{"", "sine", 0, 0, 0, 2, 0}, 0.5, 0.5}, Closed{{"", "sine", 0, 0, 0, 1, 0.25}, 1, 0},
+                          Closed{{"", "sine", 0, 0, 0, 1, 0}, 1, 0}, Closed{{"square", "sine", 1.5, 0, 0, 0.5, 0.25}, 1, 0}}) {
+    for (const int type : {0, 1}) {
+      try {
+        const auto r = type ? solve_case<mpfr>(k.c) : [&] {
+          const auto d = solve_case<double>(k.c);
+          PlanarResult<mpfr> m;
+          m.mu = d.mu, m.mean_lateral = d.mean_lateral, m.stick_fraction = d.stick_fraction;
+          m.slip_fraction = d.slip_fraction, m.flight_fraction = d.flight_fraction;
+          return m;
+        }();
+        const mpfr tol = type ? mpfr("1e-25") : mpfr("1e-14");
+        const std::string where = describe(k.c) + (type ? ", mpfr" : ", double");
+        EXPECT_LE(abs(r.mu), tol) << where;
+        EXPECT_LE(abs(r.mean_lateral), tol) << where;
+        EXPECT_LE(abs(r.stick_fraction - k.stick), tol) << where;
+        EXPECT_LE(abs(r.slip_fraction - k.slip), tol) << where;
+        EXPECT_LE(abs(r.flight_fraction), tol) << where;
+      } catch (const SolverError& e) {
+        ADD_FAILURE() << describe(k.c) << ": " << e.what();
+      }
+    }
+  }
+  for (const Case& c : {Case{"sine", "triangle", -0.3, 0, 0, 0.7, 0.3}, Case{"", "sawtooth-right", 0, 0, 0, 1.5, 0.1},
+                        Case{"triangle", "sine", 0.5, 0, 0, 1.2, 0.6}}) {
+    // Where events fall between the scheme's steps its error is first order with a coefficient that
+    // wanders with N (the triangle's: 6.1e-10, 1.1e-10, 3.3e-11, 1.2e-11, 9.3e-13 from 2^16 to 2^20
+    // steps), which Richardson's step does not remove: the solver within the last two doublings' change.
+    const auto m18 = catching_up(c, 1L << 18), m20 = catching_up(c, 1L << 20);
+    const auto r = solve_case<mpfr>(c);
+    EXPECT_EQ(r.mu, 0) << describe(c);
+    EXPECT_LE(std::abs(static_cast<double>(r.mean_lateral) - m20[1]), std::abs(m20[1] - m18[1]))
+        << describe(c) << ": " << r.mean_lateral << " vs " << m20[1];
+    EXPECT_LE(std::abs(m20[0]), 1e-12) << describe(c);
+  }
+  for (const Case& c : {Case{"", "sine", 0, 0, 0, 1, 0.25}, Case{"sine", "triangle", -0.3, 0, 0, 0.7, 0.3}}) {
+    const auto w = c.w.empty() ? nullptr : wave_named<double>(c.w);
+    const auto p = wave_named<double>(c.p);
+    const PlanarSolver<double> map(w.get(), c.gamma, *p, c.beta, PlanarDrive<double>{c.al, c.at, c.phase});
+    std::array<double, 2> s{0.3, 0.5};
+    const double start = s[0];
+    for (int k = 0; k < 20; ++k) {
+      const auto next = map.period(s, nullptr);
+      EXPECT_LE(std::abs(next[0]), std::abs(s[0]) * (1 + 1e-15)) << describe(c) << ", period " << k;
+      s = next;
+    }
+    EXPECT_LT(std::abs(s[0]), start / 2) << describe(c);
+  }
+}
+
+// A sticking force that reaches the circle at a vanishing angle (n ≡ 1, s_y = cos 2πφ + c from
+// s = (ε, √(1 − ε²))): |s|² − n² rises through 0 near φ = 1/2 with a slope of order ε, staying within
+// its rounding over some 10^5 ulps (ε = 10^-6 in double) or touching it (ε = 0), where bisection
+// cannot separate touching from leaving; the stick goes on to where it has left by more than the
+// rounding (planar.hpp's stick end). Before, the bisection's budget ran out ("the end of stick
+// cannot be separated"), in double at ε = 10^-6 and at 30 digits at every ε from 10^-6 to 10^-12.
+// The state returns within ε of (0, 1), slipping at most a fraction ε of the period.
+TEST(Planar, ForceGrazingTheCircleSticksOn) {
+  const auto check = [](auto zero, std::initializer_list<const char*> starts) {
+    using Real = decltype(zero);
+    using std::abs;
+    using std::sqrt;
+    const Sine<Real> p;
+    const PlanarSolver<Real> map(nullptr, Real(0), p, Real(0), PlanarDrive<Real>{Real(0), Real(1), Real(0.25)});
+    const Real tol = 64 * std::numeric_limits<Real>::epsilon();
+    for (const char* start : starts) {
+      const Real e(std::stod(start));
+      try {
+        PlanarResult<Real> rec{};
+        const auto s = map.period({e, Real(sqrt(1 - e * e))}, &rec);
+        EXPECT_LE(abs(s[0]), e + tol) << start;
+        EXPECT_LE(abs(s[1] - 1), e + tol) << start;
+        EXPECT_LE(rec.slip_fraction, e + tol) << start;  // where D' = 0 (φ = 0) slip may start and end at once
+        EXPECT_LE(abs(rec.retained_area), e + tol) << start;
+        EXPECT_LE(abs(rec.lateral_area), e + tol) << start;  // ∫ cos 2πφ = 0
+      } catch (const SolverError& ex) {
+        ADD_FAILURE() << start << ": " << ex.what();
+      }
+    }
+  };
+  check(0.0, {"0", "1e-6"});
+  PrecisionScope scope(30);
+  check(mpfr(0), {"0", "1e-6", "1e-8", "1e-12"});
+}
+
 // β = 0 with a drive too small to slip: every state of a band is periodic, and the two starts say so.
 TEST(Planar, StickingThroughThePeriodHasNoUniqueState) {
   PrecisionScope scope(30);

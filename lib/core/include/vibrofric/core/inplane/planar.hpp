@@ -31,11 +31,13 @@
 // The periodic state is the fixed point of the one-period map (non-expansive: the sweeping
 // process) from s = (n(0⁻), 0), by Broyden's quasi-Newton steps on F(s) − s with the plain
 // iteration as fallback, until |F(s) − s| is below the integration's noise; a second start at −s
-// must reach the same state. The solver has no
-// error bound of its own: the API computes at two precisions.
+// must reach the same state. With β = 0 and a_l = 0 a state that slips has s_x = 0 (s_x' = −λ cos θ
+// in slip): the longitudinal stop operator of s_y decides it, also where the map's fixed point is
+// reached only algebraically. The solver has no error bound of its own: the API computes at two
+// precisions.
 //
-// The engine is lib/core/src/inplane/planar_engine.hpp, compiled for double, long double and mpfr.
-// Not here yet: curved contacts.
+// The engine is lib/core/src/inplane/planar_engine.hpp, compiled for double, long double and mpfr;
+// curved contacts are rows of it (inplane_curved.hpp).
 #pragma once
 #include <array>
 #include <cstddef>
