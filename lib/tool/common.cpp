@@ -88,6 +88,10 @@ std::optional<InPlaneSpec> inplane_options(const Flags& f) {
   if (f.phase.given()) s.phase = f.phase;
   if (f.in_plane_wave) s.wave = parse_wave(*f.in_plane_wave);
   check_inplane(s);
+  // A zero drive under the normal oscillation is the paper's model: its output, line for line (psi
+  // is still refused below, as for any in-plane flag).
+  const bool psi = f.command == "psi" || f.quantity == Quantity::psi;
+  if (detail::papers_model(s) && !psi) return std::nullopt;
   return s;
 }
 
