@@ -428,6 +428,48 @@ TEST(Planar, ForceGrazingTheCircleSticksOn) {
   check(mpfr(0), {"0", "1e-6", "1e-8", "1e-12"});
 }
 
+// A contact that begins at n = 0 and ends by a jump of n (sawtooth-right below γ = 1: n rises at
+// rate 2 from touch-down, then drops to flight), under a drive whose slope is constant there (a
+// triangle's rising piece over the whole contact): from touch-down s = n D'/|D'| where |D'| ≥ n' = 2,
+// so μ̄ = (β + 4 a_l)/|D'| and ∫s_y/∫n = 4 a_t/|D'| with D' = (β + 4 a_l, 4 a_t), exactly. Before,
+// the contact's end was cut at its start (n·(v − φ) small there too, n being 0) and no slip was
+// integrated: μ̄ = 0.
+TEST(Planar, ContactEndingByAJumpOfN) {
+  struct Jump {
+    double gamma, beta, al, at, phase;  // the contact [(1 − γ)/2, 1) inside a rising piece of p
+  };
+  for (const Jump& j : {Jump{-0.483, 2.731, 0.642, 0.749, 0.296}, Jump{-0.2, 0.5, 0, 1.5, 0.45},
+                        Jump{-0.2, 1, 0.25, 0.5, 0.45}}) {
+    const Case c{"sawtooth-right", "triangle", j.gamma, j.beta, j.al, j.at, j.phase};
+    const auto check = [&](const auto& r, const mpfr& tol, const char* type) {
+      // the inputs as the solve had them: the doubles, or the decimals at 30 digits
+      const auto in = [&](double x) { return type[0] == 'd' ? mpfr(x) : mpfr(std::to_string(x)); };
+      const mpfr gamma = in(j.gamma);
+      const mpfr dx = in(j.beta) + 4 * in(j.al), dy = 4 * in(j.at), len = sqrt(dx * dx + dy * dy);
+      ASSERT_GE(len, 2) << describe(c);
+      const std::string where = describe(c) + ", " + type;
+      EXPECT_LE(abs(mpfr(r.mu) - dx / len), tol) << where << ": " << r.mu;
+      EXPECT_LE(abs(mpfr(r.mean_lateral) - dy / len), tol) << where;
+      EXPECT_LE(abs(mpfr(r.slip_fraction) - (1 + gamma) / 2), tol) << where;
+      EXPECT_LE(abs(mpfr(r.flight_fraction) - (1 - gamma) / 2), tol) << where;
+    };
+    try {
+      check(solve_case<double>(c), mpfr("1e-13"), "double");
+    } catch (const SolverError& e) {
+      ADD_FAILURE() << describe(c) << ", double: " << e.what();
+    }
+    PrecisionScope scope(30);
+    try {
+      const auto w = wave_named<mpfr>(c.w), p = wave_named<mpfr>(c.p);
+      const auto dec = [](double x) { return mpfr(std::to_string(x)); };
+      check(solve_planar<mpfr>(w.get(), dec(j.gamma), *p, dec(j.beta), PlanarDrive<mpfr>{dec(j.al), dec(j.at), dec(j.phase)}),
+            mpfr("1e-25"), "mpfr");
+    } catch (const SolverError& e) {
+      ADD_FAILURE() << describe(c) << ", mpfr: " << e.what();
+    }
+  }
+}
+
 // β = 0 with a drive too small to slip: every state of a band is periodic, and the two starts say so.
 TEST(Planar, StickingThroughThePeriodHasNoUniqueState) {
   PrecisionScope scope(30);

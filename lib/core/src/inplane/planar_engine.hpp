@@ -819,10 +819,13 @@ class PlanarEngine {
   };
 
   // Where n falls to 0 at v (at_end) or rises from 0 at u: the φ in [u, v] with ∫ n beyond it (before
-  // it) at most n(φ)|v − φ| ≤ 2^-bits (n(φ)|φ − u|); n is monotone on the segment.
+  // it) at most n(φ)|v − φ| ≤ 2^-bits (n(φ)|φ − u|); n is monotone on the segment. Where n rises to v
+  // (at_end: the contact ends by a jump of n, as a sawtooth's drop) or falls from u, n is not small
+  // at that edge and nothing is cut.
   Real contact_cut(const Seg& g, bool at_end) const {
     using std::abs;
     using std::ldexp;
+    if (at_end ? n(g, g.u) < n(g, g.v) : n(g, g.u) > n(g, g.v)) return at_end ? g.v : g.u;
     const Real limit = ldexp(Real(1), -bits_);
     const Real& edge = at_end ? g.v : g.u;
     const auto small = [&](const Real& phi) { return n(g, phi) * abs(edge - phi) <= limit; };
