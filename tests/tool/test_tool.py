@@ -2826,6 +2826,30 @@ def inplane_tests():
             raise Fail("mu --wave constant --longitudinal 0: %r" % out)
     case("in-plane: --longitudinal 0 prints exactly what mu prints", zero_amplitude_is_mu)
 
+    def transverse_at_rest_trace():
+        # beta = 0, n = 1, a sine across of amplitude 2 (planar.hpp's reduction to the stop operator of
+        # s_y): slip at s_y = +1 on [0, 1/4], stick s_y = 2 sin(2 pi phi) - 1 to 1/2, slip at -1 to 3/4,
+        # stick 2 sin(2 pi phi) + 1 back to 1; s_x = 0 throughout. At 3/8 and 7/8: +-(sqrt 2 - 1).
+        rows = ok_run(["trace", "--wave", "constant", "--beta", "0", "--transverse", "2", "--points", "8",
+                       "--digits", "12"]).splitlines()
+        if rows[0] != "phi,n,s_x,s_y,mode":
+            raise Fail("header %r" % rows[0])
+        want = {F("0.125"): ("1", "slip"), F("0.375"): (str(2 ** 0.5 - 1), "stick"), F("0.625"): ("-1", "slip"),
+                F("0.875"): (str(1 - 2 ** 0.5), "stick")}
+        seen = set()
+        for row in rows[1:]:
+            phi, n, sx, sy, mode = row.split(",")
+            if F(sx) != 0 or F(n) != 1:
+                raise Fail("row %r: s_x 0 and n 1 expected" % row)
+            if F(phi) in want:
+                y, m = want[F(phi)]
+                if abs(F(sy) - F(y)) > F("1e-11") or mode != m:
+                    raise Fail("row %r: s_y %s, %s expected" % (row, y, m))
+                seen.add(F(phi))
+        if seen != set(want):
+            raise Fail("rows at %s missing: %r" % (sorted(set(want) - seen), rows))
+    case("in-plane: trace of a transverse drive at beta = 0 follows the stop operator of s_y", transverse_at_rest_trace)
+
     def digits_against_more_digits():
         cases = (["--wave", "sine", "--beta", "0", "--gamma", "0.5", "--longitudinal", "1", "--phase", "0.25"],
                  ["--wave", "tri", "--beta", "1.3", "--gamma", "0.3", "--longitudinal", "0.7", "--phase", "0.1"],

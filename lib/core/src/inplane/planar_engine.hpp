@@ -145,7 +145,7 @@ class PlanarEngine {
   const std::vector<Seg>& segments() const { return segs_; }
 
   // No sliding and no longitudinal drive (β = 0, a_l = 0): D' lies along y, s_x = 0 is invariant,
-  // and |s_x| falls in slip (s_x' = −λ cos θ) and at every projection while it stays in stick. A
+  // s_x stays in stick, and |s_x| falls in slip (s_x' = −λ cos θ) and at every projection. A
   // periodic state that slips at all therefore has s_x = 0: the longitudinal stop operator of s_y
   // (inplane.hpp) with the amplitude a_t, which also says where the contact sticks through the
   // period (a band of states here too: a narrower disc cannot let a wider one's slip stick). The
