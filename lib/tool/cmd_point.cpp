@@ -29,8 +29,25 @@ int write_record(const std::vector<std::string>& names, const std::vector<std::s
 }
 
 // mu with --kappa/--omega: the value, then the periodic state's fractions and sizes.
-int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, const Precision& precision, Format format) {
+int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, const Precision& precision, Format format,
+              bool certify) {
+  const auto certificate = [&](const std::string& printed) {
+    try {
+      return certify_rig(wave, p, *opt.rig, precision, printed, opt.profile, opt.solver);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--certify: ") + e.what());
+    }
+  };
+  // --certify's refusals (another wave or profile) before the solve
+  if (certify && (wave.kind != WaveKind::sine || opt.profile.kind != ProfileKind::flat)) certificate("");
   const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver, opt.profile);
+  std::optional<RigCertificate> cert;
+  if (certify) {
+    cert = certificate(r.mu);
+    if (!cert->mu.correctly_rounded)
+      throw SolverError("--certify: the printed " + r.mu + " is not the correct rounding of the rig's proven value (that is " +
+                        cert->mu.nearest.front() + "): a solver bug, please report it");
+  }
   char floquet[32];
   std::snprintf(floquet, sizeof floquet, "%.6g", r.floquet);
   const std::vector<std::pair<std::string, std::string>> fields{
@@ -43,10 +60,29 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
   std::vector<std::pair<std::string, std::string>> row;
   if (opt.profile.kind != ProfileKind::flat) row = {{"profile", opt.profile.name}, {"springs", std::to_string(r.springs)}};
   if (!r.resonance_note.empty()) pending_diagnostics += "vibrofric: warning: " + r.resonance_note + "\n";
+  // --certify: the proof's fields (the enclosure of mu and of the fractions, the state's box, stability)
+  std::vector<std::pair<std::string, std::string>> proof;
+  if (cert)
+    proof = {{"lower", cert->mu.lower_text},
+             {"upper", cert->mu.upper_text},
+             {"cite", cert->mu.cite},
+             {"correctly_rounded", "proven"},
+             {"periodic_state", "proven to exist, unique in its box (Krawczyk test of the one-period map)"},
+             {"section_phase", cert->section},
+             {"section_mode", cert->section_mode},
+             {"state_lag_box", cert->state_y},
+             {"state_lag_rate_box", cert->state_v},
+             {"stick_fraction_enclosure", cert->stick_fraction},
+             {"slip_fraction_enclosure", cert->slip_fraction},
+             {"backward_slip_fraction_enclosure", cert->backward_fraction},
+             {"flight_fraction_enclosure", cert->flight_fraction},
+             {"floquet_multiplier_enclosure", cert->multiplier},
+             {"stability", cert->stable ? "proven stable (both multipliers inside the unit circle)" : "not proven"}};
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';
     for (const auto& [name, value] : row) std::cout << name << ": " << value << '\n';
+    for (const auto& [name, value] : proof) std::cout << name << ": " << value << '\n';
     return 0;
   }
   std::vector<std::string> names{"wave", "beta", "gamma", "kappa", "omega", "zeta", "mu_over_mu0"};
@@ -57,6 +93,10 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
     values.push_back(value);
   }
   for (const auto& [name, value] : row) {
+    names.push_back(name);
+    values.push_back(value);
+  }
+  for (const auto& [name, value] : proof) {
     names.push_back(name);
     values.push_back(value);
   }
@@ -144,9 +184,9 @@ int run_point(const Flags& f, Quantity q) {
                      ": Psi (Eq. 12) exists for the flat punch only; in a curved contact the outer springs always jump, "
                      "so Eq. 13's separation does not exist (use mu)");
   const Format format = f.format.value_or(Format::text);
-  const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   const Precision precision = precision_of(f);
-  if (opt.rig) return print_rig(wave, p, opt, precision, format);
+  if (opt.rig) return print_rig(wave, p, opt, precision, format, f.certify);
+  const std::optional<Certifier> certifier = certifier_of(f, wave, opt);
   const std::string value = evaluate(wave, q, {p}, precision, opt).front();
   std::optional<Certificate> cert;
   if (certifier) cert = certified(*certifier, q, p, precision, value);

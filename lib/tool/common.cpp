@@ -44,7 +44,12 @@ BatchOptions batch_options(const Flags& f) {
     if (!f.kappa.given() || !f.omega.given())
       throw InputError(std::string("missing --") + (f.kappa.given() ? "omega" : "kappa") +
                        ": rig dynamics needs --kappa and --omega (--zeta is optional)");
-    if (f.certify) throw InputError("--certify: certified values exist for the quasi-static model only, not with --kappa/--omega");
+    if (f.certify && f.command != "mu")
+      throw InputError("--certify with --kappa/--omega: a proven rig state is given point by point, by mu");
+    if (f.certify && f.profile.kind != ProfileKind::flat)
+      throw InputError("--certify --profile " + detail::visible(f.profile_text.value_or("")) +
+                       " with --kappa/--omega: a proven rig state exists for the flat punch (a curved contact's row "
+                       "shares one body)");
     if (f.no_escalate) throw InputError("--no-escalate: rig dynamics is always computed in mpfr at two precisions");
     o.rig.emplace();
     o.rig->kappa = f.kappa;

@@ -2344,7 +2344,68 @@ def rig_tests():
         if not 0 < flight < 0.4:
             raise Fail("rig on a closed curved contact: flight_fraction %s" % out["flight_fraction"])
     case("rig: a curved contact that never opens (gamma 1.2) carries the row", rig_curved_closed_contact)
-    bad("rig: with --certify", tri + ["--kappa", "1", "--omega", "2", "--certify"], [], ["--certify"])
+    bad("rig --certify: a wave without a proven rig state", tri + ["--kappa", "1", "--omega", "2", "--certify"],
+        ["triangle"], ["--certify", "sine"])
+    sine_rig = ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "2", "--omega", "3", "--zeta", "0.1"]
+    bad("rig --certify: a curved profile", sine_rig + ["--profile", "sphere", "--certify"], ["sphere"],
+        ["--certify", "flat punch"])
+    bad("rig --certify: by sweep", ["sweep", "--wave", "sine", "--beta", "0.5:1:2", "--gamma", "0.3", "--kappa", "2",
+                                    "--omega", "3", "--certify"], [], ["--certify", "mu"])
+    bad("rig --certify: the exact undamped resonance", ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "2",
+                                                        "--kappa", "4", "--omega", "0.5", "--certify"],
+        ["4", "0.5"], ["--certify", "resonance"])
+    bad("rig --certify: gamma = 1", ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "1", "--kappa", "2",
+                                     "--omega", "3", "--certify"], ["1"], ["--certify", "gamma"])
+
+    def rig_certified():
+        # A proven rig state (flight, stick, slip; no flight, section in slip; backward slip): the
+        # printed value is the uncertified one, its 40-digit value (the same solver at twice the
+        # digits, an independent reference for the enclosure) lies in [lower, upper], each fraction
+        # enclosure holds the printed fraction, the multiplier's holds the printed multiplier
+        # (6 digits), and the text record has the proof's lines in order.
+        cases = (sine_rig[1:],
+                 ["--wave", "sine", "--beta", "0.5", "--gamma", "1.5", "--kappa", "2", "--omega", "3", "--zeta", "0.1"],
+                 ["--wave", "sine", "--beta", "1.61", "--gamma", "1.01", "--kappa", "0.39", "--omega", "7.49",
+                  "--zeta", "0.0429"])
+        for args in cases[:1] if os.environ.get("VIBROFRIC_SANITIZED") == "1" else cases:
+            plain = json.loads(rig_ok_run(["mu"] + args + ["--digits", "20", "--format", "json"]))
+            out = json.loads(rig_ok_run(["mu"] + args + ["--digits", "20", "--format", "json", "--certify"]))
+            where = "mu %s --certify" % " ".join(args)
+            for k, v in plain.items():
+                if out[k] != v:
+                    raise Fail("%s: %s = %r, without --certify %r" % (where, k, out[k], v))
+            ref = F(rig_ok_run(["mu"] + args + ["--digits", "40"]).splitlines()[0])
+            lo, hi = F(out["lower"]), F(out["upper"])
+            if not lo <= ref <= hi or hi - lo > F("1e-20") * ref:
+                raise Fail("%s: [%s, %s] and the 40-digit %s" % (where, out["lower"], out["upper"], ref))
+            if out["correctly_rounded"] != "proven" or not out["periodic_state"].startswith("proven to exist"):
+                raise Fail("%s: %r" % (where, out))
+            for name in ("stick_fraction", "slip_fraction", "backward_slip_fraction", "flight_fraction"):
+                a, b = out[name + "_enclosure"].strip("[]").split(", ")
+                x = F(out[name])  # 17 digits, rounded to nearest: within half a unit of its last digit
+                half = F("5e%d" % (Decimal(out[name]).adjusted() - 17)) if x != 0 else F("0")
+                if not F(a) - half <= x <= F(b) + half:
+                    raise Fail("%s: %s %s outside %s" % (where, name, out[name], out[name + "_enclosure"]))
+            a, b = out["floquet_multiplier_enclosure"].strip("[]").split(", ")
+            m = F(out["floquet_multiplier"])  # %.6g: within half a unit of its sixth digit
+            half = F("5e%d" % (Decimal(out["floquet_multiplier"]).adjusted() - 6))
+            if not F(a) - half <= m <= F(b) + half or out["stability"] != \
+                    "proven stable (both multipliers inside the unit circle)":
+                raise Fail("%s: multiplier %s, enclosure %s, %s" % (where, out["floquet_multiplier"],
+                                                                   out["floquet_multiplier_enclosure"], out["stability"]))
+            if out["section_mode"] not in ("slip", "backward", "flight") or not 0 < float(out["section_phase"]) < 1:
+                raise Fail("%s: section %r" % (where, out))
+            text = rig_ok_run(["mu"] + args + ["--digits", "20", "--certify"]).splitlines()
+            names = [line.split(": ")[0] for line in text[1:]]
+            if names[-15:] != ["lower", "upper", "cite", "correctly_rounded", "periodic_state", "section_phase",
+                               "section_mode", "state_lag_box", "state_lag_rate_box", "stick_fraction_enclosure",
+                               "slip_fraction_enclosure", "backward_slip_fraction_enclosure",
+                               "flight_fraction_enclosure", "floquet_multiplier_enclosure", "stability"]:
+                raise Fail("%s: text lines %r" % (where, names))
+        if F(json.loads(rig_ok_run(["mu"] + cases[-1] + ["--digits", "20", "--format", "json", "--certify"]))
+             ["backward_slip_fraction_enclosure"].strip("[]").split(", ")[0]) < F("0.04"):
+            raise Fail("the backward-slip case's enclosure")
+    case("rig --certify: a proven periodic state (Krawczyk), enclosures of mu and the fractions", rig_certified)
     bad("rig: no contact", ["mu", "--wave", "sine", "--beta", "1", "--gamma", "-1", "--kappa", "1", "--omega", "2"],
         ["-1"], ["gamma"])
 

@@ -9,6 +9,8 @@
 
 #include "vibrofric/api/decimal.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
+#include "vibrofric/core/certified/rig_enclosure.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/inplane/inplane_exact.hpp"
 
 namespace vibrofric {
@@ -315,6 +317,116 @@ InPlaneCertificate certify_inplane(const WaveSpec& normal, const Point& point, c
   c.slip_fraction = text_of(r.slip_fraction);
   c.backward_fraction = text_of(r.backward_fraction);
   c.flight_fraction = text_of(r.flight_fraction);
+  return c;
+}
+
+namespace {
+
+// The rig's approximate periodic state at about `bits` (RigSolver, both starts) at the middle of
+// its longest span of slip or flight: where the proof's section lies.
+certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec& rig, mpfr_prec_t bits, const Options& opt) {
+  PrecisionScope scope(static_cast<unsigned>(bits * 0.30103) + 10);
+  const auto w = make_waveform<mpfr>(wave);
+  const RigParameters<mpfr> params{rig.kappa.to<mpfr>(), rig.omega.to<mpfr>(), rig.zeta.to<mpfr>(), 0};
+  const RigSolver<mpfr> solver(*w, p.beta.to<mpfr>(), p.gamma.to<mpfr>(), params, opt);
+  const RigResult<mpfr> r = solver.solve();
+  const RigSpan<mpfr>* best = nullptr;
+  for (const auto& s : r.spans)
+    if (s.mode != RigMode::stick && (!best || s.end - s.begin > best->end - best->begin)) best = &s;
+  if (!best) throw SolverError("rig certificate: the periodic state has no span of slip or flight");
+  // a short binary phase (32 bits) near the middle: the section enters the intervals exactly
+  const mpfr mid = ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32);
+  const auto st = solver.at(*best, mid);
+  return {mid, best->mode, st[0], st[1]};
+}
+
+// "[lo, hi]" to 20 digits, rounded outward; an exact 0 (a mode that does not occur) as 0.
+std::string enclosure_text(const Interval& x) {
+  const auto end = [](const mpfr& v, mpfr_rnd_t r) { return v == 0 ? std::string("0") : directed(v, 20, r); };
+  return "[" + end(x.lower(), MPFR_RNDD) + ", " + end(x.upper(), MPFR_RNDU) + "]";
+}
+
+const char* mode_text(RigMode m) {
+  switch (m) {
+    case RigMode::forward_slip: return "slip";
+    case RigMode::backward_slip: return "backward";
+    case RigMode::flight: return "flight";
+    default: return "stick";
+  }
+}
+
+}  // namespace
+
+RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+                           const std::string& printed, const ProfileSpec& profile, const Options& solver) {
+  if (profile.kind != ProfileKind::flat)
+    throw InputError("profile " + detail::visible(profile.name) +
+                     " has no proven rig state: it exists for the flat punch (a curved contact's row shares one body)");
+  if (wave.kind != WaveKind::sine)
+    throw InputError("wave '" + detail::visible(wave.name) +
+                     "' has no proven rig state yet: it exists for the sine wave (drop --certify for its value)");
+  const auto exact_input = [](const InputValue& in, const char* name) {
+    if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
+    if (!in.decimal()) throw InputError(std::string(name) + " " + in.text() + " is computed: it has no exact value to certify");
+    return rational(*in.decimal(), name);
+  };
+  const certified::RigPoint q{exact_input(point.beta, "beta"), exact_input(point.gamma, "gamma"),
+                              exact_input(rig.kappa, "kappa"), exact_input(rig.omega, "omega"),
+                              exact_input(rig.zeta, "zeta")};
+  if (q.zeta == 0 && q.omega * q.omega * q.kappa == 1)
+    throw InputError("kappa = " + rig.kappa.text() + ", omega = " + rig.omega.text() +
+                     ", zeta = 0: the exact undamped resonance omega^2 kappa = 1 (the slip's motion grows secularly) has no "
+                     "proven rig state");
+  if (q.gamma == 1)
+    throw InputError("gamma = 1: n touches zero at one instant of the period; no proven rig state there");
+  const mpfr_prec_t first = first_bits(precision) + 24, cap = 4 * first;
+  std::string open;
+  RigCertificate c;
+  const auto attempt = [&](long bits) -> std::optional<certified::RigEnclosure> {
+    try {
+      const certified::RigSeed seed = rig_seed(wave, point, rig, bits, solver);
+      certified::RigEnclosure e = certified::enclose_rig_sine(q, seed, bits);
+      const Rational lo = rational_of(e.mu.lower()), hi = rational_of(e.mu.upper());
+      const std::vector<std::string> at_lo = rounded_texts(lo, precision), at_hi = rounded_texts(hi, precision);
+      if (at_lo.size() != 1 || at_lo != at_hi) {
+        open = "the enclosure of mu does not decide its rounding";
+        return std::nullopt;
+      }
+      c.mu.lower = lo;
+      c.mu.upper = hi;
+      c.mu.nearest = at_lo;
+      c.mu.bits = bits;
+      c.section = format_significant(seed.section, 12);
+      c.section_mode = mode_text(seed.mode);
+      return e;
+    } catch (const certified::Undecided& e) {
+      open = e.what();
+      return std::nullopt;
+    }
+  };
+  const std::optional<certified::RigEnclosure> e = escalate(first, attempt, doubling_up_to(cap));
+  if (!e)
+    throw SolverError("wave " + wave.name + ", beta = " + point.beta.text() + ", gamma = " + point.gamma.text() +
+                      ", kappa = " + rig.kappa.text() + ", omega = " + rig.omega.text() + ", zeta = " + rig.zeta.text() +
+                      ": no proven rig state up to " + std::to_string(cap) + " bits (" + open + ")");
+  const int digits = output_digits(precision) + 3;
+  c.mu.lower_text = directed(e->mu.lower(), digits, MPFR_RNDD);
+  c.mu.upper_text = directed(e->mu.upper(), digits, MPFR_RNDU);
+  for (int d = digits; d >= 1 && c.mu.cite.empty(); --d)
+    if (same_significant(e->mu.lower(), e->mu.upper(), d)) {
+      c.mu.cite = format_significant(e->mu.lower(), d);
+      c.mu.cite_digits = d;
+    }
+  for (const std::string& t : c.mu.nearest) c.mu.correctly_rounded = c.mu.correctly_rounded || t == printed;
+  c.stick_fraction = enclosure_text(e->stick_fraction);
+  c.slip_fraction = enclosure_text(e->slip_fraction);
+  c.backward_fraction = enclosure_text(e->backward_fraction);
+  c.flight_fraction = enclosure_text(e->flight_fraction);
+  c.multiplier = enclosure_text(e->multiplier);
+  c.stable = e->stable;
+  c.state_y = enclosure_text(e->y);
+  c.state_v = enclosure_text(e->v);
+  c.events = e->events;
   return c;
 }
 

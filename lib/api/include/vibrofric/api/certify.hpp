@@ -89,6 +89,22 @@ inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;
 // text); InputError naming it for a wave that is not piecewise linear.
 exact::Wave exact_wave(const WaveSpec& wave);
 
+// A proven periodic state of the rig (core/certified/rig_enclosure.hpp): the sine wave on the flat
+// punch, β, γ, κ, Ω, ζ as typed. μ̄/μ0 enclosed and its rounding decided as for Certifier; the
+// fractions and the largest Floquet multiplier enclosed ("[lo, hi]", rounded outward); the box
+// where the periodic state exists and is unique, at the section phase. InputError for another
+// wave or profile, a computed input, the exact resonance Ω²κ = 1 with ζ = 0, γ = 1; SolverError
+// where the proof is not found up to four times the first bits (naming what stayed open).
+struct RigCertificate {
+  Certificate mu;
+  std::string stick_fraction, slip_fraction, backward_fraction, flight_fraction, multiplier;
+  bool stable = false;  // both multipliers certainly inside the unit circle
+  std::string section, section_mode, state_y, state_v;  // φ0, its mode, the box of (Y, Y') there
+  std::size_t events = 0;  // stick-slip events a period
+};
+RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+                           const std::string& printed, const ProfileSpec& profile = {}, const Options& solver = {});
+
 // The waves with certified values, for messages: "triangle, sawtooth-right, …".
 extern const char* const certified_waves;
 

@@ -1,0 +1,67 @@
+// A proven periodic state of the rig (model.md, "Rig dynamics: mass and system stiffness") for the
+// sine wave on the flat punch, in interval arithmetic (core/certified/interval.hpp).
+//
+// The one-period map is taken at a section φ0 inside a span of slip or flight, where s is not free
+// (s = ±n or 0): a map of (Y, Y') alone, smooth near a state whose events are all transversal.
+// It is evaluated on a box of states from the closed-form flows (the rig solver's, motion.hpp):
+//  - each event (stick → slip where s = ±n, slip → stick where X_c' = 0) is one simple root of its
+//    guard g, enclosed by interval Newton on a cell where g' excludes 0 and g changes sign with
+//    certainty; before it, g < 0 on every cell of the span (mean-value enclosures, bisected);
+//  - at a span's start the guard vanishes to a known order (slip → stick: g = g' = 0; touch-down
+//    in stick: g = 0), and the first derivative that does not vanish is shown negative on a
+//    neighbourhood, so the span does not end at once;
+//  - contact loss and touch-down at the enclosed roots of γ + sin 2πφ; at touch-down the mode
+//    (stick if |X'| < n', else slip the way X' goes) is decided with certainty;
+//  - derivatives with respect to (Y, Y') are carried through by forward differentiation, event
+//    times by the implicit function theorem (dT = −g_x/g_φ), so the map's Jacobian is enclosed on
+//    the whole box.
+// Existence and uniqueness of the fixed point in the box: the Krawczyk test K(X) ⊂ int X. The
+// enclosures of μ̄/μ0, the fractions and the Jacobian (its multipliers: stability where both lie
+// certainly inside the unit circle) are then evaluated on K(X). A decision that stays open (a
+// guard grazing zero, an event at a contact boundary, a box that does not contract) is Undecided,
+// naming the phase: more bits or no certificate, never a guess.
+//
+// Not covered: waves other than the sine; the exact undamped resonance Ω²κ = 1 (secular motion),
+// γ = 1 (n touching zero at one instant).
+#pragma once
+#include <cstddef>
+
+#include "vibrofric/core/certified/enclosure.hpp"
+#include "vibrofric/core/certified/interval.hpp"
+#include "vibrofric/core/dynamics/dynamics.hpp"
+#include "vibrofric/core/exact.hpp"
+
+namespace vibrofric::certified {
+
+// β, γ and the rig's κ, Ω, ζ, exactly (the decimals as typed).
+struct RigPoint {
+  exact::Rational beta, gamma, kappa, omega, zeta;
+};
+
+// Where the proof starts: an approximate periodic state (the solver's, at about the enclosure's
+// precision) at the section φ0, which lies inside a span of forward or backward slip or flight.
+struct RigSeed {
+  mpfr section;
+  RigMode mode;
+  mpfr y, v;  // Y = X − βφ and Y' at φ0
+};
+
+struct RigEnclosure {
+  explicit RigEnclosure(mpfr_prec_t bits)
+      : mu(bits), retained_area(bits), normal_area(bits), stick_fraction(bits), slip_fraction(bits),
+        backward_fraction(bits), flight_fraction(bits), y(bits), v(bits), trace(bits), determinant(bits),
+        multiplier(bits) {}
+  Interval mu, retained_area, normal_area;  // μ̄/μ0 = ∫s/∫n
+  Interval stick_fraction, slip_fraction, backward_fraction, flight_fraction;  // backward: part of slip
+  Interval y, v;                 // the box holding the one periodic state at the section
+  Interval trace, determinant;   // of the section map's Jacobian, on that box
+  Interval multiplier;           // the largest modulus of its two multipliers
+  bool stable = false;           // both certainly inside the unit circle
+  std::size_t events = 0;        // stick–slip events a period
+};
+
+// InputError for the exact resonance and γ = 1; Undecided as above; SolverError where the seed's
+// section is not in slip or flight, or its mode does not repeat after a period.
+RigEnclosure enclose_rig_sine(const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits);
+
+}  // namespace vibrofric::certified
