@@ -38,8 +38,14 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
       throw InputError(std::string("--certify: ") + e.what());
     }
   };
-  // --certify's refusals (another wave or profile) before the solve
-  if (certify && (wave.kind != WaveKind::sine || opt.profile.kind != ProfileKind::flat)) certificate("");
+  // --certify's refusal of a wave without a proven rig state, before the solve
+  if (certify) {
+    try {
+      rig_wave_input(wave);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--certify: ") + e.what());
+    }
+  }
   const RigReport r = evaluate_rig(wave, p, *opt.rig, precision, opt.solver, opt.profile);
   std::optional<RigCertificate> cert;
   if (certify) {

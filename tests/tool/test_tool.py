@@ -2344,8 +2344,9 @@ def rig_tests():
         if not 0 < flight < 0.4:
             raise Fail("rig on a closed curved contact: flight_fraction %s" % out["flight_fraction"])
     case("rig: a curved contact that never opens (gamma 1.2) carries the row", rig_curved_closed_contact)
-    bad("rig --certify: a wave without a proven rig state", tri + ["--kappa", "1", "--omega", "2", "--certify"],
-        ["triangle"], ["--certify", "sine"])
+    bad("rig --certify: a wave without a proven rig state", ["mu", "--wave", "power:3", "--beta", "1", "--gamma", "0.5",
+                                                            "--kappa", "1", "--omega", "2", "--certify"],
+        ["power:3"], ["--certify", "sine", "Fourier", "piecewise-linear"])
     sine_rig = ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "0.3", "--kappa", "2", "--omega", "3", "--zeta", "0.1"]
     bad("rig --certify: a curved profile", sine_rig + ["--profile", "sphere", "--certify"], ["sphere"],
         ["--certify", "flat punch"])
@@ -2358,13 +2359,20 @@ def rig_tests():
                                      "--omega", "3", "--certify"], ["1"], ["--certify", "gamma"])
 
     def rig_certified():
-        # A proven rig state (flight, stick, slip; no flight, section in slip; backward slip): the
+        # A proven rig state (sine: flight, stick, slip; no flight, section in slip; backward slip;
+        # the triangle with flight, a two-harmonic series, the square wave slipping backward after
+        # a projection): the
         # printed value is the uncertified one, its 40-digit value (the same solver at twice the
         # digits, an independent reference for the enclosure) lies in [lower, upper], each fraction
         # enclosure holds the printed fraction, the multiplier's holds the printed multiplier
         # (6 digits), and the text record has the proof's lines in order.
+        series = write("rig-certified-series.txt", "1 0 1\n2 0.3 0\n")
         cases = (sine_rig[1:],
                  ["--wave", "sine", "--beta", "0.5", "--gamma", "1.5", "--kappa", "2", "--omega", "3", "--zeta", "0.1"],
+                 ["--wave", "triangle", "--beta", "2", "--gamma", "-0.4", "--kappa", "3", "--omega", "10", "--zeta", "0.1"],
+                 ["--wave", "fourier:" + series, "--beta", "0.7", "--gamma", "0.3", "--kappa", "1", "--omega", "3",
+                  "--zeta", "0.05"],
+                 ["--wave", "square", "--beta", "2", "--gamma", "1.05", "--kappa", "0.6", "--omega", "1", "--zeta", "0.05"],
                  ["--wave", "sine", "--beta", "1.61", "--gamma", "1.01", "--kappa", "0.39", "--omega", "7.49",
                   "--zeta", "0.0429"])
         for args in cases[:1] if os.environ.get("VIBROFRIC_SANITIZED") == "1" else cases:

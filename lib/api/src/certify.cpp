@@ -357,14 +357,31 @@ const char* mode_text(RigMode m) {
 
 }  // namespace
 
+certified::RigWaveInput rig_wave_input(const WaveSpec& wave) {
+  using Kind = certified::RigWaveInput::Kind;
+  if (wave.kind == WaveKind::sine) return {Kind::sine, {}, {}};
+  if (wave.kind == WaveKind::fourier) {
+    certified::RigWaveInput in{Kind::fourier, {}, {}};
+    for (const WaveSpec::Harmonic& h : wave.harmonics)
+      in.series.push_back({h.k, rational(h.a, wave.name + " coefficient a_" + std::to_string(h.k)),
+                           rational(h.b, wave.name + " coefficient b_" + std::to_string(h.k))});
+    return in;
+  }
+  try {
+    return {Kind::piecewise_linear, exact_wave(wave), {}};
+  } catch (const InputError&) {
+    throw InputError("wave '" + detail::visible(wave.name) +
+                     "' has no proven rig state: it exists for the sine, Fourier series and piecewise-linear waves "
+                     "(triangle, sawtooth-right, sawtooth-left, square, power:1, samples:FILE)");
+  }
+}
+
 RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
                            const std::string& printed, const ProfileSpec& profile, const Options& solver) {
   if (profile.kind != ProfileKind::flat)
     throw InputError("profile " + detail::visible(profile.name) +
                      " has no proven rig state: it exists for the flat punch (a curved contact's row shares one body)");
-  if (wave.kind != WaveKind::sine)
-    throw InputError("wave '" + detail::visible(wave.name) +
-                     "' has no proven rig state yet: it exists for the sine wave (drop --certify for its value)");
+  const certified::RigWaveInput input = rig_wave_input(wave);
   const auto exact_input = [](const InputValue& in, const char* name) {
     if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
     if (!in.decimal()) throw InputError(std::string(name) + " " + in.text() + " is computed: it has no exact value to certify");
@@ -373,11 +390,19 @@ RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSp
   const certified::RigPoint q{exact_input(point.beta, "beta"), exact_input(point.gamma, "gamma"),
                               exact_input(rig.kappa, "kappa"), exact_input(rig.omega, "omega"),
                               exact_input(rig.zeta, "zeta")};
-  if (q.zeta == 0 && q.omega * q.omega * q.kappa == 1)
-    throw InputError("kappa = " + rig.kappa.text() + ", omega = " + rig.omega.text() +
-                     ", zeta = 0: the exact undamped resonance omega^2 kappa = 1 (the slip's motion grows secularly) has no "
-                     "proven rig state");
-  if (q.gamma == 1)
+  if (q.zeta == 0) {
+    std::vector<unsigned> ks;
+    if (input.kind == certified::RigWaveInput::Kind::sine) ks.push_back(1);
+    for (const auto& h : input.series)
+      if (h.k > 0 && (h.a != 0 || h.b != 0)) ks.push_back(h.k);
+    for (unsigned k : ks)
+      if (q.omega * q.omega * q.kappa == Rational(k) * k)
+        throw InputError("kappa = " + rig.kappa.text() + ", omega = " + rig.omega.text() +
+                         ", zeta = 0: the exact undamped resonance omega^2 kappa = " + std::to_string(k * k) +
+                         " with the wave's harmonic " + std::to_string(k) +
+                         " (the slip's motion grows secularly) has no proven rig state");
+  }
+  if (input.kind == certified::RigWaveInput::Kind::sine && q.gamma == 1)
     throw InputError("gamma = 1: n touches zero at one instant of the period; no proven rig state there");
   const mpfr_prec_t first = first_bits(precision) + 24, cap = 4 * first;
   std::string open;
@@ -385,7 +410,7 @@ RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSp
   const auto attempt = [&](long bits) -> std::optional<certified::RigEnclosure> {
     try {
       const certified::RigSeed seed = rig_seed(wave, point, rig, bits, solver);
-      certified::RigEnclosure e = certified::enclose_rig_sine(q, seed, bits);
+      certified::RigEnclosure e = certified::enclose_rig(input, q, seed, bits);
       const Rational lo = rational_of(e.mu.lower()), hi = rational_of(e.mu.upper());
       const std::vector<std::string> at_lo = rounded_texts(lo, precision), at_hi = rounded_texts(hi, precision);
       if (at_lo.size() != 1 || at_lo != at_hi) {

@@ -2,6 +2,7 @@
 #include "vibrofric/core/certified/rig_enclosure.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <optional>
 #include <string>
@@ -60,18 +61,38 @@ struct Oscillator {
 
 enum class Guard { upper, lower, forward, backward };  // s − n, −s − n, −X_c', X_c'
 
+// The wave on its pieces: w = p0 + p1 (φ − origin) + Σ_k a_k cos ν_k φ + b_k sin ν_k φ, the
+// harmonics the same on every piece (the sine and the Fourier series: one piece, p0 = p1 = 0; the
+// piecewise-linear waves: no harmonics). origin is the piece's start, shifted by the period
+// where the walk meets it a period on.
+struct Harmonic {
+  unsigned k;
+  Interval nu, a, b;
+  Interval P, Q;  // the slip oscillator's response to ω²(a cos + b sin): P cos + Q sin
+};
+struct Piece {
+  Rational x;  // start in [0, 1) (piecewise linear; 0 otherwise)
+  Interval p0, p1;
+};
+struct Place {
+  std::size_t piece;
+  Interval origin;
+};
+
 struct Model {
   mpfr_prec_t bits;
-  Interval beta, gamma, two_pi, nu, omega2;
+  Interval beta, gamma, two_pi, omega2;
   Oscillator stick, slip;
-  Interval P1, Q1;  // the slip response to ω² sin νφ: P cos νφ + Q sin νφ
-  Rational gamma_q;
+  std::vector<Piece> pieces;
+  std::vector<Harmonic> harmonics;
+  bool smooth;  // one piece, harmonics only
 
-  Model(const RigPoint& p, mpfr_prec_t b)
+  Model(const RigWaveInput& wave, const RigPoint& p, mpfr_prec_t b)
       : bits(b), beta(Interval::rational(p.beta.backend().data(), b)),
-        gamma(Interval::rational(p.gamma.backend().data(), b)), two_pi(Interval::pi(b) * 2), nu(two_pi),
-        omega2(b), stick{Interval(b), Interval(b), Interval(b), Interval(b), Interval(b), 0},
-        slip{Interval(b), Interval(b), Interval(b), Interval(b), Interval(b), 0}, P1(b), Q1(b), gamma_q(p.gamma) {
+        gamma(Interval::rational(p.gamma.backend().data(), b)), two_pi(Interval::pi(b) * 2), omega2(b),
+        stick{Interval(b), Interval(b), Interval(b), Interval(b), Interval(b), 0},
+        slip{Interval(b), Interval(b), Interval(b), Interval(b), Interval(b), 0},
+        smooth(wave.kind != RigWaveInput::Kind::piecewise_linear) {
     const Interval kappa = Interval::rational(p.kappa.backend().data(), b);
     const Interval omega = Interval::rational(p.omega.backend().data(), b);
     const Interval zeta = Interval::rational(p.zeta.backend().data(), b);
@@ -94,40 +115,187 @@ struct Model {
     };
     slip = make(omega2 * kappa, p.kappa);
     stick = make(omega2 * (kappa + Interval::integer(1, b)), Rational(p.kappa + 1));
-    // y'' + cy' + Ky = ω² sin νφ: P = −e ω²/Δ, Q = d ω²/Δ, d = K − ν², e = cν, Δ = d² + e².
-    const Interval d = slip.K - nu * nu, e = c * nu, delta = d * d + e * e;
-    if (delta.sign() != Sign::positive)
-      throw Undecided("rig certificate: the slip oscillator's resonance with the drive is not excluded at " +
-                      std::to_string(b) + " bits");
-    P1 = -e * omega2 / delta;
-    Q1 = d * omega2 / delta;
+    if (smooth) {
+      pieces.push_back({Rational(0), Interval(b), Interval(b)});
+      if (wave.kind == RigWaveInput::Kind::sine) {
+        harmonics.push_back({1, two_pi, Interval(b), Interval::integer(1, b), Interval(b), Interval(b)});
+      } else {
+        series(wave.series);
+      }
+      for (Harmonic& h : harmonics) {
+        // y'' + cy' + Ky = ω²(a cos νφ + b sin νφ): P = ω²(d a − e b)/Δ, Q = ω²(e a + d b)/Δ,
+        // d = K − ν², e = cν, Δ = d² + e² (the exact resonance is refused before).
+        const Interval d = slip.K - h.nu * h.nu, e = c * h.nu, delta = d * d + e * e;
+        if (delta.sign() != Sign::positive)
+          throw Undecided("rig certificate: the slip oscillator's resonance with harmonic " + std::to_string(h.k) +
+                          " is not excluded at " + std::to_string(b) + " bits");
+        h.P = omega2 * (d * h.a - e * h.b) / delta;
+        h.Q = omega2 * (e * h.a + d * h.b) / delta;
+      }
+    } else {
+      const auto& v = wave.piecewise.vertices;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const Rational x1 = i + 1 < v.size() ? v[i + 1].x : Rational(1);
+        const Rational left1 = i + 1 < v.size() ? v[i + 1].left : v[0].left;
+        const Rational slope = (left1 - v[i].right) / (x1 - v[i].x);
+        pieces.push_back({v[i].x, Interval::rational(v[i].right.backend().data(), b),
+                          Interval::rational(slope.backend().data(), b)});
+      }
+    }
   }
 
-  // n, n', n'' at φ (in contact).
+  // n, n', n'' at φ on a placed piece (in contact: γ + w).
   template <class T>
-  std::array<T, 3> normal(const T& phi) const {
-    auto [s, c] = sin_cos(T(phi * nu));
-    return {s + gamma, c * nu, -(s * (nu * nu))};
+  std::array<T, 3> normal(const T& phi, const Place& at) const {
+    const Piece& pc = pieces[at.piece];
+    T n = (phi - at.origin) * pc.p1 + pc.p0 + gamma;
+    T dn = cst<T>(pc.p1), ddn = cst<T>(Interval(bits));
+    for (const Harmonic& h : harmonics) {
+      auto [s, c] = sin_cos(T(phi * h.nu));
+      n = n + (c * h.a + s * h.b);
+      dn = dn + (c * h.b - s * h.a) * h.nu;
+      ddn = ddn - (c * h.a + s * h.b) * (h.nu * h.nu);
+    }
+    return {std::move(n), std::move(dn), std::move(ddn)};
+  }
+  // ∫_a^b n dφ on a placed piece.
+  Interval normal_integral(const Interval& a, const Interval& b, const Place& at) const {
+    const Piece& pc = pieces[at.piece];
+    const Interval da = a - at.origin, db = b - at.origin;
+    Interval r = (gamma + pc.p0) * (b - a) + pc.p1 * (db * db - da * da) / Interval::integer(2, bits);
+    for (const Harmonic& h : harmonics) {
+      auto [sa, ca] = sin_cos(a * h.nu);
+      auto [sb, cb] = sin_cos(b * h.nu);
+      r += (h.a * (sb - sa) - h.b * (cb - ca)) / h.nu;
+    }
+    return r;
+  }
+
+ private:
+  // A Fourier series normalised as the solver's FourierSeries: the mean (k = 0) dropped, then
+  // divided by S = (max u − min u)/2, the extrema enclosed at the roots of u' (each simple).
+  void series(const std::vector<RationalHarmonic>& raw) {
+    const mpfr_prec_t b = bits;
+    std::vector<Harmonic> hs;
+    for (const RationalHarmonic& r : raw) {
+      if (r.k == 0) continue;
+      auto it = std::find_if(hs.begin(), hs.end(), [&](const Harmonic& h) { return h.k == r.k; });
+      if (it == hs.end()) {
+        hs.push_back({r.k, two_pi * Interval::integer(r.k, b), Interval(b), Interval(b), Interval(b), Interval(b)});
+        it = hs.end() - 1;
+      }
+      it->a += Interval::rational(r.a.backend().data(), b);
+      it->b += Interval::rational(r.b.backend().data(), b);
+    }
+    unsigned kmax = 0;
+    for (const Harmonic& h : hs) kmax = std::max(kmax, h.k);
+    if (kmax == 0) throw InputError("rig certificate: a Fourier series without a harmonic k >= 1");
+    // u and its first two derivatives at φ
+    auto u = [&](const Interval& phi, int order) {
+      Interval r(b);
+      for (const Harmonic& h : hs) {
+        auto [s, c] = sin_cos(phi * h.nu);
+        if (order == 0) r += c * h.a + s * h.b;
+        if (order == 1) r += (c * h.b - s * h.a) * h.nu;
+        if (order == 2) r -= (c * h.a + s * h.b) * (h.nu * h.nu);
+        if (order == 3) r -= (c * h.b - s * h.a) * (h.nu * h.nu * h.nu);
+      }
+      return r;
+    };
+    const auto extrema = periodic_roots([&](const Interval& x, int o) { return u(x, o + 1); }, kmax, b,
+                                        "an extremum of the Fourier series");
+    if (extrema.empty()) throw SolverError("rig certificate: the Fourier series has no extrema");
+    std::optional<Interval> hi, lo;
+    for (const Interval& x : extrema) {
+      const Interval v = u(x, 0);
+      hi = hi ? Interval::hull(std::max(hi->lower(), v.lower()), std::max(hi->upper(), v.upper()), b) : v;
+      lo = lo ? Interval::hull(std::min(lo->lower(), v.lower()), std::min(lo->upper(), v.upper()), b) : v;
+    }
+    const Interval scale = (*hi - *lo) / Interval::integer(2, b);
+    if (scale.sign() != Sign::positive) throw Undecided("rig certificate: the Fourier series' range is not resolved");
+    for (Harmonic& h : hs) {
+      h.a = h.a / scale;
+      h.b = h.b / scale;
+      if (!(h.a.sign() == Sign::zero && h.b.sign() == Sign::zero)) harmonics.push_back(h);
+    }
+  }
+
+ public:
+  // The simple roots in [0, 1) of a 1-periodic smooth f (f(x, 0), its derivative f(x, 1)) whose
+  // fastest harmonic is kmax: cells of 1/(32 kmax) (offset by 1/7 of a cell, so that no rational
+  // root with a small denominator falls on a cell end), each with no root (f certainly nonzero) or
+  // one (f' certainly nonzero, a certain sign change), bisected; Undecided where f touches zero.
+  template <class F>
+  static std::vector<Interval> periodic_roots(F f, unsigned kmax, mpfr_prec_t b, const std::string& what) {
+    std::vector<Interval> out;
+    long budget = 200000;
+    const mpfr cell = mpfr(1) / (32 * static_cast<long>(kmax));
+    const mpfr offset = cell / 7;
+    std::function<void(const mpfr&, const mpfr&, int)> scan = [&](const mpfr& lo, const mpfr& hi, int depth) {
+      const Interval X = Interval::hull(lo, hi, b);
+      const Interval fx = f(X, 0);
+      if (fx.sign() == Sign::positive || fx.sign() == Sign::negative) return;
+      const Interval d = f(X, 1);
+      if (d.sign() == Sign::positive || d.sign() == Sign::negative) {
+        const Sign a = f(point(lo, b), 0).sign(), z = f(point(hi, b), 0).sign();
+        if ((a == Sign::positive || a == Sign::negative) && (z == Sign::positive || z == Sign::negative)) {
+          if (a == z) return;  // monotone without a sign change
+          Interval R = X;
+          for (int k = 0; k < 400; ++k) {
+            const Interval M = point(R.midpoint(), b);
+            auto next = intersection(R, M - f(M, 0) / f(R, 1));
+            if (!next) throw SolverError("rig certificate: interval Newton lost " + what);
+            const bool shrank = next->width() < R.width() / 2;
+            R = *next;
+            if (!shrank) break;
+          }
+          out.push_back(R);
+          return;
+        }
+      }
+      if (depth >= 50 || --budget < 0)
+        throw Undecided("rig certificate: " + what + " near phase " + phase_text(lo) + " is not a simple root");
+      const mpfr mid = (lo + hi) / 2;
+      scan(lo, mid, depth + 1);
+      scan(mid, hi, depth + 1);
+    };
+    for (mpfr x = offset - cell; x < 1 + offset - cell; x += cell) scan(x, mpfr(x + cell), 0);
+    // the cells span [offset − cell, offset − cell + 1]: roots reduced into [0, 1), once each
+    std::vector<Interval> reduced;
+    for (Interval& r : out) {
+      if (r.upper() < 0) r = r + Interval::integer(1, b);
+      if (!(r.lower() >= 0 && r.upper() < 1)) {
+        if (r.lower() < 0 || r.upper() >= 1) throw Undecided("rig certificate: " + what + " at the period's start");
+      }
+      reduced.push_back(r);
+    }
+    std::sort(reduced.begin(), reduced.end(), [](const Interval& a, const Interval& c) { return a.upper() < c.lower(); });
+    return reduced;
   }
 };
 
-// The closed-form motion of one mode from (a, Y, Y', s) (motion.hpp's, on intervals).
+// The closed-form motion of one mode from (a, Y, Y', s) on a placed piece (motion.hpp's, on
+// intervals).
 template <class T>
 class Flow {
  public:
-  Flow(const Model& m, RigMode mode, T a, const T& y, const T& v, T s)
-      : m_(m), mode_(mode), a_(std::move(a)), y_(y), s_(std::move(s)),
+  Flow(const Model& m, RigMode mode, const Place& at, T a, const T& y, const T& v, T s)
+      : m_(m), mode_(mode), at_(at), a_(std::move(a)), y_(y), s_(std::move(s)),
         o_(mode == RigMode::stick ? &m.stick : &m.slip), q0_(cst<T>(Interval(m.bits))), q1_(m.bits),
         f0_(cst<T>(Interval(m.bits))), f1_(m.bits), y0h_(cst<T>(Interval(m.bits))), w_(cst<T>(Interval(m.bits))) {
     const Interval& K = o_->K;
     if (mode == RigMode::stick) {
       f0_ = (s_ - y) * (-m.omega2);
       f1_ = -(m.omega2 * m.beta);
-      q1_ = f1_ / K;
-      q0_ = (f0_ - o_->c * q1_) / K;
     } else if (mode != RigMode::flight) {
-      q0_ = cst<T>(m.omega2 * m.gamma * Interval::integer(sign(), m.bits) / K);
+      // F = σω² n: its line part σω²(γ + p0 + p1 (φ − origin)) about a
+      const Piece& pc = m.pieces[at.piece];
+      const Interval sw = m.omega2 * Interval::integer(sign(), m.bits);
+      f0_ = ((a_ - at.origin) * pc.p1 + pc.p0 + m.gamma) * sw;
+      f1_ = pc.p1 * sw;
     }
+    q1_ = f1_ / K;
+    q0_ = (f0_ - o_->c * q1_) / K;
     const auto p = particular(a_);
     y0h_ = y - p[0];
     w_ = (v - p[1]) + o_->h * y0h_;
@@ -149,12 +317,12 @@ class Flow {
   T s_at(const T& phi, const T& y) const {
     if (mode_ == RigMode::stick) return s_ + (y - y_) + m_.beta * (phi - a_);
     if (mode_ == RigMode::flight) return cst<T>(Interval(m_.bits));
-    return m_.normal(phi)[0] * Interval::integer(-sign(), m_.bits);
+    return m_.normal(phi, at_)[0] * Interval::integer(-sign(), m_.bits);
   }
   // g, g', g'' of a guard at φ (g'' only for the stick's guards).
   std::array<T, 3> guard(Guard g, const T& phi) const {
     const auto yv = at(phi);
-    const auto n = m_.normal(phi);
+    const auto n = m_.normal(phi, at_);
     const T xdot = yv[1] + m_.beta;
     switch (g) {
       case Guard::upper: return {s_at(phi, yv[0]) - n[0], xdot - n[1], yv[2] - n[2]};
@@ -168,9 +336,7 @@ class Flow {
     const Interval t = b - val(a_);
     if (mode_ == RigMode::flight) return Interval(m_.bits);
     if (mode_ != RigMode::stick) {
-      auto [sa, ca] = sin_cos(val(a_) * m_.nu);
-      auto [sb, cb] = sin_cos(b * m_.nu);
-      const Interval in = m_.gamma * t + (ca - cb) / m_.nu;
+      const Interval in = m_.normal_integral(val(a_), b, at_);
       return sign() < 0 ? in : -in;
     }
     // K∫Y = ∫F − [Y'] − c[Y]; s = Y + (s_a − Y_a) + β(φ − a).
@@ -184,17 +350,20 @@ class Flow {
   // −1 forward slip (F = −ω²n), +1 backward.
   long sign() const { return mode_ == RigMode::forward_slip ? -1 : 1; }
   std::array<T, 2> particular(const T& phi) const {
-    if (mode_ == RigMode::stick) return {q0_ + q1_ * (phi - a_), cst<T>(q1_)};
-    if (mode_ == RigMode::flight) return {cst<T>(Interval(m_.bits)), cst<T>(Interval(m_.bits))};
-    auto [s, c] = sin_cos(T(phi * m_.nu));
+    std::array<T, 2> r{q0_ + q1_ * (phi - a_), cst<T>(q1_)};
+    if (mode_ == RigMode::stick || mode_ == RigMode::flight) return r;
     const Interval sg = Interval::integer(sign(), m_.bits);
-    const Interval P = m_.P1 * sg, Q = m_.Q1 * sg;
-    return {q0_ + c * P + s * Q, (c * Q - s * P) * m_.nu};
+    for (const Harmonic& h : m_.harmonics) {
+      auto [s, c] = sin_cos(T(phi * h.nu));
+      r[0] = r[0] + (c * h.P + s * h.Q) * sg;
+      r[1] = r[1] + (c * h.Q - s * h.P) * (h.nu * sg);
+    }
+    return r;
   }
   T force(const T& phi, const T& t) const {
     if (mode_ == RigMode::stick) return f0_ + f1_ * t;
     if (mode_ == RigMode::flight) return cst<T>(Interval(m_.bits));
-    return m_.normal(phi)[0] * (m_.omega2 * Interval::integer(sign(), m_.bits));
+    return m_.normal(phi, at_)[0] * (m_.omega2 * Interval::integer(sign(), m_.bits));
   }
   // e^{−ht}C(t), e^{−ht}S(t): C(0) = 1, C'(0) = 0, S(0) = 0, S'(0) = 1 for y'' = m2 y.
   void basis(const T& t, T& EC, T& ES) const {
@@ -216,6 +385,7 @@ class Flow {
 
   const Model& m_;
   RigMode mode_;
+  Place at_;
   T a_, y_, s_;
   const Oscillator* o_;
   T q0_;
@@ -225,11 +395,16 @@ class Flow {
   T y0h_, w_;
 };
 
-// A fixed phase of the period where the contact changes: contact loss or touch-down.
+// A phase of the period where n changes its law: a vertex of a piecewise-linear wave (a kink or a
+// jump of n), or a contact boundary (n leaves 0 or reaches it inside a piece).
 struct Boundary {
   Interval phi;
-  bool touch;  // touch-down (else contact loss); the end of the period: neither
-  bool end;
+  Place after;         // the piece that follows
+  bool contact;        // in contact just after
+  bool touch;          // n = 0 just after, rising: the touch-down rule
+  int jump;            // sign of n⁺ − n⁻, exact
+  Interval n_after;    // n⁺
+  bool end = false;    // the period's end (no rule)
 };
 
 template <class T>
@@ -243,38 +418,92 @@ struct Walk {
 
 class Certifier {
  public:
-  Certifier(const RigPoint& p, const mpfr& section, mpfr_prec_t bits) : m_(p, bits), section_(section) {
+  Certifier(const RigWaveInput& wave, const RigPoint& p, const mpfr& section, mpfr_prec_t bits)
+      : m_(wave, p, bits), section_(section), gamma_(p.gamma), normal_area_(bits) {
     const mpfr_prec_t b = bits;
-    if (p.gamma >= 1) {
-      if (p.gamma == 1)
-        throw InputError("rig certificate: gamma = 1 (n touches zero at one instant of the period) is not certified");
-    } else {
-      // γ + sin νφ = 0: contact loss at 1/2 + asin γ/2π, touch-down at 1 − asin γ/2π (mod 1).
-      const Interval as = asin(m_.gamma) / m_.two_pi;
-      const Interval half = Interval::integer(1, b) / Interval::integer(2, b);
-      Interval loss = half + as, touch = Interval::integer(1, b) - as;
-      if (m_.gamma_q <= 0) touch = touch - Interval::integer(1, b);
-      const Interval s0 = point(section, b);
-      for (auto [phi, is_touch] : {std::pair{loss, false}, std::pair{touch, true}}) {
-        const Sign c = compare(phi, s0);
-        if (c == Sign::undecided || c == Sign::zero)
-          throw Undecided("rig certificate: the section phase " + phase_text(section) + " meets a contact boundary");
-        bounds_.push_back({c == Sign::positive ? phi : phi + Interval::integer(1, b), is_touch, false});
+    mpq_t q;
+    mpq_init(q);
+    mpfr_get_q(q, section.backend().data());
+    const Rational s0(q);
+    mpq_clear(q);
+    // The boundaries in [0, 1), each with the piece after it at its own start (origin).
+    std::vector<std::pair<Boundary, std::optional<Rational>>> period;
+    const auto place = [&](std::size_t i) { return Place{i, Interval::rational(m_.pieces[i].x.backend().data(), b)}; };
+    std::size_t first = 0;  // the piece holding the section
+    if (m_.smooth) {
+      // contact boundaries: the simple roots of γ + w (Undecided where n touches zero)
+      unsigned kmax = 1;
+      for (const Harmonic& h : m_.harmonics) kmax = std::max(kmax, h.k);
+      const Place whole{0, Interval(b)};
+      const auto roots = Model::periodic_roots(
+          [&](const Interval& x, int o) { return m_.normal(x, whole)[static_cast<std::size_t>(o)]; }, kmax, b,
+          "a contact boundary (gamma + w = 0)");
+      for (const Interval& r : roots) {
+        const bool rising = m_.normal(r, whole)[1].sign() == Sign::positive;
+        period.push_back({{r, whole, rising, rising, 0, Interval(b)}, std::nullopt});
       }
-      if (compare(bounds_[0].phi, bounds_[1].phi) == Sign::positive) std::swap(bounds_[0], bounds_[1]);
-      // ∫n over the contact, from touch-down to loss.
-      Interval from = touch, to = loss;
-      if (compare(to, from) != Sign::positive) to = to + Interval::integer(1, b);
-      auto [sf, cf] = sin_cos(from * m_.nu);
-      auto [st, ct] = sin_cos(to * m_.nu);
-      normal_area_ = m_.gamma * (to - from) + (cf - ct) / m_.nu;
+    } else {
+      const auto& v = wave.piecewise.vertices;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const Rational x1 = i + 1 < v.size() ? v[i + 1].x : Rational(1);
+        const Rational left1 = i + 1 < v.size() ? v[i + 1].left : v[0].left;
+        const Rational slope = (left1 - v[i].right) / (x1 - v[i].x);
+        const Rational g0 = p.gamma + v[i].right, gl = p.gamma + v[i].left;
+        const Rational n_plus = std::max(g0, Rational(0)), n_minus = std::max(gl, Rational(0));
+        const bool touch = g0 == 0 && slope > 0;
+        period.push_back({{Interval::rational(v[i].x.backend().data(), b), place(i), g0 > 0 || touch, touch,
+                           n_plus > n_minus ? 1 : n_plus < n_minus ? -1 : 0,
+                           Interval::rational(n_plus.backend().data(), b)},
+                          v[i].x});
+        if (v[i].x <= s0) first = i;
+        // a contact boundary inside the piece
+        if (slope != 0) {
+          const Rational r = v[i].x - g0 / slope;
+          if (r > v[i].x && r < x1)
+            period.push_back({{Interval::rational(r.backend().data(), b), place(i), slope > 0, slope > 0, 0, Interval(b)}, r});
+        }
+      }
     }
-    if (!normal_area_) normal_area_ = m_.gamma;  // γ > 1: ∫ sin over a period is 0
-    bounds_.push_back({point(mpfr(section + 1), b), false, true});
+    // ∫n over the period: the contact segments between consecutive boundaries.
+    std::sort(period.begin(), period.end(), [&](const auto& a, const auto& c) {
+      if (a.second && c.second) return *a.second < *c.second;
+      return compare(a.first.phi, c.first.phi) == Sign::negative;
+    });
+    if (period.empty()) {
+      normal_area_ = m_.gamma;  // a smooth wave in contact all period: ∫ of its harmonics is 0
+    } else {
+      for (std::size_t j = 0; j < period.size(); ++j) {
+        const Boundary& bj = period[j].first;
+        if (!bj.contact) continue;
+        const Interval to = j + 1 < period.size() ? period[j + 1].first.phi : period[0].first.phi + Interval::integer(1, b);
+        normal_area_ += m_.normal_integral(bj.phi, to, bj.after);
+      }
+    }
+    // In the window (φ0, φ0 + 1]: a boundary before the section a period on.
+    start_ = m_.smooth ? Place{0, Interval(b)} : place(first);
+    const Interval sp = point(section_, b);
+    for (auto& [bd, exact_phase] : period) {
+      const Sign c = exact_phase ? (*exact_phase > s0 ? Sign::positive : *exact_phase < s0 ? Sign::negative : Sign::zero)
+                                 : compare(bd.phi, sp);
+      if (c == Sign::undecided || c == Sign::zero)
+        throw Undecided("rig certificate: the section phase " + phase_text(section_) + " meets a boundary of n");
+      if (c == Sign::negative) {
+        bd.phi = bd.phi + Interval::integer(1, b);
+        bd.after.origin = bd.after.origin + Interval::integer(1, b);
+      }
+      bounds_.push_back(bd);
+    }
+    std::sort(bounds_.begin(), bounds_.end(), [](const Boundary& a, const Boundary& c) { return a.phi.upper() < c.phi.lower(); });
+    for (std::size_t j = 1; j < bounds_.size(); ++j)
+      if (compare(bounds_[j - 1].phi, bounds_[j].phi) != Sign::negative)
+        throw Undecided("rig certificate: two boundaries of n are not separated");
+    Boundary end{point(mpfr(section + 1), b), start_, false, false, 0, Interval(b), true};
+    end.after.origin = end.after.origin + Interval::integer(1, b);
+    bounds_.push_back(end);
   }
 
   const Model& model() const { return m_; }
-  const Interval& normal_area() const { return *normal_area_; }
+  const Interval& normal_area() const { return normal_area_; }
 
   // One period from the section, mode `mode`, the state (y, v) at φ0.
   template <class T>
@@ -283,24 +512,25 @@ class Certifier {
     evaluations_ = 0;
     Walk<T> w{mode, cst<T>(point(section_, b)), y, v, cst<T>(Interval(b)), {0, 0},
               Interval(b), Interval(b), Interval(b), Interval(b), Interval(b), 0};
+    Place here = start_;
+    const Interval n0 = m_.normal(point(section_, b), here)[0];
     if (mode == RigMode::flight) {
-      if (m_.normal(point(section_, b))[0].sign() != Sign::negative)
+      if (n0.sign() != Sign::negative)
         throw SolverError("rig certificate: the section " + phase_text(section_) + " is not certainly in flight");
     } else {
-      const Interval n = m_.normal(point(section_, b))[0];
-      if (n.sign() != Sign::positive)
+      if (n0.sign() != Sign::positive)
         throw SolverError("rig certificate: the section " + phase_text(section_) + " is not certainly in contact");
-      w.s = cst<T>(mode == RigMode::forward_slip ? n : -n);
+      w.s = cst<T>(mode == RigMode::forward_slip ? n0 : -n0);
     }
     for (const Boundary& target : bounds_) {
       for (std::size_t guard = 0;; ++guard) {
         if (guard > 100000) throw Undecided("rig certificate: more than 100000 events in one period");
         if (w.mode == RigMode::flight) {
-          advance(w, Flow<T>(m_, w.mode, w.a, w.y, w.v, w.s), cst<T>(target.phi));
+          advance(w, Flow<T>(m_, w.mode, here, w.a, w.y, w.v, w.s), cst<T>(target.phi));
           break;
         }
-        const Flow<T> flow(m_, w.mode, w.a, w.y, w.v, w.s);
-        const Flow<Interval> fv(m_, w.mode, val(w.a), val(w.y), val(w.v), val(w.s));
+        const Flow<T> flow(m_, w.mode, here, w.a, w.y, w.v, w.s);
+        const Flow<Interval> fv(m_, w.mode, here, val(w.a), val(w.y), val(w.v), val(w.s));
         const auto event = first_event(w, fv, target.phi);
         if (!event) {
           advance(w, flow, cst<T>(target.phi));
@@ -317,7 +547,7 @@ class Certifier {
         const RigMode before = w.mode;
         advance(w, flow, at);
         ++w.events;
-        const T n = m_.normal(w.a)[0];
+        const T n = m_.normal(w.a, here)[0];
         switch (g) {
           case Guard::upper:
             w.mode = RigMode::forward_slip;
@@ -334,25 +564,8 @@ class Certifier {
         }
       }
       if (target.end) break;
-      if (!target.touch) {
-        w.mode = RigMode::flight;
-        w.s = cst<T>(Interval(b));
-        continue;
-      }
-      // Touch-down: stick if |X'| < n', else slip the way X' goes.
-      const Interval xdot = val(w.v) + m_.beta, dn = m_.normal(target.phi)[1];
-      w.s = cst<T>(Interval(b));
-      if ((dn - xdot).sign() == Sign::positive && (dn + xdot).sign() == Sign::positive) {
-        w.mode = RigMode::stick;
-        w.order = {1, 1};
-      } else if ((xdot - dn).sign() == Sign::positive) {
-        w.mode = RigMode::forward_slip;
-      } else if ((xdot + dn).sign() == Sign::negative) {
-        w.mode = RigMode::backward_slip;
-      } else {
-        throw Undecided("rig certificate: the mode at touch-down (phase " + phase_text(target.phi.midpoint()) +
-                        ") is undecided: |X'| and n' are not separated");
-      }
+      here = target.after;
+      enter(w, target);
     }
     if (w.mode != mode)
       throw SolverError("rig certificate: the mode at the section " + phase_text(section_) + " does not repeat after a period");
@@ -360,6 +573,76 @@ class Certifier {
   }
 
  private:
+  // The sweeping process's rules at a boundary of n (model.md; the rig solver's enter()), each
+  // decision certain or Undecided; the orders to which the stick's guards vanish just after.
+  template <class T>
+  void enter(Walk<T>& w, const Boundary& at) const {
+    const mpfr_prec_t b = m_.bits;
+    const auto undecided = [&](const char* what) {
+      return Undecided(std::string("rig certificate: ") + what + " at phase " + phase_text(at.phi.midpoint()) + " is undecided");
+    };
+    if (!at.contact) {
+      w.mode = RigMode::flight;
+      w.s = cst<T>(Interval(b));
+      return;
+    }
+    const Interval xdot = val(w.v) + m_.beta, dn = m_.normal(at.phi, at.after)[1];
+    const auto positive = [](const Interval& x) { return x.sign() == Sign::positive; };
+    const auto negative = [](const Interval& x) { return x.sign() == Sign::negative; };
+    if (at.touch) {
+      // touch-down: the contact forms stress-free; stick if |X'| < n', else slip the way X' goes
+      w.s = cst<T>(Interval(b));
+      if (positive(dn - xdot) && positive(dn + xdot)) {
+        w.mode = RigMode::stick;
+        w.order = {1, 1};
+      } else if (positive(xdot - dn)) {
+        w.mode = RigMode::forward_slip;
+      } else if (negative(xdot + dn)) {
+        w.mode = RigMode::backward_slip;
+      } else {
+        throw undecided("the mode at touch-down (|X'| against n')");
+      }
+      return;
+    }
+    // after a projection onto ±n⁺ (or a kink under slip): slip on where X' − n' keeps its sign
+    const auto on_boundary = [&](bool upper) {
+      w.s = cst<T>(upper ? at.n_after : Interval(-at.n_after));
+      const Interval rel = upper ? Interval(xdot - dn) : Interval(xdot + dn);
+      if (upper ? positive(rel) : negative(rel)) {
+        w.mode = upper ? RigMode::forward_slip : RigMode::backward_slip;
+      } else if (upper ? negative(rel) : positive(rel)) {
+        w.mode = RigMode::stick;
+        w.order = upper ? std::array<int, 2>{1, 0} : std::array<int, 2>{0, 1};
+      } else {
+        throw undecided("slip or stick after a kink or a jump of n");
+      }
+    };
+    switch (w.mode) {
+      case RigMode::flight:  // an upward jump out of the air: the contact re-forms stress-free and sticks
+        w.mode = RigMode::stick;
+        w.s = cst<T>(Interval(b));
+        return;
+      case RigMode::forward_slip:
+      case RigMode::backward_slip:
+        // s = ±n⁻ exactly: the jump's sign decides
+        if (at.jump > 0) {
+          w.mode = RigMode::stick;  // an upward jump ends slip; |s| < n⁺
+          return;
+        }
+        on_boundary(w.mode == RigMode::forward_slip);
+        return;
+      default:
+        if (at.jump == 0) return;  // |s| < n on the span up to here, n continuous: stick goes on
+        if (positive(val(w.s) - at.n_after)) {
+          on_boundary(true);
+        } else if (negative(val(w.s) + at.n_after)) {
+          on_boundary(false);
+        } else if (!(negative(val(w.s) - at.n_after) && positive(val(w.s) + at.n_after))) {
+          throw undecided("|s| against n after a jump of n");
+        }
+    }
+  }
+
   template <class T>
   void advance(Walk<T>& w, const Flow<T>& flow, const T& to) const {
     const auto yv = flow.at(to);
@@ -421,7 +704,9 @@ class Certifier {
     if (!clear)
       throw Undecided("rig certificate: the guard at the start of the span near " + phase_text(a_hi) + " is undecided");
     // Cells no wider than 1/16 of the fastest oscillation.
-    const mpfr rate = mpfr((m_.stick.root.upper() + m_.stick.h.upper() + m_.nu.upper()));
+    mpfr fastest = m_.two_pi.upper();
+    for (const Harmonic& h : m_.harmonics) fastest = std::max(fastest, h.nu.upper());
+    const mpfr rate = mpfr(m_.stick.root.upper() + m_.stick.h.upper() + fastest);
     const mpfr cell = std::min(mpfr(len / 8), mpfr(m_.two_pi.upper() / rate / 16));
     mpfr x = a_hi + delta;
     while (x < t_hi) {
@@ -472,8 +757,10 @@ class Certifier {
 
   Model m_;
   mpfr section_;
+  Rational gamma_;
+  Interval normal_area_;
+  Place start_{0, Interval(m_.bits)};
   std::vector<Boundary> bounds_;
-  std::optional<Interval> normal_area_;
   mutable long evaluations_ = 0;  // of scan, a period: bisection near a grazing guard is bounded
 };
 
@@ -482,14 +769,25 @@ using Mat = std::array<std::array<Interval, 2>, 2>;
 
 }  // namespace
 
-RigEnclosure enclose_rig_sine(const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits) {
+RigEnclosure enclose_rig(const RigWaveInput& wave, const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits) {
   // Phases and radii as mpfr at the enclosure's precision (they enter the intervals exactly).
   PrecisionScope scope(static_cast<unsigned>(bits * 0.30103) + 10);
-  if (p.zeta == 0 && p.omega * p.omega * p.kappa == 1)
-    throw InputError("rig certificate: the exact undamped resonance omega^2 kappa = 1 (the slip's motion grows "
-                     "secularly) is not certified");
+  if (p.zeta == 0) {
+    // Ω²κ = k² for a harmonic k of the wave: the slip's motion grows secularly (no periodic closed form here)
+    std::vector<unsigned> ks;
+    if (wave.kind == RigWaveInput::Kind::sine) ks.push_back(1);
+    for (const RationalHarmonic& h : wave.series)
+      if (h.k > 0 && (h.a != 0 || h.b != 0)) ks.push_back(h.k);
+    for (unsigned k : ks)
+      if (p.omega * p.omega * p.kappa == Rational(k) * k)
+        throw InputError("rig certificate: the exact undamped resonance omega^2 kappa = " + std::to_string(k * k) +
+                         " with the wave's harmonic " + std::to_string(k) + " (the slip's motion grows secularly) is not certified");
+  }
+  if (wave.kind == RigWaveInput::Kind::sine && p.gamma == 1)
+    throw InputError("rig certificate: gamma = 1 (n touches zero at one instant of the period) is not certified");
+  if (wave.kind == RigWaveInput::Kind::piecewise_linear) exact::check(wave.piecewise);
   if (seed.mode == RigMode::stick) throw SolverError("rig certificate: the section must lie in slip or flight");
-  const Certifier cert(p, seed.section, bits);
+  const Certifier cert(wave, p, seed.section, bits);
   const Model& m = cert.model();
   const mpfr_prec_t b = bits;
   const Interval yh = point(seed.y, b), vh = point(seed.v, b);
@@ -586,6 +884,10 @@ RigEnclosure enclose_rig_sine(const RigPoint& p, const RigSeed& seed, mpfr_prec_
   }
   out.stable = (one - out.multiplier).sign() == Sign::positive;
   return out;
+}
+
+RigEnclosure enclose_rig_sine(const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits) {
+  return enclose_rig(RigWaveInput{RigWaveInput::Kind::sine, {}, {}}, p, seed, bits);
 }
 
 }  // namespace vibrofric::certified

@@ -16,6 +16,7 @@
 #include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
+#include "vibrofric/core/certified/rig_enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
 
 namespace vibrofric {
@@ -89,11 +90,12 @@ inline constexpr mpfr_prec_t max_certify_bits = 1 << 16;
 // text); InputError naming it for a wave that is not piecewise linear.
 exact::Wave exact_wave(const WaveSpec& wave);
 
-// A proven periodic state of the rig (core/certified/rig_enclosure.hpp): the sine wave on the flat
-// punch, β, γ, κ, Ω, ζ as typed. μ̄/μ0 enclosed and its rounding decided as for Certifier; the
+// A proven periodic state of the rig (core/certified/rig_enclosure.hpp): the sine, Fourier series and
+// piecewise-linear waves on the flat punch, β, γ, κ, Ω, ζ as typed. μ̄/μ0 enclosed and its rounding decided as for Certifier; the
 // fractions and the largest Floquet multiplier enclosed ("[lo, hi]", rounded outward); the box
 // where the periodic state exists and is unique, at the section phase. InputError for another
-// wave or profile, a computed input, the exact resonance Ω²κ = 1 with ζ = 0, γ = 1; SolverError
+// wave or profile, a computed input, the exact resonance Ω²κ = k² with ζ = 0 and a harmonic k of
+// the wave, the sine at γ = 1; SolverError
 // where the proof is not found up to four times the first bits (naming what stayed open).
 struct RigCertificate {
   Certificate mu;
@@ -102,6 +104,8 @@ struct RigCertificate {
   std::string section, section_mode, state_y, state_v;  // φ0, its mode, the box of (Y, Y') there
   std::size_t events = 0;  // stick-slip events a period
 };
+// The wave of a proven rig state, exactly: InputError for power:P (P ≠ 1) and other waves without one.
+certified::RigWaveInput rig_wave_input(const WaveSpec& wave);
 RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
                            const std::string& printed, const ProfileSpec& profile = {}, const Options& solver = {});
 

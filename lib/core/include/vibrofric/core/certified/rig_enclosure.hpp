@@ -1,5 +1,6 @@
-// A proven periodic state of the rig (model.md, "Rig dynamics: mass and system stiffness") for the
-// sine wave on the flat punch, in interval arithmetic (core/certified/interval.hpp).
+// A proven periodic state of the rig (model.md, "Rig dynamics: mass and system stiffness") on the
+// flat punch, for the sine, Fourier series and piecewise-linear waves, in interval arithmetic
+// (core/certified/interval.hpp).
 //
 // The one-period map is taken at a section φ0 inside a span of slip or flight, where s is not free
 // (s = ±n or 0): a map of (Y, Y') alone, smooth near a state whose events are all transversal.
@@ -10,8 +11,11 @@
 //  - at a span's start the guard vanishes to a known order (slip → stick: g = g' = 0; touch-down
 //    in stick: g = 0), and the first derivative that does not vanish is shown negative on a
 //    neighbourhood, so the span does not end at once;
-//  - contact loss and touch-down at the enclosed roots of γ + sin 2πφ; at touch-down the mode
-//    (stick if |X'| < n', else slip the way X' goes) is decided with certainty;
+//  - contact loss and touch-down at the roots of γ + w (exact for a piecewise-linear wave, simple
+//    roots enclosed for the smooth ones); at a vertex of a piecewise-linear wave the rules of
+//    model.md (an upward jump ends slip, a downward jump below |s| projects s, a kink ends slip
+//    where X' − n' changes sign; touch-down sticks if |X'| < n', else slips the way X' goes), each
+//    decided with certainty;
 //  - derivatives with respect to (Y, Y') are carried through by forward differentiation, event
 //    times by the implicit function theorem (dT = −g_x/g_φ), so the map's Jacobian is enclosed on
 //    the whole box.
@@ -21,10 +25,11 @@
 // guard grazing zero, an event at a contact boundary, a box that does not contract) is Undecided,
 // naming the phase: more bits or no certificate, never a guess.
 //
-// Not covered: waves other than the sine; the exact undamped resonance Ω²κ = 1 (secular motion),
-// γ = 1 (n touching zero at one instant).
+// Not covered: power:p (no closed-form motion); the exact undamped resonance Ω²κ = k² with a
+// harmonic k of the wave (secular motion); n touching zero without crossing (the sine at γ = 1).
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/certified/interval.hpp"
@@ -60,8 +65,20 @@ struct RigEnclosure {
   std::size_t events = 0;        // stick–slip events a period
 };
 
-// InputError for the exact resonance and γ = 1; Undecided as above; SolverError where the seed's
-// section is not in slip or flight, or its mode does not repeat after a period.
+// The wave, exactly: the sine; a Fourier series as typed (normalised here as the solver's
+// FourierSeries: mean dropped, divided by (max − min)/2, the extrema enclosed as simple roots of
+// u'); a piecewise-linear wave's vertices (exact.hpp: the triangle, sawtooths, square, samples).
+struct RigWaveInput {
+  enum class Kind { sine, fourier, piecewise_linear } kind;
+  exact::Wave piecewise;
+  std::vector<RationalHarmonic> series;
+};
+
+// InputError for the exact undamped resonance Ω²κ = k² with a harmonic k of the wave and the
+// sine at γ = 1; Undecided as above (also where n touches zero: a contact boundary that is not a
+// simple root); SolverError where the seed's section is not in slip or flight, or its mode does
+// not repeat after a period.
+RigEnclosure enclose_rig(const RigWaveInput& wave, const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits);
 RigEnclosure enclose_rig_sine(const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits);
 
 }  // namespace vibrofric::certified
