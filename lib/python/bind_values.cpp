@@ -1,6 +1,7 @@
 // Binds vibrofric.mu and vibrofric.psi (broadcasting over beta and gamma, broadcast.hpp) and
 // vibrofric.rig (rig dynamics at one point).
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -74,6 +75,9 @@ rounding (a value that is not raises vibrofric.SolverError). For the piecewise-l
 lo == hi, the exact rational, and float(lo) is the correctly rounded double; for the others
 lo < hi are the ends of an interval computation. Curved profiles raise ValueError. With
 longitudinal= (piecewise-linear waves, or wave='constant'), the in-plane drive's exact value.
+With kappa and omega (one rig; the sine, Fourier series and piecewise-linear waves), the rig's
+periodic state proven to exist (Krawczyk) and mu enclosed on it (vibrofric.rig(certify=True)
+gives the whole certificate).
 )doc";
 
 }  // namespace
@@ -111,12 +115,14 @@ Flat punch only (Psi does not exist for curved profiles).
           if (kappa.is_none() || omega.is_none())
             throw InputError(std::string("missing ") + (kappa.is_none() ? "kappa" : "omega") +
                              ": rig dynamics needs kappa and omega (zeta is optional)");
-          if (certify) throw InputError("certify: certified values exist for the quasi-static model only, not with kappa/omega");
           if (!escalate) throw InputError("escalate=False: rig dynamics is always computed in mpfr at two precisions");
           const auto array = [](const py::object& x) {
             return !x.is_none() && !py::isinstance<py::str>(x) && py::module_::import("numpy").attr("ndim")(x).cast<int>() > 0;
           };
           if (array(kappa) || array(omega) || array(zeta)) {
+            if (certify)
+              throw InputError("certify=True with an array of kappa, omega or zeta: a proven rig state is given for one rig "
+                               "at a time (beta and gamma may be arrays)");
             e.rig_arrays = std::array<py::object, 3>{kappa, omega, zeta};
           } else {
             e.rig.emplace();
@@ -172,7 +178,7 @@ Flat punch only (Psi does not exist for curved profiles).
       "rig",
       [](const py::object& wave, const py::object& beta, const py::object& gamma, const py::object& kappa,
          const py::object& omega, const py::object& zeta, const py::object& digits, const py::object& type, bool strings,
-         const py::object& profile) {
+         const py::object& profile, bool certify) {
         const WaveSpec w = to_wave(wave);
         const ProfileSpec shape = to_profile(profile);
         const Precision precision = to_precision(optional_int(digits, "digits"), type);
@@ -181,10 +187,31 @@ Flat punch only (Psi does not exist for curved profiles).
         spec.omega = scalar_value(omega, "omega");
         if (!zeta.is_none()) spec.zeta = scalar_value(zeta, "zeta");
         const Point point{scalar_value(beta, "beta"), scalar_value(gamma, "gamma")};
+        if (certify) {
+          if (shape.kind != ProfileKind::flat)
+            throw InputError("certify=True with profile = " + py_repr(profile) +
+                             ": a proven rig state exists for the flat punch (a curved contact's row shares one body)");
+          try {
+            rig_wave_input(w);
+          } catch (const InputError& e) {
+            throw InputError(std::string("certify=True: ") + e.what());
+          }
+        }
         RigReport r;
+        std::optional<RigCertificate> cert;
         {
           py::gil_scoped_release release;
           r = evaluate_rig(w, point, spec, precision, {}, shape);
+          if (certify) {
+            try {
+              cert = certify_rig(w, point, spec, precision, r.mu, shape);
+            } catch (const InputError& e) {
+              throw InputError(std::string("certify=True: ") + e.what());
+            }
+            if (!cert->mu.correctly_rounded)
+              throw SolverError("certify=True: the value " + r.mu + " is not the correct rounding of the rig's proven value (that is " +
+                                cert->mu.nearest.front() + "): a solver bug, please report it");
+          }
         }
         const Converter convert(result_form(precision, strings), precision);
         char floquet[32];
@@ -198,12 +225,33 @@ Flat punch only (Psi does not exist for curved profiles).
                  {"quasi_static_mu_over_mu0", r.quasi_static_mu}})
           d[py::str(name)] = convert(value);
         if (r.springs) d["springs"] = py::int_(r.springs);
+        if (cert) {
+          const py::object fraction = py::module_::import("fractions").attr("Fraction");
+          const py::object integer = py::module_::import("builtins").attr("int");
+          auto to_fraction = [&](const exact::Rational& x) {
+            return fraction(integer(numerator(x).str()), integer(denominator(x).str()));
+          };
+          d["lower"] = to_fraction(cert->mu.lower);
+          d["upper"] = to_fraction(cert->mu.upper);
+          d["cite"] = py::str(cert->mu.cite);
+          d["correctly_rounded"] = py::str("proven");
+          d["periodic_state"] = py::str("proven to exist, unique in its box (Krawczyk test of the one-period map)");
+          for (const auto& [name, value] : std::vector<std::pair<const char*, std::string>>{
+                   {"section_phase", cert->section}, {"section_mode", cert->section_mode},
+                   {"state_lag_box", cert->state_y}, {"state_lag_rate_box", cert->state_v},
+                   {"stick_fraction_enclosure", cert->stick_fraction}, {"slip_fraction_enclosure", cert->slip_fraction},
+                   {"backward_slip_fraction_enclosure", cert->backward_fraction},
+                   {"flight_fraction_enclosure", cert->flight_fraction},
+                   {"floquet_multiplier_enclosure", cert->multiplier}})
+            d[py::str(name)] = py::str(value);
+          d["stability"] = py::str(cert->stable ? "proven stable (both multipliers inside the unit circle)" : "not proven");
+        }
         if (!r.resonance_note.empty() && PyErr_WarnEx(PyExc_UserWarning, r.resonance_note.c_str(), 1) != 0)
           throw py::error_already_set();
         return d;
       },
       "wave"_a, "beta"_a, "gamma"_a, py::kw_only(), "kappa"_a, "omega"_a, "zeta"_a = py::none(), "digits"_a = py::none(),
-      "type"_a = py::none(), "strings"_a = false, "profile"_a = "flat", R"doc(rig(wave, beta, gamma, *, kappa, omega, zeta=None, digits=None, type=None, strings=False, profile='flat') -> dict
+      "type"_a = py::none(), "strings"_a = false, "profile"_a = "flat", "certify"_a = false, R"doc(rig(wave, beta, gamma, *, kappa, omega, zeta=None, digits=None, type=None, strings=False, profile='flat', certify=False) -> dict
 
 Rig dynamics at one point (the tool's mu --kappa --omega --zeta; model.md, "Rig dynamics"): a body
 of mass m on a system spring k_s (damper c), kappa = k_s/k_x, omega = sqrt(k_x/m)/(2 pi f),
@@ -222,6 +270,13 @@ profile: a curved contact ('sphere', 'cone', 'power:N', 'wearflat:L', 'profile:F
 "On a curved contact"): the body carries the whole MDR row, kappa and omega of k_x,max (every
 spring touching); any gamma (the centre in contact all period too). The row is solved at n and 2n
 springs: mu_over_mu0 and the fractions carry the digits the two agree on, and 'springs' is 2n.
+
+certify=True (flat punch; the sine, Fourier series and piecewise-linear waves): the periodic state
+proven by interval arithmetic (the tool's mu --kappa --omega --certify): also lower and upper
+(fractions.Fraction, an enclosure of mu that proves mu_over_mu0 its correct rounding), cite,
+correctly_rounded, periodic_state, section_phase, section_mode, state_lag_box,
+state_lag_rate_box, the fractions' and the largest Floquet multiplier's enclosures ('[lo, hi]')
+and stability. vibrofric.SolverError where no proof is found (naming the decision left open).
 )doc");
 }
 

@@ -226,6 +226,7 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
   const std::optional<InPlaneSpec>& inplane = options.inplane;
   try {
     if (inplane) check_certifiable(wave, *inplane);
+    else if (options.rig) rig_wave_input(wave);  // a proven rig state, point by point
     else certifier.emplace(wave, options.profile);
   } catch (const InputError& err) {
     throw InputError(std::string("certify=True: ") + err.what());
@@ -243,14 +244,16 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
       if (value.error) rethrow_at_index(dims, i, value.error);
       Certificate c;
       try {
-        c = inplane ? certify_inplane(wave, point(i), *inplane, precision, value.text).mu
-                    : (*certifier)(e.quantity, point(i), precision, value.text);
+        c = inplane         ? certify_inplane(wave, point(i), *inplane, precision, value.text).mu
+            : options.rig ? certify_rig(wave, point(i), *options.rig, precision, value.text, options.profile).mu
+                            : (*certifier)(e.quantity, point(i), precision, value.text);
       } catch (const InputError& err) {
         rethrow_at_index(dims, i, std::make_exception_ptr(InputError(std::string("certify=True: ") + err.what())));
       }
       if (!c.correctly_rounded)
         rethrow_at_index(dims, i, std::make_exception_ptr(SolverError(
-            "certify=True: the value " + value.text + " is not the correct rounding of the exact value " + c.exact +
+            "certify=True: the value " + value.text + " is not the correct rounding of the exact value " +
+            (c.exact.empty() ? "[" + c.lower_text + ", " + c.upper_text + "]" : c.exact) +
             " (that is " + c.nearest.front() + "): a solver bug, please report it")));
       values[i] = {c.lower, c.upper};
     });

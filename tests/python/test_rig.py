@@ -45,7 +45,7 @@ def test_arrays_broadcast_like_mu():
     (dict(kappa=1, omega=1, zeta=-0.5), ("zeta", ">= 0")),
     (dict(kappa=1, omega=1, zeta=float("nan")), ("zeta",)),
 
-    (dict(kappa=1, omega=1, certify=True), ("certify",)),
+    (dict(kappa=1, omega=1, certify=True), ("certify", "resonance")),  # Ω²κ = 1, ζ = 0: no proven state
 ])
 def test_refusals_are_one_line(kw, words):
     with pytest.raises(ValueError) as info:
@@ -169,3 +169,42 @@ def test_a_ball_on_the_rig():
     # value (measured 2e-7 apart)
     closed = vibrofric.rig("sine", 1.0, 1.5, kappa=1e6, omega=100, zeta=0.5, profile="sphere")
     assert abs(closed["mu_over_mu0"] - closed["quasi_static_mu_over_mu0"]) < 1e-4
+
+
+def test_certified_rig_state():
+    # mu(certify=True) with a rig: (lo, hi) holding the rig's value at 40 digits (the same solver at
+    # twice the digits), the double value inside; arrays of beta point by point; rig(certify=True)
+    # the whole certificate, its enclosures holding the report's fractions.
+    from fractions import Fraction
+    lo, hi = vibrofric.mu("sine", 0.5, 0.3, kappa=2, omega=3, zeta=0.1, certify=True, digits=20)
+    ref = Fraction(vibrofric.mu("sine", 0.5, 0.3, kappa=2, omega=3, zeta=0.1, digits=40, strings=True))
+    assert lo <= ref <= hi and hi - lo < Fraction(1, 10**25)
+    # in double: the enclosure proves the double's rounding, so both its ends round to that double
+    dlo, dhi = vibrofric.mu("sine", 0.5, 0.3, kappa=2, omega=3, zeta=0.1, certify=True)
+    assert float(dlo) == float(dhi) == vibrofric.mu("sine", 0.5, 0.3, kappa=2, omega=3, zeta=0.1)
+    assert dlo <= ref <= dhi
+    los, his = vibrofric.mu("triangle", [2, 1.5], -0.4, certify=True, **RIG)
+    for k, beta in enumerate((2, 1.5)):
+        one = vibrofric.mu("triangle", beta, -0.4, certify=True, **RIG)
+        assert (los[k], his[k]) == one
+    d = vibrofric.rig("square", 2, 1.05, kappa=0.6, omega=1, zeta=0.05, certify=True, digits=20, strings=True)
+    assert d["correctly_rounded"] == "proven" and d["periodic_state"].startswith("proven to exist")
+    assert d["stability"].startswith("proven stable")
+    assert d["cite"].startswith(d["mu_over_mu0"][:-1]) and d["lower"] < d["upper"] < d["lower"] * (1 + Fraction(1, 10**25))
+    for name in ("stick_fraction", "slip_fraction", "backward_slip_fraction", "flight_fraction"):
+        a, b = (Fraction(x) for x in d[name + "_enclosure"].strip("[]").split(", "))
+        x = Fraction(d[name])
+        assert a - Fraction(1, 10**16) <= x <= b + Fraction(1, 10**16), name
+    assert Fraction(d["backward_slip_fraction_enclosure"].strip("[]").split(", ")[0]) > Fraction("0.09")
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda: vibrofric.mu("sine", 0.5, 0.3, kappa=[2, 3], omega=3, certify=True), ["one rig at a time"]),
+    (lambda: vibrofric.rig("sine", 0.5, 0.3, kappa=2, omega=3, certify=True, profile="sphere"), ["flat punch"]),
+    (lambda: vibrofric.rig("power:3", 0.5, 0.3, kappa=2, omega=3, certify=True), ["power:3", "Fourier"]),
+    (lambda: vibrofric.mu("sine", 0.5, 2, kappa=4, omega=0.5, certify=True), ["resonance"]),
+])
+def test_certified_rig_refusals(call, words):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert "\n" not in str(e.value) and all(w in str(e.value) for w in words), str(e.value)
