@@ -147,6 +147,11 @@ void check_evidence(const ClaimCheck& c) {
     // Part I: mu = mu0 at every beta checked (all beyond beta_c = 2 pi).
     EXPECT_EQ(field(c, "quasi-static (Part I)"), "1.00000, 1.00000, 1.00000, 1.00000");
     EXPECT_EQ(field(c, "zeta = 0.02").substr(field(c, "zeta = 0.02").rfind(", ") + 2), "1.00000") << "damping restores mu0";
+    // the proven enclosures' upper ends (rounded up), each above the solver's value and below mu0
+    const std::string uppers = field(c, "proven, undamped");
+    EXPECT_EQ(uppers.find("none"), std::string::npos) << uppers;
+    EXPECT_EQ(uppers.substr(0, 5), "2.130") << uppers;
+    EXPECT_EQ(uppers.substr(uppers.rfind(", ") + 2, 5), "3.174") << uppers;
   } else if (c.key == "inplane-rigid") {
     const auto [lo, hi] = range(c, "order of D in 1/a");
     EXPECT_GE(lo, 0.95);

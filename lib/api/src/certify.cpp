@@ -324,10 +324,18 @@ namespace {
 
 // The rig's approximate periodic state at about `bits` (RigSolver, both starts) at the middle of
 // its longest span of slip or flight: where the proof's section lies.
-certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec& rig, mpfr_prec_t bits, const Options& opt) {
+certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec& rig, const certified::RigPoint& q,
+                            mpfr_prec_t bits, const Options& opt) {
   PrecisionScope scope(static_cast<unsigned>(bits * 0.30103) + 10);
   const auto w = make_waveform<mpfr>(wave);
-  const RigParameters<mpfr> params{rig.kappa.to<mpfr>(), rig.omega.to<mpfr>(), rig.zeta.to<mpfr>(), 0};
+  // the exact undamped resonance Ω²κ = k² (the solver's secular closed form), as evaluate_rig decides it
+  unsigned resonant = 0;
+  const Rational o2k = q.omega * q.omega * q.kappa;
+  if (q.zeta == 0 && denominator(o2k) == 1) {
+    const Integer n = numerator(o2k), k = sqrt(n);
+    if (k * k == n && k <= 1000000) resonant = static_cast<unsigned>(k);
+  }
+  const RigParameters<mpfr> params{rig.kappa.to<mpfr>(), rig.omega.to<mpfr>(), rig.zeta.to<mpfr>(), resonant};
   const RigSolver<mpfr> solver(*w, p.beta.to<mpfr>(), p.gamma.to<mpfr>(), params, opt);
   const RigResult<mpfr> r = solver.solve();
   const RigSpan<mpfr>* best = nullptr;
@@ -376,12 +384,11 @@ certified::RigWaveInput rig_wave_input(const WaveSpec& wave) {
   }
 }
 
-RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
-                           const std::string& printed, const ProfileSpec& profile, const Options& solver) {
-  if (profile.kind != ProfileKind::flat)
-    throw InputError("profile " + detail::visible(profile.name) +
-                     " has no proven rig state: it exists for the flat punch (a curved contact's row shares one body)");
-  const certified::RigWaveInput input = rig_wave_input(wave);
+namespace {
+
+// The point's exact inputs and its wave; InputError for a computed input or the sine at γ = 1.
+std::pair<certified::RigWaveInput, certified::RigPoint> rig_inputs(const WaveSpec& wave, const Point& point, const RigSpec& rig) {
+  certified::RigWaveInput input = rig_wave_input(wave);
   const auto exact_input = [](const InputValue& in, const char* name) {
     if (!in.given()) throw InputError(std::string(name) + " is empty: expected a decimal number");
     if (!in.decimal()) throw InputError(std::string(name) + " " + in.text() + " is computed: it has no exact value to certify");
@@ -390,27 +397,33 @@ RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSp
   const certified::RigPoint q{exact_input(point.beta, "beta"), exact_input(point.gamma, "gamma"),
                               exact_input(rig.kappa, "kappa"), exact_input(rig.omega, "omega"),
                               exact_input(rig.zeta, "zeta")};
-  if (q.zeta == 0) {
-    std::vector<unsigned> ks;
-    if (input.kind == certified::RigWaveInput::Kind::sine) ks.push_back(1);
-    for (const auto& h : input.series)
-      if (h.k > 0 && (h.a != 0 || h.b != 0)) ks.push_back(h.k);
-    for (unsigned k : ks)
-      if (q.omega * q.omega * q.kappa == Rational(k) * k)
-        throw InputError("kappa = " + rig.kappa.text() + ", omega = " + rig.omega.text() +
-                         ", zeta = 0: the exact undamped resonance omega^2 kappa = " + std::to_string(k * k) +
-                         " with the wave's harmonic " + std::to_string(k) +
-                         " (the slip's motion grows secularly) has no proven rig state");
-  }
   if (input.kind == certified::RigWaveInput::Kind::sine && q.gamma == 1)
     throw InputError("gamma = 1: n touches zero at one instant of the period; no proven rig state there");
+  return {std::move(input), q};
+}
+
+}  // namespace
+
+ProvenRig prove_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, mpfr_prec_t bits, const Options& solver) {
+  const auto [input, q] = rig_inputs(wave, point, rig);
+  certified::RigSeed seed = rig_seed(wave, point, rig, q, bits, solver);
+  return {certified::enclose_rig(input, q, seed, bits), std::move(seed)};
+}
+
+RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
+                           const std::string& printed, const ProfileSpec& profile, const Options& solver) {
+  if (profile.kind != ProfileKind::flat)
+    throw InputError("profile " + detail::visible(profile.name) +
+                     " has no proven rig state: it exists for the flat punch (a curved contact's row shares one body)");
+  rig_inputs(wave, point, rig);  // the refusals, before any solve
   const mpfr_prec_t first = first_bits(precision) + 24, cap = 4 * first;
   std::string open;
   RigCertificate c;
   const auto attempt = [&](long bits) -> std::optional<certified::RigEnclosure> {
     try {
-      const certified::RigSeed seed = rig_seed(wave, point, rig, bits, solver);
-      certified::RigEnclosure e = certified::enclose_rig(input, q, seed, bits);
+      ProvenRig proven = prove_rig(wave, point, rig, bits, solver);
+      const certified::RigSeed& seed = proven.seed;
+      certified::RigEnclosure& e = proven.enclosure;
       const Rational lo = rational_of(e.mu.lower()), hi = rational_of(e.mu.upper());
       const std::vector<std::string> at_lo = rounded_texts(lo, precision), at_hi = rounded_texts(hi, precision);
       if (at_lo.size() != 1 || at_lo != at_hi) {
@@ -423,7 +436,7 @@ RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSp
       c.mu.bits = bits;
       c.section = format_significant(seed.section, 12);
       c.section_mode = mode_text(seed.mode);
-      return e;
+      return std::move(e);
     } catch (const certified::Undecided& e) {
       open = e.what();
       return std::nullopt;

@@ -69,6 +69,7 @@ struct Harmonic {
   unsigned k;
   Interval nu, a, b;
   Interval P, Q;  // the slip oscillator's response to ω²(a cos + b sin): P cos + Q sin
+  bool resonant = false;  // ζ = 0 and Ω²κ = k² exactly: the response is φ (P cos + Q sin)
 };
 struct Piece {
   Rational x;  // start in [0, 1) (piecewise linear; 0 otherwise)
@@ -122,9 +123,18 @@ struct Model {
       } else {
         series(wave.series);
       }
+      const Rational o2k = p.omega * p.omega * p.kappa;
       for (Harmonic& h : harmonics) {
+        if (p.zeta == 0 && o2k == Rational(h.k) * h.k) {
+          // y'' + ν²y = ω²(a cos νφ + b sin νφ): y = φ (P cos νφ + Q sin νφ), P = −ω²b/(2ν), Q = ω²a/(2ν)
+          h.resonant = true;
+          const Interval two_nu = h.nu * Interval::integer(2, b);
+          h.P = -(omega2 * h.b) / two_nu;
+          h.Q = omega2 * h.a / two_nu;
+          continue;
+        }
         // y'' + cy' + Ky = ω²(a cos νφ + b sin νφ): P = ω²(d a − e b)/Δ, Q = ω²(e a + d b)/Δ,
-        // d = K − ν², e = cν, Δ = d² + e² (the exact resonance is refused before).
+        // d = K − ν², e = cν, Δ = d² + e².
         const Interval d = slip.K - h.nu * h.nu, e = c * h.nu, delta = d * d + e * e;
         if (delta.sign() != Sign::positive)
           throw Undecided("rig certificate: the slip oscillator's resonance with harmonic " + std::to_string(h.k) +
@@ -355,8 +365,14 @@ class Flow {
     const Interval sg = Interval::integer(sign(), m_.bits);
     for (const Harmonic& h : m_.harmonics) {
       auto [s, c] = sin_cos(T(phi * h.nu));
-      r[0] = r[0] + (c * h.P + s * h.Q) * sg;
-      r[1] = r[1] + (c * h.Q - s * h.P) * (h.nu * sg);
+      const T y = (c * h.P + s * h.Q) * sg, dy = (c * h.Q - s * h.P) * (h.nu * sg);
+      if (h.resonant) {  // φ y, y + φ y'
+        r[0] = r[0] + phi * y;
+        r[1] = r[1] + y + phi * dy;
+      } else {
+        r[0] = r[0] + y;
+        r[1] = r[1] + dy;
+      }
     }
     return r;
   }
@@ -772,17 +788,6 @@ using Mat = std::array<std::array<Interval, 2>, 2>;
 RigEnclosure enclose_rig(const RigWaveInput& wave, const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits) {
   // Phases and radii as mpfr at the enclosure's precision (they enter the intervals exactly).
   PrecisionScope scope(static_cast<unsigned>(bits * 0.30103) + 10);
-  if (p.zeta == 0) {
-    // Ω²κ = k² for a harmonic k of the wave: the slip's motion grows secularly (no periodic closed form here)
-    std::vector<unsigned> ks;
-    if (wave.kind == RigWaveInput::Kind::sine) ks.push_back(1);
-    for (const RationalHarmonic& h : wave.series)
-      if (h.k > 0 && (h.a != 0 || h.b != 0)) ks.push_back(h.k);
-    for (unsigned k : ks)
-      if (p.omega * p.omega * p.kappa == Rational(k) * k)
-        throw InputError("rig certificate: the exact undamped resonance omega^2 kappa = " + std::to_string(k * k) +
-                         " with the wave's harmonic " + std::to_string(k) + " (the slip's motion grows secularly) is not certified");
-  }
   if (wave.kind == RigWaveInput::Kind::sine && p.gamma == 1)
     throw InputError("rig certificate: gamma = 1 (n touches zero at one instant of the period) is not certified");
   if (wave.kind == RigWaveInput::Kind::piecewise_linear) exact::check(wave.piecewise);

@@ -94,8 +94,7 @@ exact::Wave exact_wave(const WaveSpec& wave);
 // piecewise-linear waves on the flat punch, β, γ, κ, Ω, ζ as typed. μ̄/μ0 enclosed and its rounding decided as for Certifier; the
 // fractions and the largest Floquet multiplier enclosed ("[lo, hi]", rounded outward); the box
 // where the periodic state exists and is unique, at the section phase. InputError for another
-// wave or profile, a computed input, the exact resonance Ω²κ = k² with ζ = 0 and a harmonic k of
-// the wave, the sine at γ = 1; SolverError
+// wave or profile, a computed input, the sine at γ = 1; SolverError
 // where the proof is not found up to four times the first bits (naming what stayed open).
 struct RigCertificate {
   Certificate mu;
@@ -104,6 +103,13 @@ struct RigCertificate {
   std::string section, section_mode, state_y, state_v;  // φ0, its mode, the box of (Y, Y') there
   std::size_t events = 0;  // stick-slip events a period
 };
+// One attempt at `bits`: the rig solved at about that precision, its periodic state proven from
+// the middle of its longest span of slip or flight (certified::Undecided where it is not there).
+struct ProvenRig {
+  certified::RigEnclosure enclosure;
+  certified::RigSeed seed;
+};
+ProvenRig prove_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, mpfr_prec_t bits, const Options& solver = {});
 // The wave of a proven rig state, exactly: InputError for power:P (P ≠ 1) and other waves without one.
 certified::RigWaveInput rig_wave_input(const WaveSpec& wave);
 RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,

@@ -25,8 +25,8 @@
 // guard grazing zero, an event at a contact boundary, a box that does not contract) is Undecided,
 // naming the phase: more bits or no certificate, never a guess.
 //
-// Not covered: power:p (no closed-form motion); the exact undamped resonance Ω²κ = k² with a
-// harmonic k of the wave (secular motion); n touching zero without crossing (the sine at γ = 1).
+// Not covered: power:p (no closed-form motion); n touching zero without crossing (the sine at
+// γ = 1).
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -74,8 +74,9 @@ struct RigWaveInput {
   std::vector<RationalHarmonic> series;
 };
 
-// InputError for the exact undamped resonance Ω²κ = k² with a harmonic k of the wave and the
-// sine at γ = 1; Undecided as above (also where n touches zero: a contact boundary that is not a
+// At the exact undamped resonance (ζ = 0, Ω²κ = k² with a harmonic k of the wave) the slip's
+// response to that harmonic is the secular φ (P cos + Q sin), as the rig solver's. InputError for
+// the sine at γ = 1; Undecided as above (also where n touches zero: a contact boundary that is not a
 // simple root); SolverError where the seed's section is not in slip or flight, or its mode does
 // not repeat after a period.
 RigEnclosure enclose_rig(const RigWaveInput& wave, const RigPoint& p, const RigSeed& seed, mpfr_prec_t bits);
