@@ -2352,9 +2352,6 @@ def rig_tests():
         ["--certify", "flat punch"])
     bad("rig --certify: by sweep", ["sweep", "--wave", "sine", "--beta", "0.5:1:2", "--gamma", "0.3", "--kappa", "2",
                                     "--omega", "3", "--certify"], [], ["--certify", "mu"])
-    bad("rig --certify: the exact undamped resonance", ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "2",
-                                                        "--kappa", "4", "--omega", "0.5", "--certify"],
-        ["4", "0.5"], ["--certify", "resonance"])
     bad("rig --certify: gamma = 1", ["mu", "--wave", "sine", "--beta", "0.5", "--gamma", "1", "--kappa", "2",
                                      "--omega", "3", "--certify"], ["1"], ["--certify", "gamma"])
 
@@ -2413,6 +2410,11 @@ def rig_tests():
         if F(json.loads(rig_ok_run(["mu"] + cases[-1] + ["--digits", "20", "--format", "json", "--certify"]))
              ["backward_slip_fraction_enclosure"].strip("[]").split(", ")[0]) < F("0.04"):
             raise Fail("the backward-slip case's enclosure")
+        # the exact undamped resonance (Omega^2 kappa = 1, part2-resonance's beta = 100): proven below mu0
+        out = json.loads(rig_ok_run(["mu", "--wave", "sine", "--beta", "100", "--gamma", "0.5", "--kappa", "1", "--omega",
+                                     "1", "--zeta", "0", "--format", "json", "--certify"]))
+        if not out["periodic_state"].startswith("proven") or not F(out["upper"]) < F("0.3"):
+            raise Fail("the exact resonance: %r" % out)
     case("rig --certify: a proven periodic state (Krawczyk), enclosures of mu and the fractions", rig_certified)
     bad("rig: no contact", ["mu", "--wave", "sine", "--beta", "1", "--gamma", "-1", "--kappa", "1", "--omega", "2"],
         ["-1"], ["gamma"])

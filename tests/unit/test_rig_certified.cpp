@@ -3,7 +3,7 @@
 // quotients, events bracketed on a grid and refined by toms748): every enclosure holds the
 // solver's μ̄, fractions and state at the section, its largest multiplier holds the solver's, and
 // it is tight (a few hundred units of 2^−bits). Seeds that are not near the periodic state, or not
-// at a section in slip or flight, give no certificate; the excluded inputs are refused.
+// at a section in slip or flight, give no certificate; the sine at γ = 1 is refused.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -230,39 +230,43 @@ TEST(RigCertificate, ASeedAwayFromTheStateProvesNothing) {
   EXPECT_THROW(cert::enclose_rig_sine(point_of(slip), wrong, 128), vibrofric::SolverError);
 }
 
-TEST(RigCertificate, RefusesTheExactResonanceAndGammaOne) {
+// At the exact undamped resonance Ω²κ = 1 (part2-resonance's points) the slip's response to the
+// drive is secular, φ (P cos + Q sin): the proven state holds the solver's (which takes the same
+// closed form, resonant_harmonic = 1) at 100 digits, at β = 10 and 1000 (backward slip there).
+TEST(RigCertificate, TheExactResonanceIsProven) {
+  for (const char* beta : {"10", "1000"}) {
+    const Case c{beta, "0.5", "1", "1", "0", "resonance"};
+    const auto solve = [&](unsigned digits, const mpfr* section) {
+      vibrofric::PrecisionScope scope(digits);
+      const vibrofric::Sine<mpfr> sine;
+      const vibrofric::RigSolver<mpfr> solver(sine, to_mpfr(decimal(beta)), mpfr("0.5"), {mpfr(1), mpfr(1), mpfr(0), 1});
+      Solved s{solver.solve(), {}, {}, {}};
+      const vibrofric::RigSpan<mpfr>* best = nullptr;
+      for (const auto& span : s.r.spans)
+        if (section ? span.begin <= *section && *section <= span.end
+                    : span.mode != RigMode::stick && (!best || span.end - span.begin > best->end - best->begin))
+          best = &span;
+      const mpfr mid = section ? *section : mpfr(ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32));
+      const auto st = solver.at(*best, mid);
+      s.seed = {mid, best->mode, st[0], st[1]};
+      return s;
+    };
+    const Solved seed = solve(60, nullptr);
+    const Solved ref = solve(100, &seed.seed.section);
+    vibrofric::PrecisionScope scope(100);
+    const cert::RigEnclosure e = cert::enclose_rig(wave_input("sine"), point_of(c), seed.seed, 160);
+    EXPECT_TRUE(holds(e.mu, ref.r.mu, mpfr("1e-60"))) << beta;
+    EXPECT_TRUE(holds(e.backward_fraction, ref.r.backward_fraction, mpfr("1e-60"))) << beta;
+    EXPECT_LT(e.mu.upper(), mpfr("0.32")) << beta;
+  }
+}
+
+TEST(RigCertificate, RefusesGammaOneForTheSine) {
   const Case& c = kCases[2];
   const cert::RigSeed seed = solved(c, 40).seed;
   cert::RigPoint p = point_of(c);
-  p.omega = Q(1, 2);
-  p.kappa = 4;  // Ω²κ = 1, ζ = 0
-  EXPECT_THROW(cert::enclose_rig_sine(p, seed, 128), vibrofric::InputError);
-  p = point_of(c);
   p.gamma = 1;
   EXPECT_THROW(cert::enclose_rig_sine(p, seed, 128), vibrofric::InputError);
-  // a series' second harmonic at Ω²κ = 4; its first harmonic alone at Ω²κ = 1 too
-  p = point_of(c);
-  p.zeta = 0;
-  p.omega = 2;
-  p.kappa = 1;
-  EXPECT_THROW(cert::enclose_rig(wave_input("fourier"), p, seed, 128), vibrofric::InputError);
-  p.omega = 1;
-  EXPECT_THROW(cert::enclose_rig(wave_input("fourier"), p, seed, 128), vibrofric::InputError);
-  // ... but Ω²κ = 9 is no harmonic of it, and a piecewise-linear wave's slip forcing has none
-  p.omega = 3;
-  try {
-    cert::enclose_rig(wave_input("fourier"), p, seed, 128);
-  } catch (const vibrofric::InputError& e) {
-    ADD_FAILURE() << e.what();
-  } catch (const vibrofric::SolverError&) {  // the seed is another point's: no certificate, fine
-  }
-  p.omega = 1;
-  try {
-    cert::enclose_rig(wave_input("triangle"), p, seed, 128);
-  } catch (const vibrofric::InputError& e) {
-    ADD_FAILURE() << e.what();
-  } catch (const vibrofric::SolverError&) {
-  }
 }
 
 }  // namespace
