@@ -5,6 +5,9 @@
 //   rig/<case>/guaranteed_double     evaluate_rig(…, float64): `vibrofric mu … --kappa K --omega W
 //                                    --zeta Z --type double` (two mpfr precisions, the second seeded)
 //   rig/<case>/guaranteed_mpfr_30    evaluate_rig(…, mpfr, 30): the same with `--digits 30`
+//   rig/<case>/guaranteed_mpfr_20    evaluate_rig(…, mpfr, 20): `--digits 20`
+//   rig/<case>/certified_mpfr_20     evaluate_rig and certify_rig at 20 digits: `--digits 20 --certify`,
+//                                    the proven state (core/certified/rig_enclosure.hpp), beside the above
 // <case>: sine_omega2 (β = 0.5, γ = 0.3, κ = 1, Ω = 2, ζ = 0.1: a few events a period),
 // triangle_omega1000 (β = 2, γ = −0.4, κ = 3, Ω = 1000, ζ = 0.1: the body rings a thousand times a
 // period), square_omega1e4 (β = 1.2, γ = 1.25, κ = 0.6, Ω = 1e4, ζ = 0.05: the drop rings it ten
@@ -15,6 +18,7 @@
 #include <map>
 
 #include "common.hpp"
+#include "vibrofric/api/certify.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/ladder.hpp"
 #include "vibrofric/api/rig.hpp"
@@ -109,6 +113,31 @@ void BM_rig_guaranteed(benchmark::State& state, const RigCase& c, int digits) {
   if (digits) state.counters["digits"] = digits;
 }
 
+// `mu … --digits 20 --certify`: the value, then its proof (the state from a solve near the proof's
+// precision, Krawczyk, the enclosures).
+void BM_rig_certified(benchmark::State& state, const RigCase& c) {
+  const WaveSpec spec = parse_wave(c.wave);
+  const Point point{c.beta, c.gamma};
+  RigSpec rig;
+  rig.kappa = InputValue::read(c.kappa, "kappa");
+  rig.omega = InputValue::read(c.omega, "omega");
+  rig.zeta = InputValue::read(c.zeta, "zeta");
+  Precision precision;
+  precision.type = NumberType::mpfr;
+  precision.digits = 20;
+  double mu = 0;
+  for (auto _ : state) {
+    const RigReport r = evaluate_rig(spec, point, rig, precision);
+    const RigCertificate cert = certify_rig(spec, point, rig, precision, r.mu);
+    if (!cert.mu.correctly_rounded) state.SkipWithError("not proven the correct rounding");
+    benchmark::DoNotOptimize(cert.mu.upper);
+    mu = std::strtod(r.mu.c_str(), nullptr);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["rel_error"] = rel_error(mu, reference(c));
+  state.counters["digits"] = 20;
+}
+
 benchmark::internal::Benchmark* rig_settings(benchmark::internal::Benchmark* b) {
   b->Unit(benchmark::kMillisecond);
   if (config().quick) return b->Iterations(1)->Repetitions(1);
@@ -127,6 +156,8 @@ void register_rig() {
     if (config().quick) continue;
     rig_settings(benchmark::RegisterBenchmark((prefix + "solver_mpfr_50").c_str(), BM_rig_mpfr, c, 50));
     rig_settings(benchmark::RegisterBenchmark((prefix + "guaranteed_mpfr_30").c_str(), BM_rig_guaranteed, c, 30));
+    rig_settings(benchmark::RegisterBenchmark((prefix + "guaranteed_mpfr_20").c_str(), BM_rig_guaranteed, c, 20));
+    rig_settings(benchmark::RegisterBenchmark((prefix + "certified_mpfr_20").c_str(), BM_rig_certified, c));
   }
 }
 

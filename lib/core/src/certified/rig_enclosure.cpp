@@ -724,15 +724,19 @@ class Certifier {
     for (const Harmonic& h : m_.harmonics) fastest = std::max(fastest, h.nu.upper());
     const mpfr rate = mpfr(m_.stick.root.upper() + m_.stick.h.upper() + fastest);
     const mpfr cell = std::min(mpfr(len / 8), mpfr(m_.two_pi.upper() / rate / 16));
-    mpfr x = a_hi + delta;
+    // A cell shown negative whole doubles the next (a fast body's stick far from slip is cleared
+    // in a few wide cells, as the solver's stride does); one that needed bisection halves it.
+    mpfr x = a_hi + delta, step = cell;
     while (x < t_hi) {
-      mpfr next = x + cell;
+      mpfr next = x + step;
       if (!(next < t_hi) || mpfr(t_hi - next) < cell / 1024) next = t_hi;
+      const long before = splits_;
       if (auto r = scan(f, g, x, next, 0)) {
         if (compare(*r, target) != Sign::negative)
           throw Undecided("rig certificate: an event meets a contact boundary near " + phase_text(t_lo));
         return r;
       }
+      step = splits_ == before ? mpfr(std::min(mpfr(step * 2), len)) : mpfr(std::max(mpfr(step / 2), cell));
       x = next;
     }
     return std::nullopt;
@@ -752,6 +756,7 @@ class Certifier {
       return newton(f, g, X);
     if (depth >= 60 || ++evaluations_ > 200000)
       throw Undecided("rig certificate: a guard grazes zero near phase " + phase_text(lo) + " (no certain sign)");
+    ++splits_;
     const mpfr mid = (lo + hi) / 2;
     if (auto r = scan(f, g, lo, mid, depth + 1)) return r;
     return scan(f, g, mid, hi, depth + 1);
@@ -778,6 +783,7 @@ class Certifier {
   Place start_{0, Interval(m_.bits)};
   std::vector<Boundary> bounds_;
   mutable long evaluations_ = 0;  // of scan, a period: bisection near a grazing guard is bounded
+  mutable long splits_ = 0;       // bisections by scan (the cell size's feedback)
 };
 
 // A 2×2 interval matrix (the section map's Jacobian).
