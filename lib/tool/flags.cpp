@@ -204,7 +204,8 @@ const std::vector<FlagSpec> kInPlaneFlags{
 const FlagSpec kCertifyFlag{
     "certify", "", "flat punch: print the exact value (piecewise-linear waves) or an enclosure (sine, "
                    "power:P, Fourier series) and prove that the printed value is its correct rounding; "
-                   "with --longitudinal (mu), the exact value and mode fractions of piecewise-linear waves "
+                   "with --longitudinal (mu), the exact value and mode fractions of piecewise-linear waves; "
+                   "with --kappa/--omega (mu), the rig's periodic state proven and enclosed "
                    "(=true/false/yes/no/1/0)", "",
     [](Flags& f, const std::string& t) { f.certify = switch_value(t, "certify"); }};
 // A sweep writes rows: csv (its default) or json.
