@@ -92,6 +92,15 @@ cert::RigWaveInput wave_input(const std::string& name) {
   return {Kind::piecewise_linear, w, {}};
 }
 
+cert::ContactMode contact_mode(RigMode m) {
+  switch (m) {
+    case RigMode::forward_slip: return cert::ContactMode::forward_slip;
+    case RigMode::backward_slip: return cert::ContactMode::backward_slip;
+    case RigMode::flight: return cert::ContactMode::flight;
+    default: return cert::ContactMode::stick;
+  }
+}
+
 mpfr to_mpfr(const Q& x) {
   mpfr r;
   mpfr_set_q(r.backend().data(), x.backend().data(), MPFR_RNDN);
@@ -135,7 +144,7 @@ Solved solved(const Case& c, unsigned digits, const mpfr* section = nullptr) {
       best = &span;
   const mpfr mid = section ? *section : mpfr(ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32));
   const auto st = solver.at(*best, mid);
-  s.seed = {mid, best->mode, st[0], st[1]};
+  s.seed = {mid, contact_mode(best->mode), st[0], st[1]};
   s.y = st[0];
   s.v = st[1];
   return s;
@@ -178,7 +187,9 @@ TEST(RigCertificate, HoldsTheSolversStateAndIsTight) {
     for (const Interval* x : {&e.mu, &e.stick_fraction, &e.slip_fraction, &e.flight_fraction, &e.y, &e.v})
       widest = std::max(widest, width_in_ulps(*x, bits));
     widest_multiplier = std::max(widest_multiplier, width_in_ulps(e.multiplier, bits));
-    if (std::string(c.what).find("backward") != std::string::npos) EXPECT_GT(e.backward_fraction.lower(), mpfr("0.04")) << at;
+    if (std::string(c.what).find("backward") != std::string::npos) {
+      EXPECT_GT(e.backward_fraction.lower(), mpfr("0.04")) << at;
+    }
   }
   // Tight to what naive interval evaluation of the walk gives: each event time is enclosed from
   // a state box, and the next flow, started at that time interval with that box, loses their
@@ -221,12 +232,12 @@ TEST(RigCertificate, ASeedAwayFromTheStateProvesNothing) {
   }
   // a seed in stick is no section
   cert::RigSeed stick = s.seed;
-  stick.mode = RigMode::stick;
+  stick.mode = cert::ContactMode::stick;
   EXPECT_THROW(cert::enclose_rig_sine(point_of(c), stick, 128), vibrofric::SolverError);
   // a section said to be in flight that is in contact
   const Case& slip = kCases[1];
   cert::RigSeed wrong = solved(slip, 40).seed;
-  wrong.mode = RigMode::flight;
+  wrong.mode = cert::ContactMode::flight;
   EXPECT_THROW(cert::enclose_rig_sine(point_of(slip), wrong, 128), vibrofric::SolverError);
 }
 
@@ -248,7 +259,7 @@ TEST(RigCertificate, TheExactResonanceIsProven) {
           best = &span;
       const mpfr mid = section ? *section : mpfr(ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32));
       const auto st = solver.at(*best, mid);
-      s.seed = {mid, best->mode, st[0], st[1]};
+      s.seed = {mid, contact_mode(best->mode), st[0], st[1]};
       return s;
     };
     const Solved seed = solve(60, nullptr);

@@ -345,7 +345,10 @@ certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec&
   // a short binary phase (32 bits) near the middle: the section enters the intervals exactly
   const mpfr mid = ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32);
   const auto st = solver.at(*best, mid);
-  return {mid, best->mode, st[0], st[1]};
+  const certified::ContactMode mode = best->mode == RigMode::forward_slip    ? certified::ContactMode::forward_slip
+                                      : best->mode == RigMode::backward_slip ? certified::ContactMode::backward_slip
+                                                                             : certified::ContactMode::flight;
+  return {mid, mode, st[0], st[1]};
 }
 
 // "[lo, hi]" to 20 digits, rounded outward; an exact 0 (a mode that does not occur) as 0.
@@ -354,11 +357,11 @@ std::string enclosure_text(const Interval& x) {
   return "[" + end(x.lower(), MPFR_RNDD) + ", " + end(x.upper(), MPFR_RNDU) + "]";
 }
 
-const char* mode_text(RigMode m) {
+const char* mode_text(certified::ContactMode m) {
   switch (m) {
-    case RigMode::forward_slip: return "slip";
-    case RigMode::backward_slip: return "backward";
-    case RigMode::flight: return "flight";
+    case certified::ContactMode::forward_slip: return "slip";
+    case certified::ContactMode::backward_slip: return "backward";
+    case certified::ContactMode::flight: return "flight";
     default: return "stick";
   }
 }

@@ -33,10 +33,13 @@
 
 #include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/certified/interval.hpp"
-#include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/exact.hpp"
 
 namespace vibrofric::certified {
+
+// The contact's mode, as the rig solver's RigMode (core/dynamics/dynamics.hpp), which this module,
+// on the foundation only, does not include.
+enum class ContactMode { stick, forward_slip, backward_slip, flight };
 
 // β, γ and the rig's κ, Ω, ζ, exactly (the decimals as typed).
 struct RigPoint {
@@ -47,7 +50,7 @@ struct RigPoint {
 // precision) at the section φ0, which lies inside a span of forward or backward slip or flight.
 struct RigSeed {
   mpfr section;
-  RigMode mode;
+  ContactMode mode;
   mpfr y, v;  // Y = X − βφ and Y' at φ0
 };
 
