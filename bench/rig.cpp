@@ -91,14 +91,19 @@ void BM_rig_mpfr(benchmark::State& state, const RigCase& c, int digits) {
   state.counters["digits"] = digits;
 }
 
-// digits = 0: float64.
-void BM_rig_guaranteed(benchmark::State& state, const RigCase& c, int digits) {
-  const WaveSpec spec = parse_wave(c.wave);
-  const Point point{c.beta, c.gamma};
+RigSpec rig_spec(const RigCase& c) {
   RigSpec rig;
   rig.kappa = InputValue::read(c.kappa, "kappa");
   rig.omega = InputValue::read(c.omega, "omega");
   rig.zeta = InputValue::read(c.zeta, "zeta");
+  return rig;
+}
+
+// digits = 0: float64.
+void BM_rig_guaranteed(benchmark::State& state, const RigCase& c, int digits) {
+  const WaveSpec spec = parse_wave(c.wave);
+  const Point point{c.beta, c.gamma};
+  const RigSpec rig = rig_spec(c);
   Precision precision;
   precision.type = digits ? NumberType::mpfr : NumberType::float64;
   if (digits) precision.digits = digits;
@@ -118,10 +123,7 @@ void BM_rig_guaranteed(benchmark::State& state, const RigCase& c, int digits) {
 void BM_rig_certified(benchmark::State& state, const RigCase& c) {
   const WaveSpec spec = parse_wave(c.wave);
   const Point point{c.beta, c.gamma};
-  RigSpec rig;
-  rig.kappa = InputValue::read(c.kappa, "kappa");
-  rig.omega = InputValue::read(c.omega, "omega");
-  rig.zeta = InputValue::read(c.zeta, "zeta");
+  const RigSpec rig = rig_spec(c);
   Precision precision;
   precision.type = NumberType::mpfr;
   precision.digits = 20;

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "enclosure_checks.hpp"
 #include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/catalogue.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
@@ -25,33 +26,9 @@ using Q = vibrofric::exact::Rational;
 using vibrofric::Interval;
 using vibrofric::mpfr;
 
-mpfr to_mpfr(const Q& x) {
-  mpfr r;
-  mpfr_set_q(r.backend().data(), x.backend().data(), MPFR_RNDN);
-  return r;
-}
-
-// x lies in the enclosure widened by the reference's own error.
-::testing::AssertionResult holds(const Interval& e, const mpfr& x, const mpfr& slack) {
-  // At 400 bits, directed: the enclosure's ends carry fewer bits, and Boost's mpfr arithmetic
-  // would round the slack away at the first operand's precision.
-  mpfr_t lo, hi;
-  mpfr_inits2(400, lo, hi, static_cast<mpfr_ptr>(nullptr));
-  mpfr_sub(lo, e.lower().backend().data(), slack.backend().data(), MPFR_RNDD);
-  mpfr_add(hi, e.upper().backend().data(), slack.backend().data(), MPFR_RNDU);
-  const bool inside = mpfr_cmp(lo, x.backend().data()) <= 0 && mpfr_cmp(x.backend().data(), hi) <= 0;
-  mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
-  if (inside) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << x.str(100) << " outside [" << e.lower().str(70) << ", " << e.upper().str(70) << "]";
-}
-
-// Width in units of 2^−bits, relative to max(1, |value|): the areas are differences of O(1)
-// antiderivative values, so a small μ̄ or Ψ (β → 0) has a small absolute, not relative, width
-// (the decision of a rounding then takes more bits, as in the solver's ladder).
-double width_in_ulps(const Interval& e, mpfr_prec_t bits) {
-  const mpfr scale = std::max(mpfr(1), std::max(abs(e.lower()), abs(e.upper())));
-  return static_cast<double>(e.width() / scale * pow(mpfr(2), static_cast<long>(bits)));
-}
+using vibrofric::testing::holds;
+using vibrofric::testing::to_mpfr;
+using vibrofric::testing::width_in_ulps;
 
 // Every quantity of e holds the solver's (r, at 100 digits): μ̄, the areas, β_c, and the stick
 // phase, whose onset the solver counts in [0, 1) from its sweep's start (the enclosure's lies in

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "enclosure_checks.hpp"
 #include "vibrofric/core/certified/rig_enclosure.hpp"
 #include "vibrofric/core/dynamics/dynamics.hpp"
 #include "vibrofric/core/exact.hpp"
@@ -41,6 +42,7 @@ struct Case {
   const char *beta, *gamma, *kappa, *omega, *zeta;
   const char* what;
   const char* wave = "sine";
+  unsigned resonant = 0;  // Ω²κ = k² exactly, ζ = 0 (RigParameters::resonant_harmonic)
 };
 
 // Each regime of the walk: a section in flight and in slip, backward slip, no damping (a weakly
@@ -101,27 +103,9 @@ cert::ContactMode contact_mode(RigMode m) {
   }
 }
 
-mpfr to_mpfr(const Q& x) {
-  mpfr r;
-  mpfr_set_q(r.backend().data(), x.backend().data(), MPFR_RNDN);
-  return r;
-}
-
-::testing::AssertionResult holds(const Interval& e, const mpfr& x, const mpfr& slack) {
-  mpfr_t lo, hi;
-  mpfr_inits2(400, lo, hi, static_cast<mpfr_ptr>(nullptr));
-  mpfr_sub(lo, e.lower().backend().data(), slack.backend().data(), MPFR_RNDD);
-  mpfr_add(hi, e.upper().backend().data(), slack.backend().data(), MPFR_RNDU);
-  const bool inside = mpfr_cmp(lo, x.backend().data()) <= 0 && mpfr_cmp(x.backend().data(), hi) <= 0;
-  mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
-  if (inside) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << x.str(60) << " outside [" << e.lower().str(40) << ", " << e.upper().str(40) << "]";
-}
-
-double width_in_ulps(const Interval& e, mpfr_prec_t bits) {
-  const mpfr scale = std::max(mpfr(1), std::max(abs(e.lower()), abs(e.upper())));
-  return static_cast<double>(e.width() / scale * pow(mpfr(2), static_cast<long>(bits)));
-}
+using vibrofric::testing::holds;
+using vibrofric::testing::to_mpfr;
+using vibrofric::testing::width_in_ulps;
 
 struct Solved {
   vibrofric::RigResult<mpfr> r;
@@ -134,7 +118,8 @@ struct Solved {
 Solved solved(const Case& c, unsigned digits, const mpfr* section = nullptr) {
   vibrofric::PrecisionScope scope(digits);
   const auto wave = waveform(c.wave);
-  const vibrofric::RigParameters<mpfr> p{to_mpfr(decimal(c.kappa)), to_mpfr(decimal(c.omega)), to_mpfr(decimal(c.zeta)), 0};
+  const vibrofric::RigParameters<mpfr> p{to_mpfr(decimal(c.kappa)), to_mpfr(decimal(c.omega)), to_mpfr(decimal(c.zeta)),
+                                         c.resonant};
   const vibrofric::RigSolver<mpfr> solver(*wave, to_mpfr(decimal(c.beta)), to_mpfr(decimal(c.gamma)), p);
   Solved s{solver.solve(), {}, {}, {}};
   const vibrofric::RigSpan<mpfr>* best = nullptr;
@@ -246,24 +231,9 @@ TEST(RigCertificate, ASeedAwayFromTheStateProvesNothing) {
 // closed form, resonant_harmonic = 1) at 100 digits, at β = 10 and 1000 (backward slip there).
 TEST(RigCertificate, TheExactResonanceIsProven) {
   for (const char* beta : {"10", "1000"}) {
-    const Case c{beta, "0.5", "1", "1", "0", "resonance"};
-    const auto solve = [&](unsigned digits, const mpfr* section) {
-      vibrofric::PrecisionScope scope(digits);
-      const vibrofric::Sine<mpfr> sine;
-      const vibrofric::RigSolver<mpfr> solver(sine, to_mpfr(decimal(beta)), mpfr("0.5"), {mpfr(1), mpfr(1), mpfr(0), 1});
-      Solved s{solver.solve(), {}, {}, {}};
-      const vibrofric::RigSpan<mpfr>* best = nullptr;
-      for (const auto& span : s.r.spans)
-        if (section ? span.begin <= *section && *section <= span.end
-                    : span.mode != RigMode::stick && (!best || span.end - span.begin > best->end - best->begin))
-          best = &span;
-      const mpfr mid = section ? *section : mpfr(ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32));
-      const auto st = solver.at(*best, mid);
-      s.seed = {mid, contact_mode(best->mode), st[0], st[1]};
-      return s;
-    };
-    const Solved seed = solve(60, nullptr);
-    const Solved ref = solve(100, &seed.seed.section);
+    const Case c{beta, "0.5", "1", "1", "0", "resonance", "sine", 1};
+    const Solved seed = solved(c, 60);
+    const Solved ref = solved(c, 100, &seed.seed.section);
     vibrofric::PrecisionScope scope(100);
     const cert::RigEnclosure e = cert::enclose_rig(wave_input("sine"), point_of(c), seed.seed, 160);
     EXPECT_TRUE(holds(e.mu, ref.r.mu, mpfr("1e-60"))) << beta;

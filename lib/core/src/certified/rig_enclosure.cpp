@@ -68,23 +68,21 @@ class Certifier {
         period.push_back({{r, whole, rising, rising, 0, Interval(b)}, std::nullopt});
       }
     } else {
-      const auto& v = wave.piecewise.vertices;
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        const Rational x1 = i + 1 < v.size() ? v[i + 1].x : Rational(1);
-        const Rational left1 = i + 1 < v.size() ? v[i + 1].left : v[0].left;
-        const Rational slope = (left1 - v[i].right) / (x1 - v[i].x);
-        const Rational g0 = p.gamma + v[i].right, gl = p.gamma + v[i].left;
+      for (std::size_t i = 0; i < m_.pieces.size(); ++i) {
+        const Piece& pc = m_.pieces[i];
+        const Rational &x1 = pc.end, &slope = pc.slope;
+        const Rational g0 = p.gamma + pc.right, gl = p.gamma + pc.left;
         const Rational n_plus = std::max(g0, Rational(0)), n_minus = std::max(gl, Rational(0));
         const bool touch = g0 == 0 && slope > 0;
-        period.push_back({{Interval::rational(v[i].x.backend().data(), b), place(i), g0 > 0 || touch, touch,
+        period.push_back({{Interval::rational(pc.x.backend().data(), b), place(i), g0 > 0 || touch, touch,
                            n_plus > n_minus ? 1 : n_plus < n_minus ? -1 : 0,
                            Interval::rational(n_plus.backend().data(), b)},
-                          v[i].x});
-        if (v[i].x <= s0) first = i;
+                          pc.x});
+        if (pc.x <= s0) first = i;
         // a contact boundary inside the piece
         if (slope != 0) {
-          const Rational r = v[i].x - g0 / slope;
-          if (r > v[i].x && r < x1)
+          const Rational r = pc.x - g0 / slope;
+          if (r > pc.x && r < x1)
             period.push_back({{Interval::rational(r.backend().data(), b), place(i), slope > 0, slope > 0, 0, Interval(b)}, r});
         }
       }

@@ -78,6 +78,8 @@ struct Harmonic {
 struct Piece {
   Rational x;  // start in [0, 1) (piecewise linear; 0 otherwise)
   Interval p0, p1;
+  // a piecewise-linear wave's piece exactly: its end, w's left limit at x, w(x⁺) and the slope
+  Rational end, left, right, slope;
 };
 struct Place {
   std::size_t piece;
@@ -121,7 +123,7 @@ struct Model {
     slip = make(omega2 * kappa, p.kappa);
     stick = make(omega2 * (kappa + Interval::integer(1, b)), Rational(p.kappa + 1));
     if (smooth) {
-      pieces.push_back({Rational(0), Interval(b), Interval(b)});
+      pieces.push_back({Rational(0), Interval(b), Interval(b), Rational(1), Rational(0), Rational(0), Rational(0)});
       if (wave.kind == RigWaveInput::Kind::sine) {
         harmonics.push_back({1, two_pi, Interval(b), Interval::integer(1, b), Interval(b), Interval(b)});
       } else {
@@ -153,7 +155,7 @@ struct Model {
         const Rational left1 = i + 1 < v.size() ? v[i + 1].left : v[0].left;
         const Rational slope = (left1 - v[i].right) / (x1 - v[i].x);
         pieces.push_back({v[i].x, Interval::rational(v[i].right.backend().data(), b),
-                          Interval::rational(slope.backend().data(), b)});
+                          Interval::rational(slope.backend().data(), b), x1, v[i].left, v[i].right, slope});
       }
     }
   }
