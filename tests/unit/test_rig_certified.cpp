@@ -45,12 +45,13 @@ struct Case {
   unsigned resonant = 0;  // Ω²κ = k² exactly, ζ = 0 (RigParameters::resonant_harmonic)
 };
 
-// Each regime of the walk: a section in flight and in slip, backward slip, no damping (a weakly
+// Each regime of the walk: a section in flight and in slip, touch-down at phase 0 exactly, backward slip, no damping (a weakly
 // attracting state), damping above critical in both modes (cosh/sinh motions), critical damping in
 // slip (ζ²κ = κ exactly: the t·e^{−ht} motion), a fast body (Ω = 10).
 const Case kCases[] = {
     {"0.5", "0.3", "2", "3", "0.1", "flight, stick, slip"},
     {"0.5", "1.5", "2", "3", "0.1", "no flight: section in slip"},
+    {"0.5", "0", "2", "3", "0.1", "gamma = 0: a contact boundary at phase 0 exactly"},
     {"0.2", "2", "0.5", "0.7", "0", "undamped"},
     {"1.61", "1.01", "0.39", "7.49", "0.0429", "backward slip"},
     {"0.05", "-0.3", "1", "0.5", "2", "overdamped in stick and slip"},

@@ -237,16 +237,18 @@ struct Model {
   }
 
  public:
-  // The simple roots in [0, 1) of a 1-periodic smooth f (f(x, 0), its derivative f(x, 1)) whose
-  // fastest harmonic is kmax: cells of 1/(32 kmax) (offset by 1/7 of a cell, so that no rational
-  // root with a small denominator falls on a cell end), each with no root (f certainly nonzero) or
+  // The simple roots over one period of a 1-periodic smooth f (f(x, 0), its derivative f(x, 1))
+  // whose fastest harmonic is kmax: cells of 1/(32 kmax) (offset by 1/7 of a cell, so that no
+  // rational root with a small denominator falls on a cell end), each with no root (f certainly nonzero) or
   // one (f' certainly nonzero, a certain sign change), bisected; Undecided where f touches zero.
   template <class F>
   static std::vector<Interval> periodic_roots(F f, unsigned kmax, mpfr_prec_t b, const std::string& what) {
     std::vector<Interval> out;
     long budget = 200000;
-    const mpfr cell = mpfr(1) / (32 * static_cast<long>(kmax));
-    const mpfr offset = cell / 7;
+    // cell j is [(7j − 6)/(7N), (7j + 1)/(7N)], j = 0 … N − 1: each end computed from its integers,
+    // so the N cells meet and cover one period exactly, whatever the rounding
+    const long cells = 32 * static_cast<long>(kmax);
+    const auto end = [&](long j) { return mpfr(mpfr(7 * j - 6) / (7 * cells)); };
     std::function<void(const mpfr&, const mpfr&, int)> scan = [&](const mpfr& lo, const mpfr& hi, int depth) {
       const Interval X = Interval::hull(lo, hi, b);
       const Interval fx = f(X, 0);
@@ -275,14 +277,13 @@ struct Model {
       scan(lo, mid, depth + 1);
       scan(mid, hi, depth + 1);
     };
-    for (mpfr x = offset - cell; x < 1 + offset - cell; x += cell) scan(x, mpfr(x + cell), 0);
-    // the cells span [offset − cell, offset − cell + 1]: roots reduced into [0, 1), once each
+    for (long j = 0; j < cells; ++j) scan(end(j), end(j + 1), 0);
+    // The cells span [−6/(7N), 1 − 6/(7N)), so each root is found once; one certainly
+    // below 0 is taken a period on. A root at 0 itself (the sine at γ = 0) keeps its enclosure
+    // about 0: the walk places every boundary by comparison with the section.
     std::vector<Interval> reduced;
     for (Interval& r : out) {
       if (r.upper() < 0) r = r + Interval::integer(1, b);
-      if (!(r.lower() >= 0 && r.upper() < 1)) {
-        if (r.lower() < 0 || r.upper() >= 1) throw Undecided("rig certificate: " + what + " at the period's start");
-      }
       reduced.push_back(r);
     }
     std::sort(reduced.begin(), reduced.end(), [](const Interval& a, const Interval& c) { return a.upper() < c.lower(); });
