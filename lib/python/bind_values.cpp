@@ -226,25 +226,11 @@ Flat punch only (Psi does not exist for curved profiles).
           d[py::str(name)] = convert(value);
         if (r.springs) d["springs"] = py::int_(r.springs);
         if (cert) {
-          const py::object fraction = py::module_::import("fractions").attr("Fraction");
-          const py::object integer = py::module_::import("builtins").attr("int");
-          auto to_fraction = [&](const exact::Rational& x) {
-            return fraction(integer(numerator(x).str()), integer(denominator(x).str()));
-          };
           d["lower"] = to_fraction(cert->mu.lower);
           d["upper"] = to_fraction(cert->mu.upper);
           d["cite"] = py::str(cert->mu.cite);
           d["correctly_rounded"] = py::str("proven");
-          d["periodic_state"] = py::str("proven to exist, unique in its box (Krawczyk test of the one-period map)");
-          for (const auto& [name, value] : std::vector<std::pair<const char*, std::string>>{
-                   {"section_phase", cert->section}, {"section_mode", cert->section_mode},
-                   {"state_lag_box", cert->state_y}, {"state_lag_rate_box", cert->state_v},
-                   {"stick_fraction_enclosure", cert->stick_fraction}, {"slip_fraction_enclosure", cert->slip_fraction},
-                   {"backward_slip_fraction_enclosure", cert->backward_fraction},
-                   {"flight_fraction_enclosure", cert->flight_fraction},
-                   {"floquet_multiplier_enclosure", cert->multiplier}})
-            d[py::str(name)] = py::str(value);
-          d["stability"] = py::str(cert->stable ? "proven stable (both multipliers inside the unit circle)" : "not proven");
+          for (const auto& [name, value] : rig_certificate_fields(*cert)) d[py::str(name)] = py::str(value);
         }
         if (!r.resonance_note.empty() && PyErr_WarnEx(PyExc_UserWarning, r.resonance_note.c_str(), 1) != 0)
           throw py::error_already_set();

@@ -258,11 +258,6 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
       values[i] = {c.lower, c.upper};
     });
   }
-  const py::object fraction = py::module_::import("fractions").attr("Fraction");
-  const py::object integer = py::module_::import("builtins").attr("int");
-  auto to_fraction = [&](const exact::Rational& x) {
-    return fraction(integer(numerator(x).str()), integer(denominator(x).str()));
-  };
   if (dims.empty()) {
     return py::make_tuple(to_fraction(values.front().first), to_fraction(values.front().second));
   }

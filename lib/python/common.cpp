@@ -11,6 +11,12 @@ namespace vibrofric::python {
 
 std::string py_repr(const py::handle& x) { return py::repr(x).cast<std::string>(); }
 
+py::object to_fraction(const exact::Rational& x) {
+  const py::object fraction = py::module_::import("fractions").attr("Fraction");
+  const py::object integer = py::module_::import("builtins").attr("int");
+  return fraction(integer(numerator(x).str()), integer(denominator(x).str()));
+}
+
 WaveSpec to_wave(const py::object& w) {
   if (py::isinstance<py::str>(w)) return parse_wave(w.cast<std::string>());
   if (py::isinstance<PyWave>(w)) return w.cast<const PyWave&>().spec;

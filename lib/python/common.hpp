@@ -14,6 +14,7 @@
 
 #include "vibrofric/api/arrays.hpp"
 #include "vibrofric/api/catalogue.hpp"
+#include "vibrofric/api/exact_input.hpp"
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
@@ -36,6 +37,8 @@ struct PyProfile {
 };
 
 std::string py_repr(const py::handle& x);
+// An exact rational as Python's fractions.Fraction (certify=True's values).
+py::object to_fraction(const exact::Rational& x);
 
 WaveSpec to_wave(const py::object& w);
 // The in-plane drive of the keywords longitudinal (None: 0), transverse, phase and in_plane_wave

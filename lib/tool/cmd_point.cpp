@@ -68,22 +68,11 @@ int print_rig(const WaveSpec& wave, const Point& p, const BatchOptions& opt, con
   if (!r.resonance_note.empty()) pending_diagnostics += "vibrofric: warning: " + r.resonance_note + "\n";
   // --certify: the proof's fields (the enclosure of mu and of the fractions, the state's box, stability)
   std::vector<std::pair<std::string, std::string>> proof;
-  if (cert)
-    proof = {{"lower", cert->mu.lower_text},
-             {"upper", cert->mu.upper_text},
-             {"cite", cert->mu.cite},
-             {"correctly_rounded", "proven"},
-             {"periodic_state", "proven to exist, unique in its box (Krawczyk test of the one-period map)"},
-             {"section_phase", cert->section},
-             {"section_mode", cert->section_mode},
-             {"state_lag_box", cert->state_y},
-             {"state_lag_rate_box", cert->state_v},
-             {"stick_fraction_enclosure", cert->stick_fraction},
-             {"slip_fraction_enclosure", cert->slip_fraction},
-             {"backward_slip_fraction_enclosure", cert->backward_fraction},
-             {"flight_fraction_enclosure", cert->flight_fraction},
-             {"floquet_multiplier_enclosure", cert->multiplier},
-             {"stability", cert->stable ? "proven stable (both multipliers inside the unit circle)" : "not proven"}};
+  if (cert) {
+    proof = {{"lower", cert->mu.lower_text}, {"upper", cert->mu.upper_text}, {"cite", cert->mu.cite},
+             {"correctly_rounded", "proven"}};
+    for (auto& field : rig_certificate_fields(*cert)) proof.push_back(std::move(field));
+  }
   if (format == Format::text) {
     std::cout << r.mu << '\n';
     for (const auto& [name, value] : fields) std::cout << name << ": " << value << '\n';

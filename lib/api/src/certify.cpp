@@ -324,18 +324,12 @@ namespace {
 
 // The rig's approximate periodic state at about `bits` (RigSolver, both starts) at the middle of
 // its longest span of slip or flight: where the proof's section lies.
-certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec& rig, const certified::RigPoint& q,
-                            mpfr_prec_t bits, const Options& opt) {
+certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec& rig, mpfr_prec_t bits,
+                            const Options& opt, RigMode* section_mode) {
   PrecisionScope scope(static_cast<unsigned>(bits * 0.30103) + 10);
   const auto w = make_waveform<mpfr>(wave);
-  // the exact undamped resonance Ω²κ = k² (the solver's secular closed form), as evaluate_rig decides it
-  unsigned resonant = 0;
-  const Rational o2k = q.omega * q.omega * q.kappa;
-  if (q.zeta == 0 && denominator(o2k) == 1) {
-    const Integer n = numerator(o2k), k = sqrt(n);
-    if (k * k == n && k <= 1000000) resonant = static_cast<unsigned>(k);
-  }
-  const RigParameters<mpfr> params{rig.kappa.to<mpfr>(), rig.omega.to<mpfr>(), rig.zeta.to<mpfr>(), resonant};
+  // the exact undamped resonance (the solver's secular closed form), as evaluate_rig decides it
+  const RigParameters<mpfr> params{rig.kappa.to<mpfr>(), rig.omega.to<mpfr>(), rig.zeta.to<mpfr>(), exact_resonance(rig)};
   const RigSolver<mpfr> solver(*w, p.beta.to<mpfr>(), p.gamma.to<mpfr>(), params, opt);
   const RigResult<mpfr> r = solver.solve();
   const RigSpan<mpfr>* best = nullptr;
@@ -345,6 +339,7 @@ certified::RigSeed rig_seed(const WaveSpec& wave, const Point& p, const RigSpec&
   // a short binary phase (32 bits) near the middle: the section enters the intervals exactly
   const mpfr mid = ldexp(round(ldexp(mpfr((best->begin + best->end) / 2), 32)), -32);
   const auto st = solver.at(*best, mid);
+  if (section_mode) *section_mode = best->mode;
   const certified::ContactMode mode = best->mode == RigMode::forward_slip    ? certified::ContactMode::forward_slip
                                       : best->mode == RigMode::backward_slip ? certified::ContactMode::backward_slip
                                                                              : certified::ContactMode::flight;
@@ -357,14 +352,6 @@ std::string enclosure_text(const Interval& x) {
   return "[" + end(x.lower(), MPFR_RNDD) + ", " + end(x.upper(), MPFR_RNDU) + "]";
 }
 
-const char* mode_text(certified::ContactMode m) {
-  switch (m) {
-    case certified::ContactMode::forward_slip: return "slip";
-    case certified::ContactMode::backward_slip: return "backward";
-    case certified::ContactMode::flight: return "flight";
-    default: return "stick";
-  }
-}
 
 }  // namespace
 
@@ -409,8 +396,23 @@ std::pair<certified::RigWaveInput, certified::RigPoint> rig_inputs(const WaveSpe
 
 ProvenRig prove_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, mpfr_prec_t bits, const Options& solver) {
   const auto [input, q] = rig_inputs(wave, point, rig);
-  certified::RigSeed seed = rig_seed(wave, point, rig, q, bits, solver);
-  return {certified::enclose_rig(input, q, seed, bits), std::move(seed)};
+  RigMode mode = RigMode::flight;
+  certified::RigSeed seed = rig_seed(wave, point, rig, bits, solver, &mode);
+  return {certified::enclose_rig(input, q, seed, bits), std::move(seed), mode};
+}
+
+std::vector<std::pair<std::string, std::string>> rig_certificate_fields(const RigCertificate& c) {
+  return {{"periodic_state", "proven to exist, unique in its box (Krawczyk test of the one-period map)"},
+          {"section_phase", c.section},
+          {"section_mode", c.section_mode},
+          {"state_lag_box", c.state_y},
+          {"state_lag_rate_box", c.state_v},
+          {"stick_fraction_enclosure", c.stick_fraction},
+          {"slip_fraction_enclosure", c.slip_fraction},
+          {"backward_slip_fraction_enclosure", c.backward_fraction},
+          {"flight_fraction_enclosure", c.flight_fraction},
+          {"floquet_multiplier_enclosure", c.multiplier},
+          {"stability", c.stable ? "proven stable (both multipliers inside the unit circle)" : "not proven"}};
 }
 
 RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, const Precision& precision,
@@ -438,7 +440,7 @@ RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSp
       c.mu.nearest = at_lo;
       c.mu.bits = bits;
       c.section = format_significant(seed.section, 12);
-      c.section_mode = mode_text(seed.mode);
+      c.section_mode = rig_mode_name(proven.section_mode);
       return std::move(e);
     } catch (const certified::Undecided& e) {
       open = e.what();
@@ -467,7 +469,6 @@ RigCertificate certify_rig(const WaveSpec& wave, const Point& point, const RigSp
   c.stable = e->stable;
   c.state_y = enclosure_text(e->y);
   c.state_v = enclosure_text(e->v);
-  c.events = e->events;
   return c;
 }
 

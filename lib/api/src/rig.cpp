@@ -133,6 +133,8 @@ std::pair<Solved, Solved> settle(const WaveSpec& wave, const Point& p, const Rig
 
 }  // namespace
 
+unsigned exact_resonance(const RigSpec& rig) { return resonance(rig); }
+
 void check_rig(const RigSpec& rig) {
   if (computed(rig)) {
     if (!(rig.kappa.to<mpfr>() > 0) || !(rig.omega.to<mpfr>() > 0) || !(rig.zeta.to<mpfr>() >= 0))

@@ -44,7 +44,7 @@ struct Walk {
 class Certifier {
  public:
   Certifier(const RigWaveInput& wave, const RigPoint& p, const mpfr& section, mpfr_prec_t bits)
-      : m_(wave, p, bits), section_(section), gamma_(p.gamma), normal_area_(bits) {
+      : m_(wave, p, bits), section_(section), normal_area_(bits) {
     const mpfr_prec_t b = bits;
     mpq_t q;
     mpq_init(q);
@@ -385,7 +385,6 @@ class Certifier {
 
   Model m_;
   mpfr section_;
-  Rational gamma_;
   Interval normal_area_;
   Place start_{0, Interval(m_.bits)};
   std::vector<Boundary> bounds_;

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vibrofric/api/catalogue.hpp"
@@ -100,14 +101,17 @@ struct RigCertificate {
   Certificate mu;
   std::string stick_fraction, slip_fraction, backward_fraction, flight_fraction, multiplier;
   bool stable = false;  // both multipliers certainly inside the unit circle
-  std::string section, section_mode, state_y, state_v;  // φ0, its mode, the box of (Y, Y') there
-  std::size_t events = 0;  // stick-slip events a period
+  std::string section, section_mode, state_y, state_v;  // φ0, its mode (rig_mode_name), the box of (Y, Y') there
 };
+// The certificate's fields after mu's, as the front ends print them: periodic_state, the section,
+// the state's box, the enclosures, stability.
+std::vector<std::pair<std::string, std::string>> rig_certificate_fields(const RigCertificate& c);
 // One attempt at `bits`: the rig solved at about that precision, its periodic state proven from
 // the middle of its longest span of slip or flight (certified::Undecided where it is not there).
 struct ProvenRig {
   certified::RigEnclosure enclosure;
   certified::RigSeed seed;
+  RigMode section_mode;  // the seed's, as the rig solver names it
 };
 ProvenRig prove_rig(const WaveSpec& wave, const Point& point, const RigSpec& rig, mpfr_prec_t bits, const Options& solver = {});
 // The wave of a proven rig state, exactly: InputError for power:P (P ≠ 1) and other waves without one.

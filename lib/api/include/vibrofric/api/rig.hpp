@@ -55,6 +55,9 @@ struct RigReport {
 
 // κ, Ω, ζ checked (finite decimals, κ > 0, Ω > 0, ζ ≥ 0): InputError quoting the text otherwise.
 void check_rig(const RigSpec& rig);
+// k with Ω²κ = k² exactly and ζ = 0 as typed (the undamped slip resonance of harmonic k; the
+// solver's RigParameters::resonant_harmonic), else 0 (also for computed values).
+unsigned exact_resonance(const RigSpec& rig);
 
 // InputError for bad input, Ψ or a wave without a closed-form motion (power:p); SolverError where no periodic
 // state is found, two are, or the precisions (the row's sizes) do not agree.
