@@ -215,8 +215,8 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
                              const Column& betas, const Column& gammas, const BroadcastIndex& index, std::size_t n,
                              const std::vector<std::size_t>& dims, const py::tuple& shape, const Evaluation& e) {
   std::optional<Certifier> certifier;
-  if (options.profile.kind != ProfileKind::flat)
-    throw InputError("certify=True with profile = " + e.profile_text +
+  if (options.profile.kind != ProfileKind::flat && (options.rig || options.inplane))
+    throw InputError("certify=True with profile = " + e.profile_text + (options.rig ? " and a rig" : " and an in-plane drive") +
                      ": certified values exist for the flat punch only (a curved contact integrates over springs)");
   if (e.nan_on_error)
     throw InputError("certify=True gives exact values or raises, nan_on_error=True gives NaN for a failure: give one of them");

@@ -156,12 +156,11 @@ std::optional<Certifier> certifier_of(const Flags& f, const WaveSpec& wave, cons
   if (!f.certify) return std::nullopt;
   if (f.no_escalate)
     throw InputError("--certify proves the guaranteed value, --no-escalate prints one that is not guaranteed: give one of them");
-  if (opt.profile.kind != ProfileKind::flat)
-    throw InputError("--certify --profile " + detail::visible(f.profile_text.value_or("")) +
-                     ": certified values exist for the flat punch only (a curved contact integrates over springs)");
   try {
     return Certifier(wave, opt.profile);
   } catch (const InputError& e) {
+    if (opt.profile.kind != ProfileKind::flat)
+      throw InputError("--certify --profile " + detail::visible(f.profile_text.value_or("")) + ": " + e.what());
     throw InputError("--certify --wave " + detail::visible(f.wave.value_or("")) + ": " + e.what());
   }
 }

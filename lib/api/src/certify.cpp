@@ -190,9 +190,19 @@ Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
                        " (piecewise linear: exact rationals; the others: enclosures)");
     }
   }
-  if (profile.kind != ProfileKind::flat)
-    throw InputError("profile " + detail::visible(profile.name) +
-                     " has no certified values: they exist for the flat punch (a curved contact integrates over springs)");
+  if (profile.kind == ProfileKind::flat) return;
+  // A curved contact: the row's integral enclosed by Taylor models (curved_enclosure.hpp), for the
+  // sine on the closed-form profiles.
+  const std::string where = "profile " + detail::visible(profile.name) + " has no certified values: ";
+  if (wave.kind != WaveKind::sine)
+    throw InputError(where + "curved contacts are certified for the sine (wave '" + name_ + "' is on the flat punch only)");
+  if (profile.kind != ProfileKind::power && profile.kind != ProfileKind::wearflat)
+    throw InputError(where + "curved contacts are certified for power:N, sphere, cone and wearflat:LAMBDA (a measured profile's row is not in closed form)");
+  if (!profile.parameter.decimal())
+    throw InputError(where + "its parameter " + profile.parameter.text() + " is computed: it has no exact value to certify");
+  curved_.emplace();
+  curved_->kind = profile.kind == ProfileKind::power ? certified::CurvedProfile::Kind::power : certified::CurvedProfile::Kind::wearflat;
+  curved_->parameter = rational(*profile.parameter.decimal(), profile.kind == ProfileKind::power ? "profile exponent N" : "wear-flat LAMBDA");
 }
 
 std::shared_ptr<const certified::FourierShape> Certifier::shape(mpfr_prec_t bits) const {
@@ -209,6 +219,7 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     return rational(*in.decimal(), name);
   };
   const Rational beta = exact_input(point.beta, "beta");
+  if (curved_ && q == Quantity::psi) throw InputError("Psi (Eq. 12) exists for the flat punch only");
   const Rational gamma = q == Quantity::psi ? Rational(1) : exact_input(point.gamma, "gamma");
   Certificate c;
   if (wave_) {
@@ -234,7 +245,9 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     const auto attempt = [&](long bits) -> std::optional<Interval> {
       std::optional<Interval> value;
       try {
-        if (fourier_) {
+        if (curved_) {
+          value = certified::enclose_curved_sine(*curved_, beta, gamma, bits).mu;
+        } else if (fourier_) {
           const certified::FourierEnclosure e = certified::enclose_fourier(*shape(bits), beta, at_gamma);
           value = q == Quantity::psi ? e.lost_area : e.mu;
         } else {

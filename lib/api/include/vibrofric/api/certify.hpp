@@ -16,6 +16,7 @@
 #include "vibrofric/api/evaluate.hpp"
 #include "vibrofric/api/inplane.hpp"
 #include "vibrofric/api/profile_spec.hpp"
+#include "vibrofric/core/certified/curved_enclosure.hpp"
 #include "vibrofric/core/certified/enclosure.hpp"
 #include "vibrofric/core/certified/rig_enclosure.hpp"
 #include "vibrofric/core/exact.hpp"
@@ -42,8 +43,8 @@ struct Certificate {
 };
 
 // Certificates for the points of one wave: the sine, power:P, Fourier series, the triangle, both sawtooths, the
-// square wave and samples, on the flat punch. The constructor throws InputError for
-// any other wave or profile, naming it. An enclosure that has not decided the rounding at
+// square wave and samples, on the flat punch, and the sine on power:N (sphere, cone) and
+// wearflat:LAMBDA. The constructor throws InputError for any other wave or profile, naming it. An enclosure that has not decided the rounding at
 // max_certify_bits is a SolverError.
 class Certifier {
  public:
@@ -60,6 +61,7 @@ class Certifier {
   std::optional<exact::Wave> wave_;       // piecewise linear
   std::optional<exact::Rational> power_;  // power:P, P ≠ 1
   std::optional<std::vector<certified::RationalHarmonic>> fourier_;  // none of the three: the sine
+  std::optional<certified::CurvedProfile> curved_;                   // the sine on a curved profile
   std::string name_;
   // A Fourier series' shape per precision, built once (shared by copies, and by threads).
   struct Shapes {

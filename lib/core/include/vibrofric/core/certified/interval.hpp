@@ -129,6 +129,15 @@ class Interval {
   Interval& operator*=(const Interval& b) { return apply(mpfi_mul, b); }
   // Division by an interval that holds 0 gives an unbounded interval (bounded() is false).
   Interval& operator/=(const Interval& b) { return apply(mpfi_div, b); }
+  // this ± a·b and this + a/d without a temporary (the Taylor series' convolutions)
+  Interval& add_mul(const Interval& a, const Interval& b) { return fused(a, b, mpfi_add); }
+  Interval& sub_mul(const Interval& a, const Interval& b) { return fused(a, b, mpfi_sub); }
+  Interval& add_quotient(const Interval& a, unsigned long d) {
+    mpfi_ptr t = product_scratch(precision());
+    mpfi_div_ui(t, a.v_, d);
+    mpfi_add(v_, v_, t);
+    return *this;
+  }
   friend Interval operator+(Interval a, const Interval& b) {
     a += b;
     return a;
@@ -284,6 +293,23 @@ class Interval {
   }
   // Scratch number i of four per thread at `bits` (set_prec reallocates only to grow): narrow()
   // runs for every transcendental function, and its temporaries were four allocations a call.
+  template <class F>
+  Interval& fused(const Interval& a, const Interval& b, F f) {
+    mpfi_ptr t = product_scratch(std::max(a.precision(), b.precision()));
+    mpfi_mul(t, a.v_, b.v_);
+    f(v_, v_, t);
+    return *this;
+  }
+  static mpfi_ptr product_scratch(mpfr_prec_t bits) {
+    struct Scratch {
+      Scratch() { mpfi_init2(v, MPFR_PREC_MIN); }
+      ~Scratch() { mpfi_clear(v); }
+      mpfi_t v;
+    };
+    thread_local Scratch s;
+    if (mpfi_get_prec(s.v) != bits) mpfi_set_prec(s.v, bits);
+    return s.v;
+  }
   static mpfr_ptr scratch(int i, mpfr_prec_t bits) {
     struct Scratch {
       Scratch() {
