@@ -229,6 +229,8 @@ py::object certify_broadcast(const WaveSpec& wave, const Precision& precision, c
     else if (options.rig) rig_wave_input(wave);  // a proven rig state, point by point
     else certifier.emplace(wave, options.profile);
   } catch (const InputError& err) {
+    if (options.profile.kind != ProfileKind::flat)
+      throw InputError("certify=True with profile = " + e.profile_text + ": " + err.what());
     throw InputError(std::string("certify=True: ") + err.what());
   }
   const bool with_gamma = e.quantity == Quantity::mu && !(inplane && inplane->constant_normal);

@@ -191,8 +191,21 @@ def test_certify_enclosures_hold_the_40_digit_value():
         assert float(lo) == float(hi) == vibrofric.mu(three, beta, gamma)
 
 
+def test_certify_curved_enclosures_hold_the_40_digit_value():
+    # The sine on curved profiles (the row's integral enclosed by Taylor models), array arguments too.
+    for profile in ("sphere", "cone", "power:2.5", "wearflat:0.5"):
+        lo, hi = vibrofric.mu("sine", [1.0, 0.3], [0.5, -0.6], profile=profile, certify=True)
+        for i, (beta, gamma) in enumerate(((1.0, 0.5), (0.3, -0.6))):
+            want = Fraction(vibrofric.mu("sine", beta, gamma, profile=profile, digits=40, strings=True))
+            assert lo[i] - Fraction(1, 10**39) <= want <= hi[i] + Fraction(1, 10**39), (profile, beta, gamma)
+            assert float(lo[i]) == float(hi[i]) == vibrofric.mu("sine", beta, gamma, profile=profile)
+    assert vibrofric.mu("sine", 7, 0.5, profile="sphere", certify=True) == (1, 1)
+
+
 @pytest.mark.parametrize("call, words", [
     (lambda: vibrofric.mu("sine", 1, 0, certify=True, nan_on_error=True), ["nan_on_error=True"]),
+    (lambda: vibrofric.mu("sine", 1, 0, profile=vibrofric.profile([0, 1, 2], [0, 0.5, 2]), certify=True),
+     ["measured profile"]),
     (lambda: vibrofric.mu("triangle", 1, 0, profile="sphere", certify=True), ["'sphere'", "flat punch"]),
     (lambda: vibrofric.mu("triangle", 1, 0, escalate=False, certify=True), ["escalate=False"]),
     (lambda: vibrofric.mu("triangle", [1, 2], [0, -3], certify=True), ["at index (1,)", "-3"]),

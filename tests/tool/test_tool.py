@@ -2291,8 +2291,43 @@ def certify_tests():
             raise Fail("power:2 at beta = beta_c = 4: %r" % out)
     case("certify: enclosures (sine, power:P, Fourier) hold the 60-digit value and decide the rounding", sine_enclosures)
 
-    bad("certify: a curved profile", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--profile", "sphere", "--certify"],
-        ["sphere"], ["flat punch"])
+    def curved_enclosures():
+        # The sine on curved profiles: the enclosure holds the 50-digit value of the curved solver
+        # (spring by spring, a different algorithm), is at most 1e-20 wide relative at 25 digits
+        # (the bar), and proves the printed double and the 25-digit value.
+        for profile, b, g in (("sphere", "1", "0.5"), ("sphere", "0.3", "-0.6"), ("sphere", "2.5", "1"), ("cone", "1", "2"),
+                              ("power:1.5", "0.7", "0.1"), ("wearflat:0.5", "1", "0.5"), ("wearflat:3", "4", "-0.8")):
+            base = ["mu", "--wave", "sine", "--beta", b, "--gamma", g, "--profile", profile]
+            want = F(ok_run(base + ["--digits", "50"]).strip())
+            for extra, digits in ((["--type", "double"], None), (["--digits", "25"], 25)):
+                args = base + ["--certify", "--format", "json"] + extra
+                out = json.loads(ok_run(args))
+                lo, hi = F(out["lower"]), F(out["upper"])
+                # the printed ends carry three digits past the value's: 20 for a double
+                bar = Fraction(1, 10 ** (15 if digits is None else 20))
+                if not lo <= want <= hi or hi - lo > abs(want) * bar:
+                    raise Fail("%s: [%s, %s] does not hold the 50-digit %s tightly" % (cmd(args), lo, hi, dec(want, 30)))
+                if out["correctly_rounded"] != "proven":
+                    raise Fail("%s: %r" % (cmd(args), out))
+                expect_digits(out["cite"], want, len(out["cite"].lstrip("-0.").replace(".", "")), cmd(args) + " (cite)")
+                printed = out["mu_over_mu0"]
+                if digits is None and not float(lo) == float(hi) == float(printed):
+                    raise Fail("%s: the ends do not round to the printed double %s" % (cmd(args), printed))
+                if digits is not None:
+                    expect_digits(printed, want, digits, cmd(args))
+        # No spring sticks (beta > 2 pi): exactly 1.
+        out = json.loads(ok_run(["mu", "--wave", "sine", "--beta", "7", "--gamma", "0.5", "--profile", "sphere", "--certify",
+                                 "--format", "json"]))
+        if F(out["lower"]) != 1 or F(out["upper"]) != 1:
+            raise Fail("sphere at beta 7 > 2 pi: %r" % out)
+    case("certify: the sine on curved profiles, enclosed and proven", curved_enclosures)
+
+    bad("certify: a curved profile with a wave other than the sine",
+        ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--profile", "sphere", "--certify"], ["sphere", "'triangle'"],
+        ["sine only", "flat punch"])
+    bad("certify: a measured profile", ["mu", "--wave", "sine", "--beta", "1", "--gamma", "0", "--profile",
+                                        "profile:" + write("certify.profile", "0 0\n1 0.5\n2 2\n"), "--certify"],
+        ["--certify"], ["measured profile", "closed form"])
     bad("certify: with --no-escalate", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--type", "double",
                                         "--no-escalate", "--certify"], [], ["--no-escalate", "--certify"])
     bad("certify: a value for the switch", ["mu", "--wave", "tri", "--beta", "1", "--gamma", "0", "--certify=maybe"],

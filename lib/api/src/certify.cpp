@@ -193,13 +193,13 @@ Certifier::Certifier(const WaveSpec& wave, const ProfileSpec& profile) {
   if (profile.kind == ProfileKind::flat) return;
   // A curved contact: the row's integral enclosed by Taylor models (curved_enclosure.hpp), for the
   // sine on the closed-form profiles.
-  const std::string where = "profile " + detail::visible(profile.name) + " has no certified values: ";
   if (wave.kind != WaveKind::sine)
-    throw InputError(where + "curved contacts are certified for the sine (wave '" + name_ + "' is on the flat punch only)");
+    throw InputError("curved contacts are certified for the sine only (wave '" + name_ + "' is certified on the flat punch)");
   if (profile.kind != ProfileKind::power && profile.kind != ProfileKind::wearflat)
-    throw InputError(where + "curved contacts are certified for power:N, sphere, cone and wearflat:LAMBDA (a measured profile's row is not in closed form)");
+    throw InputError("curved contacts are certified for power:N, sphere, cone and wearflat:LAMBDA (a measured profile's row "
+                     "is not in closed form)");
   if (!profile.parameter.decimal())
-    throw InputError(where + "its parameter " + profile.parameter.text() + " is computed: it has no exact value to certify");
+    throw InputError("the profile's parameter " + profile.parameter.text() + " is computed: it has no exact value to certify");
   curved_.emplace();
   curved_->kind = profile.kind == ProfileKind::power ? certified::CurvedProfile::Kind::power : certified::CurvedProfile::Kind::wearflat;
   curved_->parameter = rational(*profile.parameter.decimal(), profile.kind == ProfileKind::power ? "profile exponent N" : "wear-flat LAMBDA");

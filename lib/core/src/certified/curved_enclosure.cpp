@@ -52,7 +52,7 @@ class Row {
  public:
   Row(const CurvedProfile& profile, const exact::Rational& beta, const exact::Rational& gamma, mpfr_prec_t bits)
       : bits_(bits),
-        order_(static_cast<std::size_t>(16 + bits / 8)),
+        order_(static_cast<std::size_t>(std::max<mpfr_prec_t>(24, bits / 6 * 2))),  // even
         pi_(Interval::pi(bits)),
         half_(Interval::integer(1, bits) / Interval::integer(2, bits)),
         half_pi_(pi_ * half_),
@@ -72,6 +72,7 @@ class Row {
   const Interval& b() const { return b_; }
   mpfr_prec_t bits() const { return bits_; }
   void set_psi(Interval psi) { psi_ = std::move(psi); }
+  const Interval& psi() const { return psi_; }
 
   // γ'(τ) on a stick from touch-down, with dγ'/dτ (a series of size 2 at the base X).
   std::pair<Interval, Interval> gamma_of_tau(const Interval& X) const {
@@ -80,25 +81,36 @@ class Row {
   }
 
   // The enclosures of ∫Φ and ∫N (the piece's share of ∫… dx), or none where this piece's model
-  // fails (an interval function's argument leaves its domain over the piece: bisect it).
-  void model(Piece& piece) const {
+  // fails (an interval function's argument leaves its domain over the piece: bisect it). The
+  // remainder's coefficient is computed by `coarse`, the same row at fewer bits: it is multiplied
+  // by h^K, so a few correct digits of it are all the sum needs.
+  void model(Piece& piece, const Row& coarse) const {
     try {
       const std::size_t size = order_ + 4;
       const Interval one = Interval::integer(1, bits_);
       const Interval slope = one * static_cast<long>(piece.dir);
       const Interval far = piece.anchor + slope * piece.length;
-      const Interval box = hull(piece.anchor, far);
-      auto [num_box, den_box, e, orientation] = integrand(piece, Series::line(box, slope, size), std::nullopt);
-      auto [num_pt, den_pt, e_pt, o_pt] = integrand(piece, Series::line(piece.anchor, slope, size), orientation);
-      (void)e_pt;
+      const Interval box = hull(piece.anchor, far).rounded(coarse.bits_);
+      auto [num_box, den_box, e, orientation] =
+          coarse.integrand(piece, Series::line(box, slope.rounded(coarse.bits_), size), std::nullopt);
+      (void)e;
+      // A piece without a singular end is expanded about its middle (h ∈ [−H/2, H/2]: the odd
+      // moments vanish, and the remainder shrinks 2^K-fold against an expansion at an end).
+      const bool centered = piece.t_order == 0 && !piece.d_vanishes;
+      const Interval reach = centered ? piece.length * half_ : piece.length;
+      const Interval base = centered ? piece.anchor + slope * reach : piece.anchor;
+      auto [num_pt, den_pt, e_pt, o_pt] = integrand(piece, Series::line(base, slope, size), orientation);
       (void)o_pt;
-      // ∫₀^H h^e (Σ_{k<K} c_k h^k + r(h) h^K) dh, r(h) in the box's K-th coefficient, h^(e+K) ≥ 0
+      // ∫ h^e (Σ_{k<K} c_k h^k + r(h) h^K) dh, r(h) in the box's K-th coefficient, h^(e+K) ≥ 0
+      // (K is even)
       const std::size_t K = order_;
       Interval num(bits_), den(bits_);
-      const Interval logH = log(piece.length);
+      const Interval log_reach = log(reach);
       for (std::size_t k = 0; k <= K; ++k) {
-        const Interval power = e + one * static_cast<long>(k + 1);
-        const Interval moment = exp(power * logH) / power;
+        if (centered && k % 2 == 1) continue;
+        const Interval power = e_pt + one * static_cast<long>(k + 1);
+        Interval moment = exp(power * log_reach) / power;
+        if (centered) moment = moment * 2L;
         num += (k < K ? num_pt[k] : num_box[K]) * moment;
         den += (k < K ? den_pt[k] : den_box[K]) * moment;
       }
@@ -280,6 +292,7 @@ CurvedEnclosure enclose_curved_sine(const CurvedProfile& profile, const exact::R
   if (gamma <= -1) throw DomainError("gamma <= -1: no spring of the row touches (no contact)");
   CurvedEnclosure out(bits);
   Row row(profile, beta, gamma, bits);
+  Row coarse(profile, beta, gamma, std::min<mpfr_prec_t>(bits, 64));
   const Interval one = Interval::integer(1, bits);
   const Interval G = of(gamma, bits);
   // β ≥ 2π: no spring sticks (Eq. 6 for every γ'), μ̄ = μ0 exactly
@@ -288,6 +301,7 @@ CurvedEnclosure enclose_curved_sine(const CurvedProfile& profile, const exact::R
   if (beyond == Sign::negative) {
     out.stick = true;
     row.set_psi(enclose_sine(beta, 1, bits).lost_area);
+    coarse.set_psi(row.psi().rounded(coarse.bits()));
     const Interval g = sqrt(one - sqr(row.b()));
     // γ < −g: every spring slips (β ≥ β_c(γ') for all γ' ≤ γ), μ̄ = μ0 exactly
     if (decide(-g - G, "gamma against -g") != Sign::negative) {
@@ -349,7 +363,7 @@ CurvedEnclosure enclose_curved_sine(const CurvedProfile& profile, const exact::R
     return out;
   }
   // Bisect the widest piece until the sums are as narrow as the bits allow.
-  for (Piece& p : pieces) row.model(p);
+  for (Piece& p : pieces) row.model(p, coarse);
   mpfr tolerance;
   mpfr_set_prec(tolerance.backend().data(), 32);
   mpfr_set_ui_2exp(tolerance.backend().data(), 1, -static_cast<long>(bits) + 24, MPFR_RNDN);
@@ -394,8 +408,8 @@ CurvedEnclosure enclose_curved_sine(const CurvedProfile& profile, const exact::R
     p.length = split;
     p.num.reset();
     p.den.reset();
-    row.model(p);
-    row.model(far);
+    row.model(p, coarse);
+    row.model(far, coarse);
     if (!p.num && !far.num && decide(split - Interval::exact(mpfr(1e-30), bits), "a piece's length") == Sign::negative)
       throw Undecided("no Taylor model on a piece of the row");
     pieces.push_back(std::move(far));

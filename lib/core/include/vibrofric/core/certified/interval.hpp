@@ -104,6 +104,12 @@ class Interval {
   }
 
   mpfr_prec_t precision() const { return mpfi_get_prec(v_); }
+  // The same interval at `bits` per end, rounded outward (a superset where bits are fewer).
+  Interval rounded(mpfr_prec_t bits) const {
+    Interval r(bits);
+    mpfi_set(r.v_, v_);
+    return r;
+  }
   mpfr lower() const { return end(mpfi_get_left); }
   mpfr upper() const { return end(mpfi_get_right); }
   mpfr midpoint() const { return end(mpfi_mid); }
