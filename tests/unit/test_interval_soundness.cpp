@@ -335,6 +335,61 @@ TEST(IntervalSoundness, FourOperationsOverBoxesWithTiedMidpoints) {
   mpfr_clears(x, y, down, up, static_cast<mpfr_ptr>(nullptr));
 }
 
+// The fused c ± a·b and c + a/d of the Taylor series' convolutions (their own sign cases, not
+// MPFI's): every corner value c_k ± a_i b_j, bracketed at four times the bits, inside the result,
+// over boxes of every sign pattern (positive, negative, straddling 0, ends at 0) with tied midpoints.
+TEST(IntervalSoundness, FusedProductsOverEverySignPattern) {
+  std::vector<Argument> base = random_arguments(60, -20, 20, false, false, 16);
+  for (const double c : {1.0, 3.0, 1e-10})
+    for (const Argument& a : about(Number(c), "c")) base.push_back(a);
+  std::vector<Argument> args;
+  for (const Argument& a : base) {
+    Number nlo, nhi;
+    mpfr_neg(nlo.v, a.hi.v, MPFR_RNDN);
+    mpfr_neg(nhi.v, a.lo.v, MPFR_RNDN);
+    args.push_back(a);                                    // positive
+    args.push_back({nlo, nhi, "-(" + a.how + ")"});       // negative
+    args.push_back({nlo, a.hi, "straddling " + a.how});   // across 0
+    args.push_back({Number(0.0), a.hi, "from 0 " + a.how});
+    args.push_back({nlo, Number(0.0), "to 0 " + a.how});
+  }
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<std::size_t> pick(0, args.size() - 1);
+  mpfr_t p, q;
+  mpfr_inits2(kReference, p, q, static_cast<mpfr_ptr>(nullptr));
+  const auto holds = [&](const Interval& out, mpfr_srcptr c, mpfr_srcptr x, mpfr_srcptr y, int sign, const std::string& how) {
+    for (const mpfr_rnd_t r : {MPFR_RNDD, MPFR_RNDU}) {
+      mpfr_mul(p, x, y, r == MPFR_RNDD ? (sign > 0 ? MPFR_RNDD : MPFR_RNDU) : (sign > 0 ? MPFR_RNDU : MPFR_RNDD));
+      (sign > 0 ? mpfr_add : mpfr_sub)(q, c, p, r);
+      EXPECT_GT(mpfi_is_inside_fr(q, out.data()), 0) << how;
+    }
+  };
+  for (int k = 0; k < 3000; ++k) {
+    const Argument &a = args[pick(rng)], &b = args[pick(rng)], &c = args[pick(rng)];
+    const std::string how = c.how + " ± (" + a.how + ")(" + b.how + ")";
+    Interval plus = enclose(c), minus = enclose(c);
+    plus.add_mul(enclose(a), enclose(b));
+    minus.sub_mul(enclose(a), enclose(b));
+    for (const mpfr_srcptr cc : {static_cast<mpfr_srcptr>(c.lo.v), static_cast<mpfr_srcptr>(c.hi.v)})
+      for (const mpfr_srcptr x : {static_cast<mpfr_srcptr>(a.lo.v), static_cast<mpfr_srcptr>(a.hi.v)})
+        for (const mpfr_srcptr y : {static_cast<mpfr_srcptr>(b.lo.v), static_cast<mpfr_srcptr>(b.hi.v)}) {
+          holds(plus, cc, x, y, 1, "+ " + how);
+          holds(minus, cc, x, y, -1, "- " + how);
+        }
+    const unsigned long d = 1 + static_cast<unsigned long>(k % 40);
+    Interval quotient = enclose(c);
+    quotient.add_quotient(enclose(a), d);
+    for (const mpfr_srcptr cc : {static_cast<mpfr_srcptr>(c.lo.v), static_cast<mpfr_srcptr>(c.hi.v)})
+      for (const mpfr_srcptr x : {static_cast<mpfr_srcptr>(a.lo.v), static_cast<mpfr_srcptr>(a.hi.v)})
+        for (const mpfr_rnd_t r : {MPFR_RNDD, MPFR_RNDU}) {
+          mpfr_div_ui(p, x, d, r);
+          mpfr_add(q, cc, p, r);
+          EXPECT_GT(mpfi_is_inside_fr(q, quotient.data()), 0) << c.how << " + (" << a.how << ")/" << d;
+        }
+  }
+  mpfr_clears(p, q, static_cast<mpfr_ptr>(nullptr));
+}
+
 // π and the bisection's halves: π inside its enclosure at kReference; each half within the whole,
 // the halves meeting, and together the whole.
 TEST(IntervalSoundness, PiAndBisection) {

@@ -76,9 +76,11 @@ class Series {
   friend Series operator*(const Interval& v, Series a) { return std::move(a) * v; }
   friend Series operator*(const Series& a, const Series& b) {
     const std::size_t n = std::min(a.size(), b.size());
+    // a line (the variable) or a constant has few terms: only those are convolved
+    const std::size_t na = a.terms(), nb = b.terms();
     Series r(n, a.bits());
     for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t j = 0; j <= k; ++j) r.c_[k].add_mul(a.c_[j], b.c_[k - j]);
+      for (std::size_t j = k + 1 > nb ? k + 1 - nb : 0; j <= k && j < na; ++j) r.c_[k].add_mul(a.c_[j], b.c_[k - j]);
     return r;
   }
   friend Series operator/(const Series& a, const Series& b) {
@@ -154,6 +156,12 @@ class Series {
   }
 
  private:
+  // 1 + the index of the last coefficient that is not exactly 0
+  std::size_t terms() const {
+    std::size_t n = c_.size();
+    while (n > 0 && c_[n - 1].sign() == Sign::zero) --n;
+    return n;
+  }
   // j·c_j: the coefficients of h·f'(h), which the recurrences of sin, cos, asin and pow convolve
   Series weighted() const {
     Series w(size(), bits());

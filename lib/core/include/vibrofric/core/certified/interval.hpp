@@ -136,8 +136,8 @@ class Interval {
   // Division by an interval that holds 0 gives an unbounded interval (bounded() is false).
   Interval& operator/=(const Interval& b) { return apply(mpfi_div, b); }
   // this ± a·b and this + a/d without a temporary (the Taylor series' convolutions)
-  Interval& add_mul(const Interval& a, const Interval& b) { return fused(a, b, mpfi_add); }
-  Interval& sub_mul(const Interval& a, const Interval& b) { return fused(a, b, mpfi_sub); }
+  Interval& add_mul(const Interval& a, const Interval& b) { return fused(a, b, false); }
+  Interval& sub_mul(const Interval& a, const Interval& b) { return fused(a, b, true); }
   Interval& add_quotient(const Interval& a, unsigned long d) {
     mpfi_ptr t = product_scratch(precision());
     mpfi_div_ui(t, a.v_, d);
@@ -297,13 +297,52 @@ class Interval {
     if (!done) wide(v_, v_);
     return std::move(*this);
   }
-  // Scratch number i of four per thread at `bits` (set_prec reallocates only to grow): narrow()
-  // runs for every transcendental function, and its temporaries were four allocations a call.
-  template <class F>
-  Interval& fused(const Interval& a, const Interval& b, F f) {
-    mpfi_ptr t = product_scratch(std::max(a.precision(), b.precision()));
-    mpfi_mul(t, a.v_, b.v_);
-    f(v_, v_, t);
+  // this ± a·b: the product's ends by the sign cases of a and b (two MPFR products, four where
+  // both straddle 0), each rounded outward into per-thread scratch and added with the matching
+  // rounding (mpfi_mul allocates temporaries on every call, and convolutions make millions).
+  // Infinite or NaN ends take MPFI's own path.
+  Interval& fused(const Interval& a, const Interval& b, bool subtract) {
+    mpfr_srcptr al = &a.v_->left, ar = &a.v_->right, bl = &b.v_->left, br = &b.v_->right;
+    if (!mpfr_number_p(al) || !mpfr_number_p(ar) || !mpfr_number_p(bl) || !mpfr_number_p(br) || !bounded()) {
+      mpfi_ptr t = product_scratch(std::max(a.precision(), b.precision()));
+      mpfi_mul(t, a.v_, b.v_);
+      subtract ? mpfi_sub(v_, v_, t) : mpfi_add(v_, v_, t);
+      return *this;
+    }
+    const mpfr_prec_t bits = precision();
+    mpfr_ptr lo = scratch(0, bits), hi = scratch(1, bits), t = scratch(2, bits);
+    const int sa = mpfr_sgn(al) >= 0 ? 1 : (mpfr_sgn(ar) <= 0 ? -1 : 0);
+    const int sb = mpfr_sgn(bl) >= 0 ? 1 : (mpfr_sgn(br) <= 0 ? -1 : 0);
+    const auto ends = [&](mpfr_srcptr x1, mpfr_srcptr y1, mpfr_srcptr x2, mpfr_srcptr y2) {
+      mpfr_mul(lo, x1, y1, MPFR_RNDD);
+      mpfr_mul(hi, x2, y2, MPFR_RNDU);
+    };
+    if (sa == 1) {
+      if (sb == 1) ends(al, bl, ar, br);
+      else if (sb == -1) ends(ar, bl, al, br);
+      else ends(ar, bl, ar, br);
+    } else if (sa == -1) {
+      if (sb == 1) ends(al, br, ar, bl);
+      else if (sb == -1) ends(ar, br, al, bl);
+      else ends(al, br, al, bl);
+    } else if (sb == 1) {
+      ends(al, br, ar, br);
+    } else if (sb == -1) {
+      ends(ar, bl, al, bl);
+    } else {
+      ends(al, br, al, bl);
+      mpfr_mul(t, ar, bl, MPFR_RNDD);
+      mpfr_min(lo, lo, t, MPFR_RNDD);
+      mpfr_mul(t, ar, br, MPFR_RNDU);
+      mpfr_max(hi, hi, t, MPFR_RNDU);
+    }
+    if (subtract) {
+      mpfr_sub(&v_->left, &v_->left, hi, MPFR_RNDD);
+      mpfr_sub(&v_->right, &v_->right, lo, MPFR_RNDU);
+    } else {
+      mpfr_add(&v_->left, &v_->left, lo, MPFR_RNDD);
+      mpfr_add(&v_->right, &v_->right, hi, MPFR_RNDU);
+    }
     return *this;
   }
   static mpfi_ptr product_scratch(mpfr_prec_t bits) {
@@ -316,6 +355,8 @@ class Interval {
     if (mpfi_get_prec(s.v) != bits) mpfi_set_prec(s.v, bits);
     return s.v;
   }
+  // Scratch number i of four per thread at `bits` (set_prec reallocates only to grow): narrow()
+  // runs for every transcendental function, and its temporaries were four allocations a call.
   static mpfr_ptr scratch(int i, mpfr_prec_t bits) {
     struct Scratch {
       Scratch() {
