@@ -108,6 +108,23 @@ TEST(CurvedEnclosure, BadInputIsAnError) {
   EXPECT_THROW(certified::enclose_curved_sine(flat, Rational(1), Rational(1), kBits25), InputError);
 }
 
+// At 64 bits, where the bisection stops at 2^-40 relative and the remainder terms carry the width:
+// every case, and a wear flat of small λ (the weight's branch points λ/2 off the real axis, so the
+// Taylor models near the row's centre converge slowly and the remainder bounds the error).
+TEST(CurvedEnclosure, HoldsTheValuesAtFewBits) {
+  std::vector<Case> cases = kCases;
+  cases.push_back({"wearflat:0.05", "5.85", "0.2"});
+  cases.push_back({"wearflat:0.05", "1.92", "0.02"});
+  for (const Case& c : cases) {
+    const std::string what = std::string(c.profile) + " beta " + c.beta + " gamma " + c.gamma;
+    const certified::CurvedEnclosure e = certified::enclose_curved_sine(profile_of(c.profile), R(c.beta), R(c.gamma), 64);
+    const CurvedResult<mpfr> r = reference(c.profile, c.beta, c.gamma);
+    expect_holds(e.mu, r.mu, what + ": mu at 64 bits");
+    expect_holds(e.retained_area, r.friction_integral, what + ": retained area at 64 bits");
+    expect_holds(e.normal_area, r.normal_integral, what + ": normal area at 64 bits");
+  }
+}
+
 // More bits, a narrower enclosure that still holds the value: the width follows the bits.
 TEST(CurvedEnclosure, NarrowsWithTheBits) {
   const CurvedResult<mpfr> r = reference("sphere", "1", "0.5");

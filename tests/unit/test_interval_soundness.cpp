@@ -343,13 +343,17 @@ TEST(IntervalSoundness, FusedProductsOverEverySignPattern) {
   for (const double c : {1.0, 3.0, 1e-10})
     for (const Argument& a : about(Number(c), "c")) base.push_back(a);
   std::vector<Argument> args;
-  for (const Argument& a : base) {
-    Number nlo, nhi;
+  for (std::size_t i = 0; i < base.size(); ++i) {
+    const Argument& a = base[i];
+    const Argument& other = base[(i * 7 + 3) % base.size()];  // another size: an asymmetric straddle
+    Number nlo, nhi, nother;
     mpfr_neg(nlo.v, a.hi.v, MPFR_RNDN);
     mpfr_neg(nhi.v, a.lo.v, MPFR_RNDN);
-    args.push_back(a);                                    // positive
-    args.push_back({nlo, nhi, "-(" + a.how + ")"});       // negative
-    args.push_back({nlo, a.hi, "straddling " + a.how});   // across 0
+    mpfr_neg(nother.v, other.hi.v, MPFR_RNDN);
+    args.push_back(a);                                                    // positive
+    args.push_back({nlo, nhi, "-(" + a.how + ")"});                       // negative
+    args.push_back({nlo, a.hi, "straddling " + a.how});                   // across 0, symmetric
+    args.push_back({nother, a.hi, "straddling " + other.how + " to " + a.how});  // across 0, not
     args.push_back({Number(0.0), a.hi, "from 0 " + a.how});
     args.push_back({nlo, Number(0.0), "to 0 " + a.how});
   }
