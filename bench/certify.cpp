@@ -30,6 +30,21 @@ WaveSpec certified_wave(const std::string& wave) {
   return f;
 }
 
+// One point per iteration, cycling through `in`: evaluate(), then its certificate where a
+// certifier is given (a value not proven correctly rounded stops the benchmark).
+void cycle(benchmark::State& state, const WaveSpec& spec, const Certifier* certifier,
+           const std::vector<std::vector<Point>>& in, const Precision& precision, const BatchOptions& options) {
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto out = evaluate(spec, Quantity::mu, in[i], precision, options);
+    if (certifier && !(*certifier)(Quantity::mu, in[i].front(), precision, out.front()).correctly_rounded)
+      state.SkipWithError("a value not proven correctly rounded");
+    benchmark::DoNotOptimize(out.data());
+    if (++i == in.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 // One point per iteration, cycling through speed_inputs(): evaluate() in double (digits 0) or
 // at `digits`, then its certificate (certify) or nothing (the uncertified side).
 void BM_point(benchmark::State& state, const std::string& wave, int digits, bool certify) {
@@ -40,15 +55,7 @@ void BM_point(benchmark::State& state, const std::string& wave, int digits, bool
   const Precision precision{digits ? NumberType::mpfr : NumberType::float64, digits};
   BatchOptions options;
   options.threads = 1;
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const auto out = evaluate(spec, Quantity::mu, in[i], precision, options);
-    if (certify && !certifier(Quantity::mu, in[i].front(), precision, out.front()).correctly_rounded)
-      state.SkipWithError("a value not proven correctly rounded");
-    benchmark::DoNotOptimize(out.data());
-    if (++i == in.size()) i = 0;
-  }
-  state.SetItemsProcessed(state.iterations());
+  cycle(state, spec, certify ? &certifier : nullptr, in, precision, options);
 }
 
 // The sphere: β ∈ {0.5, 2}, γ ∈ {−0.5, 0.5, 2} (a stick from touch-down at the centre, one from
@@ -64,15 +71,7 @@ void BM_curved(benchmark::State& state, bool certify) {
   BatchOptions options;
   options.threads = 1;
   options.profile = sphere;
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const auto out = evaluate(spec, Quantity::mu, in[i], precision, options);
-    if (certify && !certifier(Quantity::mu, in[i].front(), precision, out.front()).correctly_rounded)
-      state.SkipWithError("a value not proven correctly rounded");
-    benchmark::DoNotOptimize(out.data());
-    if (++i == in.size()) i = 0;
-  }
-  state.SetItemsProcessed(state.iterations());
+  cycle(state, spec, certify ? &certifier : nullptr, in, precision, options);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "newton.hpp"
 #include "taylor.hpp"
 
 namespace vibrofric::certified {
@@ -264,20 +265,18 @@ Interval tau_at(const Row& row, const Interval& target, const std::string& what)
     if (!a || (a->first != Sign::positive && a->first != Sign::negative)) throw undecided();
     (a->first == Sign::positive ? hi : lo) = mid;
   }
-  Interval X = Interval::hull(lo, hi, bits);
-  for (int k = 0; k < 200; ++k) {
-    const Interval m = Interval::exact(X.midpoint(), bits);
-    const Interval slope = row.gamma_of_tau(X).second;
-    if (slope.sign() != Sign::positive) throw Undecided(what + ": the stick's length is not isolated");
-    const Interval N = m - (row.gamma_of_tau(m).first - target) / slope;
-    if (k == 0 && !X.contains(N)) throw Undecided(what + ": the stick's length is not isolated");
-    std::optional<Interval> next = intersection(X, N);
-    if (!next) throw SolverError(what + ": interval Newton lost the root (a bug)");
-    const bool shrank = next->width() < X.width() / 2;
-    X = *next;
-    if (!shrank) break;
-  }
-  return X;
+  // One Newton step maps the bracket into itself: the root is there and unique; then contract.
+  const Interval X = Interval::hull(lo, hi, bits);
+  const auto f = [&](const Interval& tau) { return row.gamma_of_tau(tau).first - target; };
+  const auto df = [&](const Interval& tau) {
+    const Interval slope = row.gamma_of_tau(tau).second;
+    if (slope.sign() != Sign::positive) throw undecided();
+    return slope;
+  };
+  const Interval m = Interval::exact(X.midpoint(), bits);
+  const Interval N = m - f(m) / df(X);
+  if (!X.contains(N)) throw undecided();
+  return newton(N, f, df, bits, what);
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "newton.hpp"
+
 namespace vibrofric::certified {
 
 namespace {
@@ -32,32 +34,6 @@ mpfr midpoint(const mpfr& lo, const mpfr& hi, mpfr_prec_t bits) {
 
 // A thin interval at the point x.
 Interval point(const mpfr& x, mpfr_prec_t bits) { return Interval::exact(x, bits); }
-
-// X within 2^ulps ulps of its larger end at `bits`.
-bool within_ulps(const Interval& X, mpfr_prec_t bits, long ulps) {
-  const mpfr w = X.width(), top = std::max(abs(X.lower()), abs(X.upper()));
-  if (w == 0) return true;
-  return mpfr_get_exp(w.backend().data()) <= mpfr_get_exp(top.backend().data()) - bits + ulps;
-}
-
-// X within 64 ulps: a Newton step could not halve it any more.
-bool at_rounding_floor(const Interval& X, mpfr_prec_t bits) { return within_ulps(X, bits, 6); }
-
-// Interval Newton on X, where f' excludes 0: X ∩ (m − f(m)/f'(X)) while it halves, or until X is
-// at the rounding floor (a verified box's first step often lands there).
-template <class F, class DF>
-Interval newton(Interval X, F f, DF df, mpfr_prec_t bits, const std::string& what) {
-  for (int k = 0; k < 200 && !at_rounding_floor(X, bits); ++k) {
-    const Interval m = point(X.midpoint(), bits);
-    const Interval N = m - f(m) / df(X);
-    std::optional<Interval> next = intersection(X, N);
-    if (!next) throw SolverError(what + ": interval Newton lost the root (a bug)");
-    const bool shrank = next->width() < X.width() / 2;
-    X = *next;
-    if (!shrank) break;
-  }
-  return X;
-}
 
 // The root of F between the thin points lo < hi, where F is certainly positive at lo and negative
 // at hi (else SolverError: no sign change, or Undecided: a sign this precision leaves open):
