@@ -232,10 +232,11 @@ Certificate Certifier::operator()(Quantity q, const Point& point, const Precisio
     // normalised series (max w − min w = 2, max w > 0). Double the bits until both ends of the
     // enclosure round alike (no tie: the value is transcendental unless it is exactly 1 or 0).
     const Rational at_gamma = q == Quantity::psi ? Rational(fourier_ ? 2 : 1) : gamma;
-    // A series' enclosure isolates its events by bisection to 2^−bits/2: four times the first
-    // bits at most (an inherent undecided case, n touching zero at a maximum, would else take
-    // minutes); the others up to max_certify_bits.
-    const mpfr_prec_t cap = fourier_ ? std::min(max_certify_bits, 4 * first_bits(precision)) : max_certify_bits;
+    // A series' enclosure isolates its events by bisection to 2^−bits/2, and a curved one's
+    // Taylor models grow with the bits (order bits/3): four times the first bits at most (an
+    // inherent undecided case would else take minutes or hours); the others up to max_certify_bits.
+    const mpfr_prec_t cap =
+        fourier_ || curved_ ? std::min(max_certify_bits, 4 * first_bits(precision)) : max_certify_bits;
     const auto undecided = [&] {
       return SolverError(name_ + ", beta = " + point.beta.text() +
                          (q == Quantity::mu ? ", gamma = " + point.gamma.text() : std::string()) +

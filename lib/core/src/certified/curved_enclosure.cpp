@@ -315,7 +315,7 @@ CurvedEnclosure enclose_curved_sine(const CurvedProfile& profile, const exact::R
       What what;
     };
     std::vector<End> ends{{-one, minus_one}};
-    if (decide(-g - G, "gamma against -g") == Sign::negative) ends.push_back({-g, minus_g});
+    ends.push_back({-g, minus_g});  // below γ: decided above
     if (decide(g - G, "gamma against g") == Sign::negative) ends.push_back({g, plus_g});
     if (gamma > 1) ends.push_back({one, plus_one});
     ends.push_back({G, at_gamma});
