@@ -68,11 +68,10 @@ struct Solved {
 
 // The curved contact's row (inplane_curved.hpp) at this precision: each integral to 10^(3 − digits)
 // of ∫N, so that the two precisions' difference also measures the quadrature's error.
-InPlaneResult<mpfr> curved_at(const Waveform<mpfr>& w, const ProfileSpec& profile, const Point& p,
+InPlaneResult<mpfr> curved_at(const Waveform<mpfr>& w, const ProfileSpec& profile, const Point& p, const mpfr& beta,
                               const Waveform<mpfr>& p_wave, const PlanarDrive<mpfr>& drive, int digits,
                               const Options& opt) {
   const auto shape = make_profile<mpfr>(profile);
-  const mpfr beta = p.beta.to<mpfr>();
   const auto row = solve_inplane_curved<mpfr>(
       w, *shape, p.gamma.to<mpfr>(),
       [&](const mpfr& g) { return inplane_spring<mpfr>(w, g, p_wave, beta, drive, opt); },
@@ -85,25 +84,27 @@ InPlaneResult<mpfr> curved_at(const Waveform<mpfr>& w, const ProfileSpec& profil
   return r;
 }
 
+// At `digits` working digits; at β = *beta_at (a number of that precision) where given, else p's.
 Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec, int digits, const Options& opt,
-                const ProfileSpec& profile = {}) {
+                const ProfileSpec& profile = {}, const mpfr* beta_at = nullptr) {
   PrecisionScope scope(static_cast<unsigned>(digits));
+  const mpfr beta = beta_at ? *beta_at : p.beta.to<mpfr>();
   const auto p_wave = make_waveform<mpfr>(spec.wave);
   std::unique_ptr<Waveform<mpfr>> w;
   if (!spec.constant_normal) w = make_waveform<mpfr>(normal);
   const InPlaneDrive<mpfr> drive{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()};
   try {
     if (profile.kind != ProfileKind::flat)
-      return {curved_at(*w, profile, p, *p_wave,
+      return {curved_at(*w, profile, p, beta, *p_wave,
                         PlanarDrive<mpfr>{drive.longitudinal, spec.transverse.to<mpfr>(), drive.phase}, digits, opt),
               digits};
     if (planar(spec))
       return {as_inplane(solve_planar<mpfr>(
-                  w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave, p.beta.to<mpfr>(),
+                  w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave, beta,
                   PlanarDrive<mpfr>{drive.longitudinal, spec.transverse.to<mpfr>(), drive.phase}, opt)),
               digits};
     return {solve_inplane<mpfr>(w.get(), spec.constant_normal ? mpfr(0) : p.gamma.to<mpfr>(), *p_wave,
-                                p.beta.to<mpfr>(), drive, opt),
+                                beta, drive, opt),
             digits};
   } catch (const SolverError& e) {
     throw SolverError(inplane_context(normal, p, spec, profile) + e.what());
@@ -112,27 +113,43 @@ Solved solve_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
 
 // The free velocity at `digits` working digits: μ̄(0) < 0, then β doubled from 1 until μ̄ ≥ 0 (at
 // most 2^40), then TOMS 748 on the last doubling to all but 8 bits; none where μ̄(0) ≥ 0. A root of
-// even multiplicity, or a pair between two doublings, is not seen.
+// even multiplicity, or a pair between two doublings, is not seen. `near`: the root found at a
+// lower precision, whose first sign change this one confirms in near·(1 ± 10^-(digits − 20)) (a
+// few solves instead of the doublings; the whole search where μ̄ does not change sign there).
 std::optional<mpfr> free_velocity_at(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec, int digits,
-                                     const Options& opt) {
+                                     const Options& opt, const ProfileSpec& profile,
+                                     const std::optional<mpfr>& near = std::nullopt) {
   PrecisionScope scope(static_cast<unsigned>(digits));
-  const auto p_wave = make_waveform<mpfr>(spec.wave);
-  const auto w = make_waveform<mpfr>(normal);
-  const mpfr gamma = p.gamma.to<mpfr>();
-  const InPlaneDrive<mpfr> drive{spec.longitudinal.to<mpfr>(), spec.phase.to<mpfr>()};
-  const auto mu = [&](const mpfr& beta) { return solve_inplane<mpfr>(w.get(), gamma, *p_wave, beta, drive, opt).mu; };
-  if (!(mu(mpfr(0)) < 0)) return std::nullopt;
-  mpfr lo = 0, hi = 1, f_hi = mu(hi);
-  for (int k = 0; f_hi < 0; ++k) {
-    if (k == 40) throw SolverError("the mean force stays negative up to beta = 2^40: no free velocity found");
-    lo = hi;
-    hi *= 2;
+  const auto mu = [&](const mpfr& beta) { return solve_at(normal, p, spec, digits, opt, profile, &beta).r.mu; };
+  const mpfr f0 = mu(mpfr(0));
+  if (!(f0 < 0)) return std::nullopt;
+  mpfr lo = 0, hi = 1, f_lo = f0, f_hi = 0;
+  bool bracketed = false;
+  if (near && *near > 0) {
+    const mpfr d = mpfr(*near * pow(mpfr(10), 20 - digits));
+    lo = *near - d;
+    hi = *near + d;
+    f_lo = mu(lo);
+    f_hi = f_lo < 0 ? mu(hi) : mpfr(0);
+    bracketed = f_lo < 0 && f_hi >= 0;
+  }
+  if (!bracketed) {
+    lo = 0;
+    f_lo = f0;
+    hi = 1;
     f_hi = mu(hi);
+    for (int k = 0; f_hi < 0; ++k) {
+      if (k == 40) throw SolverError("the mean force stays negative up to beta = 2^40: no free velocity found");
+      lo = hi;
+      f_lo = f_hi;
+      hi *= 2;
+      f_hi = mu(hi);
+    }
   }
   if (f_hi == 0) return hi;
   std::uintmax_t iterations = 200;
   const auto bracket = boost::math::tools::toms748_solve(
-      mu, lo, hi, mu(lo), f_hi, boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 8), iterations);
+      mu, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<mpfr>(std::numeric_limits<mpfr>::digits - 8), iterations);
   if (iterations >= 200) throw SolverError("the free velocity did not converge in 200 iterations");
   return mpfr((bracket.first + bracket.second) / 2);
 }
@@ -220,21 +237,23 @@ InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InP
   }
   InPlaneReport report;
   const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, profile, &report);
-  // Combined normal and longitudinal oscillation on the flat punch: the free velocity, at two
-  // precisions, to the digits they agree on.
-  // Only where the contact is lost once a period (γ + min w < 0): each period then starts from s = 0,
+  // Combined normal and longitudinal oscillation (with a transverse one too on the flat punch; a
+  // curved transverse row costs minutes a point): the free velocity, at two precisions, to the
+  // digits they agree on.
+  // Only where the contact is lost once a period (γ + min w < 0; on a curved contact every spring's
+  // γ' ≤ γ then lifts too): each period then starts from s = 0,
   // and the state at β = 0 is unique (a contact that never lifts may stick through the period there).
   const auto lifts = [&] {
     PrecisionScope scope(static_cast<unsigned>(output_digits(precision) + 10));
     return mpfr(p.gamma.to<mpfr>() + make_waveform<mpfr>(normal)->minimum()) < 0;
   };
-  if (!spec.constant_normal && !planar(spec) && spec.longitudinal.to<mpfr>() != 0 && profile.kind == ProfileKind::flat &&
+  if (!spec.constant_normal && spec.longitudinal.to<mpfr>() != 0 && !(planar(spec) && profile.kind != ProfileKind::flat) &&
       lifts()) {
     report.free_velocity_searched = true;
     const int digits = output_digits(precision);
     try {
-      const auto a = free_velocity_at(normal, p, spec, digits + 10, opt);
-      const auto b = free_velocity_at(normal, p, spec, digits + 22, opt);
+      const auto a = free_velocity_at(normal, p, spec, digits + 10, opt, profile);
+      const auto b = free_velocity_at(normal, p, spec, digits + 22, opt, profile, a);
       if (a.has_value() != b.has_value())
         throw SolverError("the sign of the mean force at beta = 0 differs between two precisions");
       if (a) {
@@ -242,7 +261,7 @@ InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InP
         report.free_velocity = detail::agreed(*a, *b, std::min(digits, 17));
       }
     } catch (const SolverError& e) {
-      throw SolverError(inplane_context(normal, p, spec) + "free velocity: " + e.what());
+      throw SolverError(inplane_context(normal, p, spec, profile) + "free velocity: " + e.what());
     }
   }
   // A zero amplitude is the paper's model: its value exactly as `mu` prints it.

@@ -42,8 +42,8 @@ struct InPlaneReport {
   Significant relative_error;  // estimate: the two precisions apart (2 digits), relative to |μ̄|, or
                                // to 1 where μ̄ is 0 (|μ̄| ≤ 1: a symmetric drive at β = 0 gives 0)
   int working_digits = 0;      // the higher of the two precisions
-  // Combined normal and longitudinal oscillation on the flat punch, the contact lost once a period
-  // (γ + min w < 0, where the state at β = 0 is unique): the ratchet's free velocity, the
+  // Combined normal and longitudinal oscillation (a transverse one too on the flat punch), the
+  // contact lost once a period (γ + min w < 0, where the state at β = 0 is unique): the ratchet's free velocity, the
   // β where μ̄(β) first changes sign from μ̄(0) < 0 (free_velocity_searched and none where μ̄(0) ≥ 0:
   // the oscillation does not propel the body).
   bool free_velocity_searched = false;
