@@ -119,7 +119,11 @@ const std::vector<CommandSpec>& commands() {
          [](Flags& f, const std::string& t) { f.gamma = InputValue::read(t, "--gamma"); }},
         {"profile", "P", "the indenter (model.md MDR)", "flat", profile_named},
         {"format", "F", "text | csv | json", "text", format_of_point},
-        kCertifyFlag},
+        kCertifyFlag,
+        {"free-velocity", "", "with --longitudinal and a contact lost once a period: also search the ratchet's free "
+                              "velocity with --transverse or a curved --profile (about 30 solves: seconds to minutes; "
+                              "the flat punch's longitudinal drive prints it unasked) (=true/false/yes/no/1/0)", "",
+         [](Flags& f, const std::string& t) { f.free_velocity = switch_value(t, "free-velocity"); }}},
        {&kWaveFlags, &kPrecisionFlags, &kSolverFlags, &kRigFlags, &kInPlaneFlags},
        std::string(kWaves) + kProfiles + kRig + kInPlane,
        run_mu},

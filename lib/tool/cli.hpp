@@ -37,6 +37,7 @@ struct Flags {
   std::optional<int> digits;
   bool no_escalate = false;
   bool certify = false;
+  bool free_velocity = false;  // mu --free-velocity: the ratchet's, for a transverse or curved drive too
   bool trace = false;  // physical --trace
   // Solver controls (solver.hpp Options): a budget the solver cannot meet is an error, never a value.
   Options solver;

@@ -113,7 +113,7 @@ int print_inplane(const Flags& f, const InPlaneSpec& spec, const Precision& prec
       throw certify_error(e);
     }
   }
-  const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver, f.profile);
+  const InPlaneReport r = evaluate_inplane(wave, p, spec, precision, f.solver, f.profile, f.free_velocity);
   // A transverse drive slips in every direction: backward slip is the longitudinal drive's alone.
   std::vector<std::pair<std::string, std::string>> fields{
       {"mean_lateral", r.mean_lateral.text()},     {"stick_fraction", r.stick_fraction.text()},
@@ -171,6 +171,9 @@ int run_point(const Flags& f, Quantity q) {
       throw InputError("--longitudinal does not apply to psi: Psi (Eq. 12) belongs to the normal oscillation alone (use mu)");
     return print_inplane(f, *spec, precision_of(f), f.format.value_or(Format::text));
   }
+  if (f.free_velocity)
+    throw InputError("--free-velocity without --longitudinal: the free velocity is the ratchet's, of normal and "
+                     "longitudinal oscillation together");
   const WaveSpec wave = read_wave(f);
   const Point p{need(f, f.beta, "beta"), q == Quantity::mu ? need(f, f.gamma, "gamma") : InputValue()};
   const BatchOptions opt = batch_options(f);

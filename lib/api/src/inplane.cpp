@@ -226,7 +226,8 @@ mpfr detail::inplane_value(const WaveSpec& normal, const Point& p, const InPlane
 }
 
 InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InPlaneSpec& spec,
-                               const Precision& precision, const Options& opt, const ProfileSpec& profile) {
+                               const Precision& precision, const Options& opt, const ProfileSpec& profile,
+                               bool free_velocity) {
   if (precision.type == NumberType::mpfr && (precision.digits < min_digits || precision.digits > max_digits))
     throw InputError("digits = " + std::to_string(precision.digits) + ": expected " + std::to_string(min_digits) +
                      " to " + std::to_string(max_digits));
@@ -235,20 +236,36 @@ InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& p, const InP
     detail::ContactCheck check(normal, Quantity::mu);
     check(p);
   }
-  InPlaneReport report;
-  const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, profile, &report);
-  // Combined normal and longitudinal oscillation (with a transverse one too on the flat punch; a
-  // curved transverse row costs minutes a point): the free velocity, at two precisions, to the
-  // digits they agree on.
-  // Only where the contact is lost once a period (γ + min w < 0; on a curved contact every spring's
-  // γ' ≤ γ then lifts too): each period then starts from s = 0,
-  // and the state at β = 0 is unique (a contact that never lifts may stick through the period there).
+  // The ratchet's free velocity: of combined normal and longitudinal oscillation, where the contact
+  // is lost once a period (γ + min w < 0; on a curved contact every spring's γ' ≤ γ then lifts
+  // too): each period then starts from s = 0, and the state at β = 0 is unique (a contact that
+  // never lifts may stick through the period there). Searched unasked on the flat punch's
+  // longitudinal drive (milliseconds); with a transverse drive or on a curved contact only when
+  // asked (about 30 solves: seconds to many minutes), not on a curved transverse row (minutes a point).
   const auto lifts = [&] {
     PrecisionScope scope(static_cast<unsigned>(output_digits(precision) + 10));
     return mpfr(p.gamma.to<mpfr>() + make_waveform<mpfr>(normal)->minimum()) < 0;
   };
-  if (!spec.constant_normal && spec.longitudinal.to<mpfr>() != 0 && !(planar(spec) && profile.kind != ProfileKind::flat) &&
-      lifts()) {
+  const bool curved = profile.kind != ProfileKind::flat;
+  const bool combined = !spec.constant_normal && spec.longitudinal.to<mpfr>() != 0;
+  if (free_velocity) {
+    const std::string what = "free velocity asked for ";
+    if (spec.constant_normal)
+      throw InputError(what + "a constant normal force: expected normal and longitudinal oscillation together (the ratchet)");
+    if (!combined)
+      throw InputError(what + "longitudinal = " + detail::visible(spec.longitudinal.text()) +
+                       ": expected a longitudinal amplitude > 0 (the ratchet pushes along the sliding direction)");
+    if (!lifts())
+      throw InputError(what + "gamma = " + detail::visible(p.gamma.text()) +
+                       ": expected a contact lost once a period (gamma + min w < 0); a contact that never lifts "
+                       "may stick through the period at beta = 0, where the state is then not unique");
+    if (planar(spec) && curved)
+      throw InputError(what + "a transverse drive on a curved profile: not searched (a curved transverse row "
+                       "costs minutes a point; expected the flat punch, or no transverse drive)");
+  }
+  InPlaneReport report;
+  const mpfr v = detail::inplane_value(normal, p, spec, precision, opt, profile, &report);
+  if (combined && (free_velocity || (!planar(spec) && !curved)) && lifts()) {
     report.free_velocity_searched = true;
     const int digits = output_digits(precision);
     try {

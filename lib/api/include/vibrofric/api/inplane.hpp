@@ -42,8 +42,9 @@ struct InPlaneReport {
   Significant relative_error;  // estimate: the two precisions apart (2 digits), relative to |μ̄|, or
                                // to 1 where μ̄ is 0 (|μ̄| ≤ 1: a symmetric drive at β = 0 gives 0)
   int working_digits = 0;      // the higher of the two precisions
-  // Combined normal and longitudinal oscillation (a transverse one too on the flat punch), the
-  // contact lost once a period (γ + min w < 0, where the state at β = 0 is unique): the ratchet's free velocity, the
+  // Combined normal and longitudinal oscillation on the flat punch (asked for: with a transverse one
+  // too, or on a curved contact), the contact lost once a period (γ + min w < 0, where the state at
+  // β = 0 is unique): the ratchet's free velocity, the
   // β where μ̄(β) first changes sign from μ̄(0) < 0 (free_velocity_searched and none where μ̄(0) ≥ 0:
   // the oscillation does not propel the body).
   bool free_velocity_searched = false;
@@ -58,9 +59,12 @@ void check_inplane(const InPlaneSpec& spec);
 // or the precisions do not agree.
 // A curved profile integrates the row of in-plane springs (core/inplane/inplane_curved.hpp), with the
 // normal oscillation only.
+// free_velocity: search the free velocity of a transverse or curved drive too (InputError where the
+// drive has none to search: no longitudinal oscillation, a constant normal force, a contact that
+// never lifts, a curved transverse row).
 InPlaneReport evaluate_inplane(const WaveSpec& normal, const Point& point, const InPlaneSpec& spec,
                                const Precision& precision, const Options& solver = {},
-                               const ProfileSpec& profile = {});
+                               const ProfileSpec& profile = {}, bool free_velocity = false);
 
 // One row of the periodic state for `trace`: φ, n, the tangential force's components s_x (along
 // the sliding direction) and s_y (across it: 0 for a longitudinal drive), and the mode.
