@@ -1544,7 +1544,7 @@ SOLVER = ["--area", "--max-iterations", "--max-levels", "--quadrature-tolerance"
 RIG = ["--kappa", "--omega", "--zeta"]  # psi lists them to refuse them with the reason
 INPLANE = ["--longitudinal", "--transverse", "--phase", "--in-plane-wave"]
 HELP_FLAGS = {
-    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG + INPLANE,
+    "mu": (["--beta", "--gamma", "--profile", "--format", "--certify", "--free-velocity"] + WAVE + PRECISION + SOLVER + RIG + INPLANE,
            {"--profile": "flat", "--format": "text", "--digits": "50", "--type": "mpfr", "--area": "auto",
             "--max-levels": "15", "--phase": "0", "--in-plane-wave": "sine"}),
     "psi": (["--beta", "--profile", "--format", "--certify"] + WAVE + PRECISION + SOLVER + RIG, {"--format": "text"}),
